@@ -1,0 +1,48 @@
+// The simulation box: its extent along x, y, z, and which axes are periodic (SPEC.md 2 uses
+// x and y). Along a periodic axis positions are kept in [lo, hi) and pair separations use the
+// nearest image; along the other axes the extent only frames the output.
+#pragma once
+
+#include <array>
+
+#include "Math/Vector.h"
+
+namespace talus {
+
+struct Domain {
+    Vec3 lo = Vec3::Zero();
+    Vec3 hi = Vec3::Ones();
+    std::array<bool, 3> periodic{false, false, false};
+
+    double length(int axis) const { return hi[axis] - lo[axis]; }
+    bool anyPeriodic() const { return periodic[0] || periodic[1] || periodic[2]; }
+
+    // Moves x into [lo, hi) along the periodic axes.
+    void wrap(Vec3& x) const {
+        for (int a = 0; a < 3; ++a) {
+            if (!periodic[a]) continue;
+            const double L = length(a);
+            if (x[a] >= hi[a]) {
+                x[a] -= L;
+                if (x[a] >= hi[a]) x[a] = lo[a] + std::fmod(x[a] - lo[a], L);  // moved more than a box length
+            } else if (x[a] < lo[a]) {
+                x[a] += L;
+                if (x[a] < lo[a]) x[a] = hi[a] - std::fmod(hi[a] - x[a], L);
+                if (x[a] >= hi[a]) x[a] = lo[a];
+            }
+        }
+    }
+
+    // Nearest periodic image of a separation d = xi - xj of two wrapped positions.
+    Vec3 nearestImage(Vec3 d) const {
+        for (int a = 0; a < 3; ++a) {
+            if (!periodic[a]) continue;
+            const double L = length(a);
+            if (d[a] > 0.5 * L) d[a] -= L;
+            else if (d[a] < -0.5 * L) d[a] += L;
+        }
+        return d;
+    }
+};
+
+}  // namespace talus

@@ -1,0 +1,63 @@
+// Hierarchical grid neighbour search (Ogarko & Luding 2012, as in MercuryDPM), for packings of
+// any size ratio.
+//
+// Each particle lives in the level whose cell size is the smallest one not below its interaction
+// diameter D = 2r + skin; cell sizes grow by cellSizeRatio from level to level. A particle looks
+// for partners in its own level (only partners with a higher slot, so each pair is found once)
+// and in every coarser, non-empty level, in the at most 3x3x3 cells that can hold a partner.
+// Cells are hashed, so memory is O(N) whatever the extent of the packing, and the cells of
+// periodic axes wrap around. The cost per particle is bounded by the number of non-empty
+// levels, not by the size ratio: a 1:20 packing does not degrade to O(N^2).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "Boundaries/Domain.h"
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+struct ParticlePair {
+    std::uint32_t i, j;
+    bool operator==(const ParticlePair&) const = default;
+};
+
+class HGrid {
+public:
+    explicit HGrid(double cellSizeRatio = 2.0);
+
+    // Appends to pairs every pair (i, j) closer than ri + rj + skin (nearest periodic image),
+    // except pairs of two fixed particles, in an order that depends only on the positions.
+    void findPairs(const ParticleStore& particles, const Domain& domain, double skin,
+                   std::vector<ParticlePair>& pairs);
+
+    std::size_t levelCount() const { return levels_.size(); }
+    double cellSizeRatio() const { return cellSizeRatio_; }
+
+private:
+    struct Level {
+        double size;        // nominal cell size (>= the interaction diameters it holds)
+        Vec3 cell;          // actual cell size per axis (stretched to divide periodic lengths)
+        std::array<int, 3> count;  // cells along periodic axes; 0 along open axes
+        std::size_t particles = 0;
+    };
+    struct Entry {
+        std::uint32_t particle;
+        std::int32_t cx, cy, cz;
+        std::uint32_t level;
+    };
+
+    void buildLevels(const ParticleStore& particles, const Domain& domain, double skin);
+    std::array<int, 3> cellOf(const Vec3& x, const Level& level, const Domain& domain) const;
+    std::size_t bucketOf(std::uint32_t level, int cx, int cy, int cz) const;
+
+    double cellSizeRatio_;
+    std::vector<Level> levels_;
+    std::vector<std::uint32_t> levelOf_;   // per particle
+    std::vector<std::uint32_t> bucketStart_;  // size buckets + 1
+    std::vector<Entry> entries_;           // particles sorted by bucket
+    std::size_t bucketMask_ = 0;
+};
+
+}  // namespace talus

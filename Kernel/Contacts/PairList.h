@@ -1,0 +1,48 @@
+// The candidate contacts of the current neighbour list, with their contact history.
+//
+// Pairs closer than ri + rj + skin are listed by the HGrid; the list stays valid until some
+// particle has moved more than half the skin since it was built (DESIGN.md "Data layout").
+// Each listed pair and each particle-wall candidate carries its tangential spring; a rebuild
+// carries the springs of touching pairs over by the particles' global ids, so rebuilding
+// (or reordering particles) never loses history.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "Boundaries/Domain.h"
+#include "Contacts/HGrid.h"
+#include "Particles/ParticleStore.h"
+#include "Walls/PlaneWall.h"
+
+namespace talus {
+
+struct WallCandidate {
+    std::uint32_t particle;
+    std::uint32_t wall;
+    bool operator==(const WallCandidate&) const = default;
+};
+
+class PairList {
+public:
+    std::vector<ParticlePair> pairs;
+    std::vector<Vec3> springs;  // springs[k] belongs to pairs[k]; zero when not in contact
+    std::vector<WallCandidate> wallPairs;
+    std::vector<Vec3> wallSprings;
+    std::vector<Vec3> referencePosition;  // positions when the list was built
+    double skin = 0;
+    bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
+    std::uint64_t builds = 0;
+
+    // True when some particle has moved more than skin/2 since the last build (nearest-image
+    // displacement, so wrapping through a periodic face is not a move). Throws talus::Error
+    // naming the particle if a position is not finite.
+    bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time) const;
+
+    // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
+    // move (motion >= 0) list every particle, since the wall itself may sweep over them.
+    void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
+                 HGrid& grid);
+};
+
+}  // namespace talus

@@ -1,0 +1,91 @@
+#include "IO/MercuryFormats.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace talus {
+
+namespace {
+
+// Appends printf-formatted text (numbers only, so 64 bytes per field suffice).
+template <class... Args>
+void append(std::string& out, const char* format, Args... args) {
+    char buffer[512];
+    const int n = std::snprintf(buffer, sizeof buffer, format, args...);
+    out.append(buffer, static_cast<std::size_t>(std::min<int>(n, sizeof buffer - 1)));
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> slotsById(const ParticleStore& particles) {
+    std::vector<std::uint32_t> order(particles.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return particles.id[a] < particles.id[b]; });
+    return order;
+}
+
+// .data: header "N t xmin ymin zmin xmax ymax zmax " then per particle
+// "x y z vx vy vz r thx thy thz wx wy wz species" (positions 15 digits, the rest 10, as MercuryDPM).
+// Sphere orientation is not tracked, so the three angle columns are 0.
+void appendDataFrame(std::string& out, const SimulationState& state, const std::vector<std::uint32_t>& order) {
+    const ParticleStore& p = state.particles;
+    const Domain& d = state.domain;
+    append(out, "%zu %.10g %.10g %.10g %.10g %.10g %.10g %.10g \n", p.size(), state.time, d.lo.x(), d.lo.y(), d.lo.z(),
+           d.hi.x(), d.hi.y(), d.hi.z());
+    for (std::uint32_t i : order) {
+        const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
+        append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g 0 0 0 %.10g %.10g %.10g %u\n", x.x(), x.y(), x.z(), v.x(),
+               v.y(), v.z(), p.radius[i], w.x(), w.y(), w.z(), p.species[i]);
+    }
+}
+
+// .fstat: three header lines, then "t i j cx cy cz dn dt fn |ft| nx ny nz tx ty tz" per contact
+// side; i, j are global ids, walls are j = -(wall + 1). A pair is written from both sides
+// (n and t negated on the second) except from the side of a fixed particle; a wall contact
+// once, with n and t pointing into the wall as MercuryDPM writes them.
+void appendFstatFrame(std::string& out, const SimulationState& state, const std::vector<ContactRecord>& contacts) {
+    const ParticleStore& p = state.particles;
+    const Domain& d = state.domain;
+    double rmin = NAN, rmax = NAN;
+    if (!p.empty()) {
+        auto [lo, hi] = std::minmax_element(p.radius.begin(), p.radius.end());
+        rmin = *lo;
+        rmax = *hi;
+    }
+    append(out, "# %.10g 1\n# %.10g %.10g %.10g %.10g %.10g %.10g\n# %.10g %.10g 0 0 0 0\n", state.time, d.lo.x(),
+           d.lo.y(), d.lo.z(), d.hi.x(), d.hi.y(), d.hi.z(), rmin, rmax);
+    auto line = [&](std::uint64_t i, long long j, const ContactRecord& c, double sign) {
+        const double ft = c.tangentialForce.norm();
+        const Vec3 t = ft > 0 ? Vec3(c.tangentialForce / ft) : Vec3::Zero();
+        const Vec3 n = sign * c.normal, tt = sign * t;
+        append(out, "%.10g %llu %lld %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n",
+               state.time, static_cast<unsigned long long>(i), j, c.contactPoint.x(), c.contactPoint.y(),
+               c.contactPoint.z(), c.overlap, -c.springLength, c.normalForce, ft, n.x(), n.y(), n.z(), tt.x(), tt.y(),
+               tt.z());
+    };
+    for (const ContactRecord& c : contacts) {
+        const std::uint64_t idI = p.id[c.i];
+        if (c.j < 0) {
+            line(idI, c.j, c, -1.0);
+            continue;
+        }
+        const auto j = static_cast<std::uint32_t>(c.j);
+        const auto idJ = static_cast<long long>(p.id[j]);
+        if (!p.fixed[c.i]) line(idI, idJ, c, 1.0);
+        if (!p.fixed[j]) line(static_cast<std::uint64_t>(idJ), static_cast<long long>(idI), c, -1.0);
+    }
+}
+
+std::string eneHeader() {
+    return "time gravitEnergy traKineticEnergy rotKineticEnergy elasticEnergy centerOfMassX centerOfMassY "
+           "centerOfMassZ contacts\n";
+}
+
+// .ene: right-aligned fields of width 16 with 10 significant digits (MercuryDPM's layout).
+void appendEneLine(std::string& out, double time, const Energies& e, std::size_t contacts) {
+    append(out, "%16.10g %16.10g %16.10g %16.10g %16.10g %16.10g %16.10g %16.10g %16zu\n", time, e.gravitational,
+           e.kinetic, e.rotational, e.elastic, e.centreOfMass.x(), e.centreOfMass.y(), e.centreOfMass.z(), contacts);
+}
+
+}  // namespace talus

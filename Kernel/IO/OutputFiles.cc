@@ -1,0 +1,83 @@
+#include "IO/OutputFiles.h"
+
+#include <filesystem>
+
+#include "Contacts/ContactForces.h"
+#include "Error.h"
+#include "IO/MercuryFormats.h"
+#include "IO/RestartFile.h"
+#include "IO/VtuWriter.h"
+
+namespace talus {
+
+namespace fs = std::filesystem;
+
+OutputFiles::OutputFiles(const SimulationState& state, bool restarted) {
+    const RunSettings& c = state.settings;
+    if (c.writeData) open(data_, c.name + ".data", restarted, state.output.dataBytes);
+    if (c.writeFstat) open(fstat_, c.name + ".fstat", restarted, state.output.fstatBytes);
+    if (c.writeEne) open(ene_, c.name + ".ene", restarted, state.output.eneBytes);
+}
+
+OutputFiles::~OutputFiles() {
+    for (File* f : {&data_, &fstat_, &ene_})
+        if (f->handle) std::fclose(f->handle);
+}
+
+void OutputFiles::open(File& file, const std::string& path, bool restarted, std::uint64_t bytes) {
+    file.path = path;
+    if (restarted) {
+        std::error_code error;
+        const auto size = fs::file_size(path, error);
+        if (error || size < bytes)
+            throw Error("cannot continue " + path + ": the restart file expects at least " + std::to_string(bytes) +
+                        " bytes, but it " + (error ? "does not exist" : "has " + std::to_string(size)) +
+                        " (restart in the folder of the run that wrote the restart file)");
+        fs::resize_file(path, bytes);  // drop frames written after the restart point
+        file.handle = std::fopen(path.c_str(), "ab");
+    } else {
+        file.handle = std::fopen(path.c_str(), "wb");
+    }
+    if (!file.handle) throw Error("cannot open output file " + path);
+}
+
+std::uint64_t OutputFiles::append(File& file, const std::string& text) {
+    if (std::fwrite(text.data(), 1, text.size(), file.handle) != text.size() || std::fflush(file.handle) != 0)
+        throw Error("error while writing " + file.path + " (disk full?)");
+    return static_cast<std::uint64_t>(std::ftell(file.handle));
+}
+
+void OutputFiles::writeFrame(SimulationState& state, const std::vector<ContactRecord>& records, double elasticEnergy) {
+    const RunSettings& c = state.settings;
+    const std::vector<std::uint32_t> order = slotsById(state.particles);
+    if (data_.handle) {
+        buffer_.clear();
+        appendDataFrame(buffer_, state, order);
+        state.output.dataBytes = append(data_, buffer_);
+    }
+    if (fstat_.handle) {
+        buffer_.clear();
+        appendFstatFrame(buffer_, state, records);
+        state.output.fstatBytes = append(fstat_, buffer_);
+    }
+    if (ene_.handle) {
+        buffer_.clear();
+        if (state.output.savedFrames == 0) buffer_ = eneHeader();
+        Energies e = particleEnergies(state.particles, state.gravity);
+        e.elastic = elasticEnergy;
+        appendEneLine(buffer_, state.time, e, records.size());
+        state.output.eneBytes = append(ene_, buffer_);
+    }
+    if (c.writeVtu) {
+        writeVtu(c.name + "_" + std::to_string(state.output.frameTimes.size()) + ".vtu", state.particles, order);
+        state.output.frameTimes.push_back(state.time);
+        writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
+    }
+    ++state.output.savedFrames;
+}
+
+void OutputFiles::writeRestart(const SimulationState& state) {
+    if (state.settings.writeRestart) writeRestartFile(state.settings.name + ".restart", state);
+}
+
+}  // namespace talus

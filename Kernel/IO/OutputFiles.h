@@ -1,0 +1,43 @@
+// The output files of a run: name.data, name.fstat, name.ene (MercuryDPM layouts), one VTU
+// file per frame with a name.pvd index for ParaView, and name.restart.
+//
+// Every frame is written whole and flushed, and the byte size of each file after the frame is
+// kept in the run state. A restarted run cuts each file back to the size the restart file
+// recorded and appends, so that a restarted run writes exactly the files of an uninterrupted
+// one. The restart file itself is written to name.restart.tmp and renamed, so a crash never
+// leaves a half-written restart file.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "SimulationState.h"
+
+namespace talus {
+
+class OutputFiles {
+public:
+    // Creates the files anew (restarted = false) or continues them from state.output.
+    OutputFiles(const SimulationState& state, bool restarted);
+    ~OutputFiles();
+    OutputFiles(const OutputFiles&) = delete;
+    OutputFiles& operator=(const OutputFiles&) = delete;
+
+    // Appends the frame of the current state; records are the contacts of the last force loop.
+    void writeFrame(SimulationState& state, const std::vector<struct ContactRecord>& records, double elasticEnergy);
+    void writeRestart(const SimulationState& state);
+
+private:
+    struct File {
+        std::FILE* handle = nullptr;
+        std::string path;
+    };
+    void open(File& file, const std::string& path, bool restarted, std::uint64_t bytes);
+    std::uint64_t append(File& file, const std::string& text);
+
+    File data_, fstat_, ene_;
+    std::string buffer_;
+};
+
+}  // namespace talus

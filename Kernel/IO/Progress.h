@@ -1,0 +1,35 @@
+// Progress lines for long runs: simulated time, percent, wall time, ETA and particle-steps per
+// second, printed every few wall seconds, and a summary at the end.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+namespace talus {
+
+class Progress {
+public:
+    Progress(std::ostream& out, double intervalSeconds) : out_(out), interval_(intervalSeconds) {}
+
+    void start(const std::string& name, double time, double endTime, std::uint64_t steps, std::size_t particles);
+    // Call every step; prints when the interval has passed since the last line.
+    void update(double time, std::uint64_t stepsDone, std::size_t particles);
+    void finish(double time, std::uint64_t stepsDone);
+
+    double particleStepsPerSecond() const;
+    double wallSeconds() const;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::ostream& out_;
+    double interval_;
+    std::string name_;
+    double startTime_ = 0, endTime_ = 0;
+    std::uint64_t totalSteps_ = 0;
+    Clock::time_point wallStart_, lastPrint_;
+    double particleSteps_ = 0;
+};
+
+}  // namespace talus

@@ -1,0 +1,344 @@
+#include "IO/RestartFile.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "Error.h"
+
+namespace talus {
+
+namespace {
+
+constexpr int formatVersion = 1;
+
+class Writer {
+public:
+    explicit Writer(std::ostream& out) : out_(out) {}
+    Writer& key(const char* k) { out_ << k; return *this; }
+    Writer& operator<<(double x) {
+        char b[40];
+        std::snprintf(b, sizeof b, " %.17g", x);
+        out_ << b;
+        return *this;
+    }
+    Writer& operator<<(std::uint64_t x) { out_ << ' ' << x; return *this; }
+    Writer& operator<<(std::int64_t x) { out_ << ' ' << x; return *this; }
+    Writer& operator<<(const std::string& s) { out_ << ' ' << s; return *this; }
+    Writer& operator<<(const Vec3& v) { return *this << v.x() << v.y() << v.z(); }
+    void end() { out_ << '\n'; }
+
+private:
+    std::ostream& out_;
+};
+
+// Reads whitespace-separated tokens, remembering the line of each for error messages.
+class Reader {
+public:
+    Reader(std::istream& in, std::string path) : in_(in), path_(std::move(path)) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error("restart file " + path_ + " line " + std::to_string(line_) + ": " + what);
+    }
+    std::string token(const char* what) {
+        std::string t;
+        for (;;) {
+            int c = in_.get();
+            if (c == EOF) {
+                if (t.empty()) fail(std::string("file ends while reading ") + what + " (truncated file?)");
+                return t;
+            }
+            if (c == '\n') {
+                if (!t.empty()) { in_.unget(); return t; }
+                ++line_;
+                continue;
+            }
+            if (std::isspace(c)) {
+                if (!t.empty()) return t;
+                continue;
+            }
+            t.push_back(static_cast<char>(c));
+        }
+    }
+    void expect(const char* keyword) {
+        const std::string t = token(keyword);
+        if (t != keyword) fail("expected '" + std::string(keyword) + "', found '" + t + "'");
+    }
+    double real(const char* what) {
+        const std::string t = token(what);
+        errno = 0;
+        char* end = nullptr;
+        const double x = std::strtod(t.c_str(), &end);
+        if (end != t.c_str() + t.size() || errno == ERANGE) fail(std::string("bad number '") + t + "' for " + what);
+        return x;
+    }
+    Vec3 vec(const char* what) {
+        Vec3 v;
+        for (int a = 0; a < 3; ++a) v[a] = real(what);
+        return v;
+    }
+    std::uint64_t count(const char* what, std::uint64_t max = ~std::uint64_t{0}) {
+        const std::string t = token(what);
+        errno = 0;
+        char* end = nullptr;
+        const unsigned long long x = std::strtoull(t.c_str(), &end, 10);
+        if (t.empty() || t[0] == '-' || end != t.c_str() + t.size() || errno == ERANGE)
+            fail(std::string("bad count '") + t + "' for " + what);
+        if (x > max) fail(std::string(what) + " " + t + " is out of range (at most " + std::to_string(max) + ")");
+        return x;
+    }
+    std::int64_t integer(const char* what) {
+        const std::string t = token(what);
+        errno = 0;
+        char* end = nullptr;
+        const long long x = std::strtoll(t.c_str(), &end, 10);
+        if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE) fail(std::string("bad integer '") + t + "' for " + what);
+        return x;
+    }
+    bool flag(const char* what) { return count(what, 1) == 1; }
+    std::istream& stream() { return in_; }
+
+private:
+    std::istream& in_;
+    std::string path_;
+    int line_ = 1;
+};
+
+void writeLaw(Writer& w, const ContactLaw& law) {
+    if (auto* l = std::get_if<LinearSpringDashpot>(&law))
+        w << std::string(LinearSpringDashpot::name) << l->normalStiffness << l->normalDamping << l->tangentialStiffness
+          << l->tangentialDamping << l->friction;
+    else if (auto* h = std::get_if<HertzMindlin>(&law))
+        w << std::string(HertzMindlin::name) << h->effectiveYoungsModulus << h->effectiveShearModulus << h->restitution
+          << h->friction << h->characteristicVelocity;
+}
+
+ContactLaw readLaw(Reader& r) {
+    const std::string kind = r.token("contact law");
+    if (kind == LinearSpringDashpot::name) {
+        LinearSpringDashpot l;
+        l.normalStiffness = r.real("normal stiffness");
+        l.normalDamping = r.real("normal damping");
+        l.tangentialStiffness = r.real("tangential stiffness");
+        l.tangentialDamping = r.real("tangential damping");
+        l.friction = r.real("friction");
+        return l;
+    }
+    if (kind == HertzMindlin::name) {
+        HertzMindlin h;
+        h.effectiveYoungsModulus = r.real("effective Young's modulus");
+        h.effectiveShearModulus = r.real("effective shear modulus");
+        h.restitution = r.real("restitution");
+        h.friction = r.real("friction");
+        h.characteristicVelocity = r.real("characteristic velocity");
+        return h;
+    }
+    r.fail("unknown contact law '" + kind + "'");
+}
+
+}  // namespace
+
+void writeRestartFile(const std::string& path, const SimulationState& s) {
+    const std::string temporary = path + ".tmp";
+    {
+        std::ofstream out(temporary);
+        if (!out) throw Error("cannot write restart file " + temporary);
+        Writer w(out);
+        const RunSettings& c = s.settings;
+        w.key("Talus restart") << std::uint64_t(formatVersion); w.end();
+        w.key("name") << c.name; w.end();
+        w.key("run") << c.timeStep << c.endTime << c.outputInterval << c.skin << c.progressInterval
+                     << c.maxOverlapFraction << c.maxInitialOverlapFraction; w.end();
+        w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
+                       << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
+        w.key("time") << s.time << s.step; w.end();
+        w.key("gravity") << s.gravity; w.end();
+        w.key("domain") << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
+                        << std::uint64_t(s.domain.periodic[1]) << std::uint64_t(s.domain.periodic[2]); w.end();
+        w.key("species") << std::uint64_t(s.species.size()); w.end();
+        for (std::size_t k = 0; k < s.species.size(); ++k) {
+            w.key("  ") << s.species[k].name << s.species[k].density;
+            writeLaw(w, s.species[k].law);
+            w.end();
+        }
+        w.key("pairs") << std::uint64_t(s.species.explicitPairs().size()); w.end();
+        for (const auto& [key, law] : s.species.explicitPairs()) {
+            w.key("  ") << std::uint64_t(key.first) << std::uint64_t(key.second);
+            writeLaw(w, law);
+            w.end();
+        }
+        w.key("motions") << std::uint64_t(s.motions.size()); w.end();
+        for (const PrescribedMotion& m : s.motions) { w.key("  ") << m.velocity << m.angularVelocity << m.centre; w.end(); }
+        w.key("walls") << std::uint64_t(s.walls.size()); w.end();
+        for (const PlaneWall& wall : s.walls) {
+            w.key("  ") << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion);
+            w.end();
+        }
+        const ParticleStore& p = s.particles;
+        w.key("particles") << std::uint64_t(p.size()) << s.nextId; w.end();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            w.key("  ") << p.id[i] << p.position[i] << p.velocity[i] << p.angularVelocity[i] << p.force[i] << p.torque[i]
+                        << p.radius[i] << p.mass[i] << p.invMass[i] << p.invInertia[i] << std::uint64_t(p.species[i])
+                        << std::uint64_t(p.fixed[i]) << std::int64_t(p.motion[i]);
+            w.end();
+        }
+        const PairList& l = s.pairList;
+        w.key("pairlist") << l.skin << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
+                          << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
+        for (std::size_t k = 0; k < l.pairs.size(); ++k) {
+            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j) << l.springs[k]; w.end();
+        }
+        for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
+            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall) << l.wallSprings[k];
+            w.end();
+        }
+        for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
+        std::ostringstream random;
+        random << s.random;
+        w.key("random") << random.str(); w.end();
+        w.key("output") << s.output.savedFrames << s.output.dataBytes << s.output.fstatBytes << s.output.eneBytes
+                        << std::uint64_t(s.output.frameTimes.size()); w.end();
+        for (double t : s.output.frameTimes) { w.key("  ") << t; w.end(); }
+        w.key("end"); w.end();
+        out.flush();
+        if (!out) throw Error("error while writing restart file " + temporary);
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) throw Error("cannot rename " + temporary + " to " + path);
+}
+
+void readRestartFile(const std::string& path, SimulationState& s) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot open restart file " + path);
+    Reader r(in, path);
+    r.expect("Talus");
+    r.expect("restart");
+    if (const auto v = r.count("format version"); v != formatVersion)
+        r.fail("format version " + std::to_string(v) + " is not supported (this build reads version " +
+               std::to_string(formatVersion) + ")");
+    SimulationState t;  // filled completely before it replaces s
+    RunSettings& c = t.settings;
+    r.expect("name");
+    c.name = r.token("name");
+    r.expect("run");
+    c.timeStep = r.real("time step");
+    c.endTime = r.real("end time");
+    c.outputInterval = r.real("output interval");
+    c.skin = r.real("skin");
+    c.progressInterval = r.real("progress interval");
+    c.maxOverlapFraction = r.real("maximum overlap fraction");
+    c.maxInitialOverlapFraction = r.real("maximum initial overlap fraction");
+    r.expect("files");
+    c.writeData = r.flag("data flag");
+    c.writeFstat = r.flag("fstat flag");
+    c.writeEne = r.flag("ene flag");
+    c.writeVtu = r.flag("vtu flag");
+    c.writeRestart = r.flag("restart flag");
+    r.expect("time");
+    t.time = r.real("time");
+    t.step = r.count("step");
+    r.expect("gravity");
+    t.gravity = r.vec("gravity");
+    r.expect("domain");
+    t.domain.lo = r.vec("domain lower corner");
+    t.domain.hi = r.vec("domain upper corner");
+    for (int a = 0; a < 3; ++a) t.domain.periodic[a] = r.flag("periodic flag");
+    r.expect("species");
+    const auto speciesCount = r.count("species count", 1u << 16);
+    for (std::uint64_t k = 0; k < speciesCount; ++k) {
+        std::string name = r.token("species name");
+        const double density = r.real("density");
+        t.species.add(name, density, readLaw(r));
+    }
+    r.expect("pairs");
+    const auto pairCount = r.count("pair count", speciesCount * speciesCount);
+    for (std::uint64_t k = 0; k < pairCount; ++k) {
+        const auto a = r.count("species index", speciesCount - 1), b = r.count("species index", speciesCount - 1);
+        t.species.setPair(a, b, readLaw(r));
+    }
+    r.expect("motions");
+    const auto motionCount = r.count("motion count", 1u << 20);
+    t.motions.resize(motionCount);
+    for (PrescribedMotion& m : t.motions) {
+        m.velocity = r.vec("motion velocity");
+        m.angularVelocity = r.vec("motion angular velocity");
+        m.centre = r.vec("motion centre");
+    }
+    auto motionIndex = [&](const char* what) {
+        const auto m = r.integer(what);
+        if (m < -1 || m >= static_cast<std::int64_t>(motionCount)) r.fail(std::string(what) + " out of range");
+        return static_cast<std::int32_t>(m);
+    };
+    r.expect("walls");
+    t.walls.resize(r.count("wall count", 1u << 20));
+    for (PlaneWall& w : t.walls) {
+        w.normal = r.vec("wall normal");
+        w.point = r.vec("wall point");
+        w.species = static_cast<std::uint32_t>(r.count("wall species", speciesCount - 1));
+        w.motion = motionIndex("wall motion");
+    }
+    r.expect("particles");
+    const auto n = r.count("particle count", 0xffffffffu);
+    t.nextId = r.count("next id");
+    ParticleStore& p = t.particles;
+    p.reserve(n);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        p.id.push_back(r.count("particle id"));
+        p.position.push_back(r.vec("position"));
+        p.velocity.push_back(r.vec("velocity"));
+        p.angularVelocity.push_back(r.vec("angular velocity"));
+        p.force.push_back(r.vec("force"));
+        p.torque.push_back(r.vec("torque"));
+        p.radius.push_back(r.real("radius"));
+        if (!(p.radius.back() > 0)) r.fail("radius must be positive");
+        p.mass.push_back(r.real("mass"));
+        p.invMass.push_back(r.real("inverse mass"));
+        p.invInertia.push_back(r.real("inverse inertia"));
+        p.species.push_back(static_cast<std::uint32_t>(r.count("species", speciesCount - 1)));
+        p.fixed.push_back(r.flag("fixed flag"));
+        p.motion.push_back(motionIndex("particle motion"));
+        if (p.id.back() >= t.nextId) r.fail("particle id " + std::to_string(p.id.back()) + " is not below the next id");
+    }
+    r.expect("pairlist");
+    PairList& l = t.pairList;
+    l.skin = r.real("skin");
+    l.valid = r.flag("valid flag");
+    l.builds = r.count("build count");
+    const auto pairs = r.count("pair count", 1ull << 40), wallPairs = r.count("wall pair count", 1ull << 40);
+    const auto references = r.count("reference count", n);
+    for (std::uint64_t k = 0; k < pairs; ++k) {
+        const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
+        l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        l.springs.push_back(r.vec("spring"));
+    }
+    for (std::uint64_t k = 0; k < wallPairs; ++k) {
+        const auto i = r.count("wall pair particle", n - 1);
+        const auto w = r.count("wall pair wall", t.walls.empty() ? 0 : t.walls.size() - 1);
+        if (t.walls.empty()) r.fail("wall pair without walls");
+        l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
+        l.wallSprings.push_back(r.vec("wall spring"));
+    }
+    for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
+    r.expect("random");
+    {
+        std::istringstream engine;
+        std::string state;
+        for (int k = 0; k < 313; ++k) state += r.token("random generator state") + " ";
+        engine.str(state);
+        engine >> t.random;
+        if (!engine) r.fail("bad random generator state");
+    }
+    r.expect("output");
+    t.output.savedFrames = r.count("saved frames");
+    t.output.dataBytes = r.count("data bytes");
+    t.output.fstatBytes = r.count("fstat bytes");
+    t.output.eneBytes = r.count("ene bytes");
+    const auto frames = r.count("frame count", 1ull << 32);
+    for (std::uint64_t k = 0; k < frames; ++k) t.output.frameTimes.push_back(r.real("frame time"));
+    r.expect("end");
+    s = std::move(t);
+}
+
+}  // namespace talus

@@ -1,0 +1,63 @@
+#include "IO/VtuWriter.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "Error.h"
+
+namespace talus {
+
+namespace {
+
+template <class Get>
+void dataArray(std::ofstream& out, const char* type, const char* name, int components, std::size_t count, Get get) {
+    out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
+        << "\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < count; ++k) get(out, k);
+    out << "</DataArray>\n";
+}
+
+}  // namespace
+
+void writeVtu(const std::string& path, const ParticleStore& p, const std::vector<std::uint32_t>& order) {
+    std::ofstream out(path);
+    if (!out) throw Error("cannot write " + path);
+    out.precision(10);
+    const std::size_t n = order.size();
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"0\">\n<Points>\n";
+    auto vec = [&](const std::vector<Vec3>& v) {
+        return [&, vp = &v](std::ofstream& o, std::size_t k) {
+            const Vec3& x = (*vp)[order[k]];
+            o << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+        };
+    };
+    dataArray(out, "Float64", "Position", 3, n, vec(p.position));
+    out << "</Points>\n<PointData Scalars=\"Radius\" Vectors=\"Velocity\">\n";
+    dataArray(out, "Float64", "Radius", 1, n, [&](std::ofstream& o, std::size_t k) { o << p.radius[order[k]] << '\n'; });
+    dataArray(out, "Float64", "Velocity", 3, n, vec(p.velocity));
+    dataArray(out, "Float64", "AngularVelocity", 3, n, vec(p.angularVelocity));
+    dataArray(out, "Int32", "Species", 1, n, [&](std::ofstream& o, std::size_t k) { o << p.species[order[k]] << '\n'; });
+    dataArray(out, "UInt64", "Id", 1, n, [&](std::ofstream& o, std::size_t k) { o << p.id[order[k]] << '\n'; });
+    dataArray(out, "UInt8", "Fixed", 1, n, [&](std::ofstream& o, std::size_t k) { o << int(p.fixed[order[k]]) << '\n'; });
+    out << "</PointData>\n<Cells>\n"
+        << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\"></DataArray>\n"
+        << "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\"></DataArray>\n"
+        << "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\"></DataArray>\n"
+        << "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    if (!out) throw Error("error while writing " + path);
+}
+
+void writePvd(const std::string& path, const std::string& base, const std::vector<double>& times) {
+    std::ofstream out(path);
+    if (!out) throw Error("cannot write " + path);
+    const std::string file = std::filesystem::path(base).filename().string();
+    out.precision(12);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    for (std::size_t k = 0; k < times.size(); ++k)
+        out << "<DataSet timestep=\"" << times[k] << "\" file=\"" << file << "_" << k << ".vtu\"/>\n";
+    out << "</Collection>\n</VTKFile>\n";
+}
+
+}  // namespace talus

@@ -1,0 +1,17 @@
+// ParaView output: one VTK XML unstructured-grid file (.vtu) per frame holding the particles as
+// points with radius, velocity, angular velocity, species, id and fixed flag, and a .pvd
+// collection listing the frames with their times.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+void writeVtu(const std::string& path, const ParticleStore& particles, const std::vector<std::uint32_t>& order);
+// Writes the .pvd index of frames 0..frames-1 named <base>_<k>.vtu at the given times.
+void writePvd(const std::string& path, const std::string& base, const std::vector<double>& times);
+
+}  // namespace talus

@@ -1,0 +1,35 @@
+// Energies and centre of mass of the mobile (non-fixed) particles, as written to .ene
+// (Documentation/FileFormats/ene.md). Gravitational energy is -sum m g.x (origin as reference).
+#pragma once
+
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+struct Energies {
+    double gravitational = 0;
+    double kinetic = 0;
+    double rotational = 0;
+    double elastic = 0;  // filled from the contact records
+    Vec3 centreOfMass = Vec3::Constant(NAN);
+    double mass = 0;
+
+    double total() const { return gravitational + kinetic + rotational + elastic; }
+};
+
+inline Energies particleEnergies(const ParticleStore& p, const Vec3& gravity) {
+    Energies e;
+    Vec3 moment = Vec3::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) continue;
+        e.kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+        e.rotational += 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i];
+        e.gravitational -= p.mass[i] * gravity.dot(p.position[i]);
+        moment += p.mass[i] * p.position[i];
+        e.mass += p.mass[i];
+    }
+    if (e.mass > 0) e.centreOfMass = moment / e.mass;
+    return e;
+}
+
+}  // namespace talus

@@ -1,0 +1,27 @@
+#include "Particles/ParticleStore.h"
+
+#include <utility>
+
+namespace talus {
+
+void ParticleStore::removeBySwap(std::size_t i) {
+    forEachArray([i](auto& array) {
+        if (i + 1 != array.size()) array[i] = std::move(array.back());
+        array.pop_back();
+    });
+}
+
+void ParticleStore::permute(const std::vector<std::size_t>& order) {
+    forEachArray([&order](auto& array) {
+        std::remove_reference_t<decltype(array)> sorted;
+        sorted.reserve(order.size());
+        for (std::size_t k : order) sorted.push_back(array[k]);
+        array.swap(sorted);
+    });
+}
+
+void ParticleStore::reserve(std::size_t n) {
+    forEachArray([n](auto& array) { array.reserve(n); });
+}
+
+}  // namespace talus

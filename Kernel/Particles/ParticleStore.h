@@ -1,0 +1,53 @@
+// All particles of a simulation as a structure of arrays (DESIGN.md "Data layout").
+//
+// Index i is a particle's current slot (it may change when particles are reordered or removed);
+// id[i] is its global id, unique for the life of the simulation and written to every output
+// file. Spheres carry a radius; mass and inverse inertia are cached from the species density.
+// A fixed particle (Flag::fixed) has inverse mass and inverse inertia 0: it is never
+// integrated, but it collides, and it may follow a prescribed motion (motion[i] >= 0).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "Math/Vector.h"
+
+namespace talus {
+
+struct ParticleStore {
+    std::vector<Vec3> position;
+    std::vector<Vec3> velocity;
+    std::vector<Vec3> angularVelocity;
+    std::vector<Vec3> force;
+    std::vector<Vec3> torque;
+    std::vector<double> radius;
+    std::vector<double> mass;
+    std::vector<double> invMass;     // 0 for fixed particles
+    std::vector<double> invInertia;  // 0 for fixed particles; sphere: 1 / (2/5 m r^2)
+    std::vector<std::uint32_t> species;
+    std::vector<std::uint64_t> id;
+    std::vector<std::uint8_t> fixed;   // 1: not integrated (still collides)
+    std::vector<std::int32_t> motion;  // index into Simulation's prescribed motions, or -1
+
+    std::size_t size() const { return position.size(); }
+    bool empty() const { return position.empty(); }
+
+    // Applies f to every per-particle array; the one place that lists them all, so that
+    // append, removal, reordering and restart cannot forget a field.
+    template <class F>
+    void forEachArray(F&& f) {
+        f(position); f(velocity); f(angularVelocity); f(force); f(torque);
+        f(radius); f(mass); f(invMass); f(invInertia);
+        f(species); f(id); f(fixed); f(motion);
+    }
+
+    // Removes slot i by moving the last particle into it (O(1); changes that particle's slot).
+    void removeBySwap(std::size_t i);
+
+    // Reorders so that new slot k holds old slot order[k]; order must be a permutation.
+    void permute(const std::vector<std::size_t>& order);
+
+    void reserve(std::size_t n);
+};
+
+}  // namespace talus

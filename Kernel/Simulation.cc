@@ -1,0 +1,414 @@
+#include "Simulation.h"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "IO/CommandLine.h"
+#include "IO/OutputFiles.h"
+#include "IO/Progress.h"
+#include "IO/RestartFile.h"
+
+namespace talus {
+
+namespace {
+
+std::string str(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+void requireWord(const std::string& word, const std::string& what) {
+    require(!word.empty() && word.find_first_of(" \t\n\r") == std::string::npos,
+            what + " must be one word without spaces, got '" + word + "'");
+}
+
+}  // namespace
+
+Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
+    RunSettings& c = state_.settings;
+    CommandLine& cl = *commandLine_;
+    cl.add("end-time", "T", "simulated time at which the run stops",
+           [this](const std::string& v) { setEndTime(CommandLine::toDouble("end-time", v)); });
+    cl.add("dt", "DT", "time step",
+           [this](const std::string& v) { setTimeStep(CommandLine::toDouble("dt", v)); });
+    cl.add("output-interval", "T", "simulated time between saved frames (0: first and last)",
+           [this](const std::string& v) { setOutputInterval(CommandLine::toDouble("output-interval", v)); });
+    cl.add("name", "NAME", "output file name (NAME.data, NAME.fstat, ...)",
+           [this](const std::string& v) { setName(v); });
+    cl.add("restart", "FILE", "continue the run saved in FILE (a .restart file)",
+           [this](const std::string& v) { restartFile_ = v; });
+    cl.add("skin", "S", "neighbour-list skin distance",
+           [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
+    cl.add("vtu", "on|off", "write ParaView .vtu frames",
+           [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
+    cl.add("files", "on|off", "write any output files at all",
+           [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
+    cl.add("progress-interval", "S", "wall seconds between progress lines", [&c](const std::string& v) {
+        c.progressInterval = CommandLine::toDouble("progress-interval", v);
+        require(c.progressInterval > 0, "flag --progress-interval must be positive");
+    });
+}
+
+Simulation::~Simulation() = default;
+
+// --- settings ---
+
+void Simulation::setName(const std::string& name) {
+    requireWord(name, "name");
+    state_.settings.name = name;
+}
+void Simulation::setTimeStep(double dt) {
+    require(std::isfinite(dt) && dt > 0, "time step (--dt) must be positive, got " + str(dt));
+    state_.settings.timeStep = dt;
+}
+void Simulation::setEndTime(double endTime) {
+    require(std::isfinite(endTime) && endTime >= 0, "end time (--end-time) must not be negative, got " + str(endTime));
+    state_.settings.endTime = endTime;
+}
+void Simulation::setOutputInterval(double interval) {
+    require(std::isfinite(interval) && interval >= 0,
+            "output interval (--output-interval) must not be negative, got " + str(interval));
+    state_.settings.outputInterval = interval;
+}
+void Simulation::setSkin(double skin) {
+    require(std::isfinite(skin) && skin >= 0, "skin (--skin) must not be negative, got " + str(skin));
+    state_.settings.skin = skin;
+}
+void Simulation::setFileOutput(bool on) {
+    RunSettings& c = state_.settings;
+    c.writeData = c.writeFstat = c.writeEne = c.writeVtu = c.writeRestart = on;
+}
+
+void Simulation::addFlag(const std::string& name, const std::string& help, double& value) {
+    commandLine_->add(name, "X", help + " (default " + str(value) + ")",
+                      [&value, name](const std::string& v) { value = CommandLine::toDouble(name, v); });
+}
+void Simulation::addFlag(const std::string& name, const std::string& help, int& value) {
+    commandLine_->add(name, "N", help + " (default " + std::to_string(value) + ")",
+                      [&value, name](const std::string& v) { value = CommandLine::toInt(name, v); });
+}
+
+// --- scene ---
+
+void Simulation::setDomain(const Vec3& lo, const Vec3& hi) {
+    require(isFinite(lo) && isFinite(hi) && (hi - lo).minCoeff() > 0,
+            "domain: the upper corner must lie above the lower corner along x, y and z");
+    state_.domain.lo = lo;
+    state_.domain.hi = hi;
+    state_.pairList.valid = false;
+}
+
+void Simulation::setPeriodic(bool x, bool y, bool z) {
+    state_.domain.periodic = {x, y, z};
+    state_.pairList.valid = false;
+}
+
+std::size_t Simulation::addSpecies(const std::string& name, double density, const ContactLaw& law) {
+    requireWord(name, "species name");
+    return state_.species.add(name, density, law);
+}
+
+std::size_t Simulation::addParticle(const Vec3& position, double radius, std::size_t species, const Vec3& velocity,
+                                    const Vec3& angularVelocity) {
+    ParticleStore& p = state_.particles;
+    const std::string which = "particle " + std::to_string(state_.nextId);
+    require(std::isfinite(radius) && radius > 0, which + ": radius must be positive, got " + str(radius));
+    require(isFinite(position), which + ": position is not finite");
+    require(isFinite(velocity) && isFinite(angularVelocity), which + ": velocity is not finite");
+    require(species < state_.species.size(), which + ": species " + std::to_string(species) +
+                                                 " does not exist (add species before particles)");
+    const double mass = state_.species[species].density * 4.0 / 3.0 * pi * radius * radius * radius;
+    p.position.push_back(position);
+    p.velocity.push_back(velocity);
+    p.angularVelocity.push_back(angularVelocity);
+    p.force.push_back(Vec3::Zero());
+    p.torque.push_back(Vec3::Zero());
+    p.radius.push_back(radius);
+    p.mass.push_back(mass);
+    p.invMass.push_back(1.0 / mass);
+    p.invInertia.push_back(1.0 / (0.4 * mass * radius * radius));
+    p.species.push_back(static_cast<std::uint32_t>(species));
+    p.id.push_back(state_.nextId++);
+    p.fixed.push_back(0);
+    p.motion.push_back(-1);
+    state_.pairList.valid = false;
+    return p.size() - 1;
+}
+
+std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion) {
+    require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
+            "fixed particle: motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
+    const std::size_t i = addParticle(position, radius, species);
+    ParticleStore& p = state_.particles;
+    p.fixed[i] = 1;
+    p.invMass[i] = 0;
+    p.invInertia[i] = 0;
+    p.motion[i] = motion;
+    if (motion >= 0) {
+        p.velocity[i] = state_.motions[motion].pointVelocity(position);
+        p.angularVelocity[i] = state_.motions[motion].angularVelocity;
+    }
+    return i;
+}
+
+void Simulation::removeParticle(std::size_t slot) {
+    require(slot < state_.particles.size(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
+    state_.particles.removeBySwap(slot);
+    state_.pairList.valid = false;
+}
+
+std::size_t Simulation::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {
+    require(isFinite(normal) && normal.norm() > 0, "wall: the normal must be a non-zero vector");
+    require(isFinite(point), "wall: the point is not finite");
+    require(species < state_.species.size(), "wall: species " + std::to_string(species) + " does not exist");
+    require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
+            "wall: motion " + std::to_string(motion) + " does not exist");
+    state_.walls.push_back({normal.normalized(), point, static_cast<std::uint32_t>(species), motion});
+    state_.pairList.valid = false;
+    return state_.walls.size() - 1;
+}
+
+std::size_t Simulation::addMotion(const PrescribedMotion& motion) {
+    require(isFinite(motion.velocity) && isFinite(motion.angularVelocity) && isFinite(motion.centre),
+            "prescribed motion: velocity, angular velocity and centre must be finite");
+    state_.motions.push_back(motion);
+    return state_.motions.size() - 1;
+}
+
+Energies Simulation::energies() const {
+    Energies e = particleEnergies(state_.particles, state_.gravity);
+    e.elastic = elasticEnergy_;
+    return e;
+}
+
+// --- the run ---
+
+int Simulation::solve(int argc, char** argv) {
+    std::vector<std::string> flags(argv + (argc > 0 ? 1 : 0), argv + argc);
+    try {
+        solveOrThrow(flags);
+        return 0;
+    } catch (const Error& e) {
+        std::cerr << (argc > 0 ? argv[0] : "talus") << ": error: " << e.what() << std::endl;
+        return 1;
+    }
+}
+
+void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
+    restartFile_.clear();
+    if (!commandLine_->parse(flags)) {
+        std::cout << commandLine_->help(name());
+        return;
+    }
+    const std::string restartFile = restartFile_;
+    if (!restartFile.empty()) {
+        readRestartFile(restartFile, state_);
+        commandLine_->parse(flags);  // flags given now override the saved settings
+    } else {
+        setupInitialConditions();
+    }
+    initialise(!restartFile.empty());
+
+    const double dt = state_.settings.timeStep;
+    const double remaining = state_.settings.endTime - state_.time;
+    const auto steps = remaining > 0 ? static_cast<std::uint64_t>(std::llround(remaining / dt)) : 0;
+    std::size_t mobile = 0;
+    for (auto f : state_.particles.fixed) mobile += !f;
+    Progress progress(std::cout, state_.settings.progressInterval);
+    progress.start(name(), state_.time, state_.settings.endTime, steps, mobile);
+    const std::uint64_t every = saveEvery();
+    for (std::uint64_t k = 1; k <= steps; ++k) {
+        const bool saving = (state_.step + 1) % every == 0 || k == steps;
+        actionsBeforeTimeStep();
+        integrate(saving);
+        actionsAfterTimeStep();
+        if (saving) save();
+        progress.update(state_.time, k, mobile);
+    }
+    progress.finish(state_.time, steps);
+    actionsAfterSolve();
+}
+
+std::uint64_t Simulation::saveEvery() const {
+    const RunSettings& c = state_.settings;
+    if (c.outputInterval <= 0) return ~std::uint64_t{0};
+    return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(c.outputInterval / c.timeStep)));
+}
+
+void Simulation::initialise(bool restarted) {
+    RunSettings& c = state_.settings;
+    require(c.timeStep > 0, "no time step: call setTimeStep or pass --dt");
+    require(c.endTime >= state_.time, "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
+    state_.species.validate();
+    if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
+        laws_ = state_.species.table<LinearSpringDashpot>();
+    else
+        laws_ = state_.species.table<HertzMindlin>();
+    for (const PlaneWall& w : state_.walls)
+        require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
+    checkTimeStep();
+    if (c.skin < 0) {
+        double rmin = INFINITY;
+        for (double r : state_.particles.radius) rmin = std::min(rmin, r);
+        c.skin = std::isfinite(rmin) ? 0.2 * rmin : 0;
+    }
+    state_.pairList.skin = c.skin;
+    files_.reset();
+    const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
+    if (anyFile) files_ = std::make_unique<OutputFiles>(state_, restarted);
+    initialised_ = true;
+    if (restarted) return;
+
+    // Initial forces, checking overlaps with the stricter initial limit.
+    for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
+    const double runLimit = c.maxOverlapFraction;
+    c.maxOverlapFraction = c.maxInitialOverlapFraction;
+    try {
+        computeForces(&records_);
+    } catch (const Error& e) {
+        c.maxOverlapFraction = runLimit;
+        throw Error(std::string("initial conditions: ") + e.what());
+    }
+    c.maxOverlapFraction = runLimit;
+    save();
+}
+
+double Simulation::shortestCollisionTime(std::string* which) const {
+    // The lightest mobile particle of each species, and whether a species has fixed particles.
+    const std::size_t n = state_.species.size();
+    std::vector<double> lightest(n, INFINITY), smallest(n, INFINITY);
+    std::vector<bool> hasFixed(n, false);
+    const ParticleStore& p = state_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) {
+            hasFixed[p.species[i]] = true;
+            smallest[p.species[i]] = std::min(smallest[p.species[i]], p.radius[i]);
+        } else {
+            lightest[p.species[i]] = std::min(lightest[p.species[i]], p.mass[i]);
+            smallest[p.species[i]] = std::min(smallest[p.species[i]], p.radius[i]);
+        }
+    }
+    double shortest = INFINITY;
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = a; b < n; ++b) {
+            double reducedMass = INFINITY;
+            if (std::isfinite(lightest[a]) && std::isfinite(lightest[b]))
+                reducedMass = lightest[a] * lightest[b] / (lightest[a] + lightest[b]);
+            else if (std::isfinite(lightest[a]) && hasFixed[b]) reducedMass = lightest[a];
+            else if (std::isfinite(lightest[b]) && hasFixed[a]) reducedMass = lightest[b];
+            if (!std::isfinite(reducedMass)) continue;
+            const double radius = smallest[a] * smallest[b] / (smallest[a] + smallest[b]);
+            const ContactLaw law = state_.species.pairLaw(a, b);
+            double tc = INFINITY;
+            if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
+            if (auto* h = std::get_if<HertzMindlin>(&law)) tc = h->collisionTime(reducedMass, radius, h->characteristicVelocity);
+            if (tc < shortest) {
+                shortest = tc;
+                if (which)
+                    *which = "species '" + state_.species[a].name + "' with '" + state_.species[b].name +
+                             "', reduced mass " + str(reducedMass);
+            }
+        }
+    return shortest;
+}
+
+void Simulation::checkTimeStep() const {
+    std::string which;
+    const double tc = shortestCollisionTime(&which);
+    const double dt = state_.settings.timeStep;
+    if (dt > tc / 10)
+        throw Error("time step " + str(dt) + " is larger than a tenth of the shortest collision time " + str(tc) + " (" +
+                    which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller");
+}
+
+void Simulation::computeForces(std::vector<ContactRecord>* records) {
+    ParticleStore& p = state_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
+        p.torque[i].setZero();
+    }
+    if (state_.pairList.needsRebuild(p, state_.domain, state_.time))
+        state_.pairList.rebuild(p, state_.domain, state_.walls, grid_);
+    summary_ = ContactSummary{};
+    if (records) records->clear();
+    std::visit(
+        [&](const auto& laws) {
+            addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
+                             state_.settings.timeStep, summary_, records);
+        },
+        laws_);
+    if (records) {
+        elasticEnergy_ = 0;
+        for (const ContactRecord& r : *records) elasticEnergy_ += r.elasticEnergy;
+    }
+    if (summary_.maxOverlapFraction > state_.settings.maxOverlapFraction) {
+        std::ostringstream m;
+        m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << " and "
+          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB << " overlap by "
+          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit "
+          << 100 * state_.settings.maxOverlapFraction
+          << "%); the contact is too soft for the impact speed, or the time step too large";
+        throw Error(m.str());
+    }
+}
+
+void Simulation::moveWithPrescribedMotion() {
+    const double dt = state_.settings.timeStep;
+    if (state_.motions.empty()) return;
+    std::vector<Mat3> rotation;
+    for (const PrescribedMotion& m : state_.motions) rotation.push_back(m.stepRotation(dt));
+    ParticleStore& p = state_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.motion[i] < 0) continue;
+        const PrescribedMotion& m = state_.motions[p.motion[i]];
+        p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
+    }
+    for (PlaneWall& w : state_.walls) {
+        if (w.motion < 0) continue;
+        w.point = state_.motions[w.motion].moved(w.point, rotation[w.motion], dt);
+        w.normal = (rotation[w.motion] * w.normal).normalized();
+    }
+    for (PrescribedMotion& m : state_.motions) m.advanceCentre(dt);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.motion[i] < 0) continue;
+        const PrescribedMotion& m = state_.motions[p.motion[i]];
+        p.velocity[i] = m.pointVelocity(p.position[i]);
+        p.angularVelocity[i] = m.angularVelocity;
+    }
+}
+
+// Velocity Verlet (SPEC.md 1): half kick, drift, forces at the new positions, half kick.
+void Simulation::integrate(bool recordContacts) {
+    ParticleStore& p = state_.particles;
+    const double dt = state_.settings.timeStep;
+    const double half = 0.5 * dt;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) continue;
+        p.velocity[i] += half * p.invMass[i] * p.force[i];
+        p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
+        p.position[i] += dt * p.velocity[i];
+    }
+    moveWithPrescribedMotion();
+    if (state_.domain.anyPeriodic())
+        for (Vec3& x : p.position) state_.domain.wrap(x);
+    state_.time += dt;
+    ++state_.step;
+    computeForces(recordContacts ? &records_ : nullptr);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) continue;
+        p.velocity[i] += half * p.invMass[i] * p.force[i];
+        p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
+    }
+}
+
+void Simulation::save() { writeOutput(); }
+
+void Simulation::writeOutput() {
+    if (!files_) return;
+    files_->writeFrame(state_, records_, elasticEnergy_);
+    files_->writeRestart(state_);
+}
+
+}  // namespace talus

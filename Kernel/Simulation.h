@@ -1,0 +1,125 @@
+// talus::Simulation, the base class of every driver (DESIGN.md "The driver contract").
+//
+// A driver sets species, particles, walls and boundaries in setupInitialConditions() and may
+// override the hooks; main() sets the name, time step and end time and calls solve(argc, argv).
+// The time loop is velocity Verlet (SPEC.md 1): half kick, drift, prescribed motions, periodic
+// wrap, neighbour-list update when needed, forces, half kick.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "Contacts/ContactForces.h"
+#include "Contacts/HGrid.h"
+#include "Error.h"
+#include "Particles/Energies.h"
+#include "SimulationState.h"
+
+namespace talus {
+
+class CommandLine;
+class OutputFiles;
+
+class Simulation {
+public:
+    Simulation();
+    virtual ~Simulation();
+
+    // Parses the flags (--help lists them), sets up or restarts, runs to the end time.
+    // Returns 0 on success; on any talus::Error prints it and returns 1.
+    int solve(int argc, char** argv);
+    // The same, with the flags as strings, throwing talus::Error instead of returning 1.
+    void solveOrThrow(const std::vector<std::string>& flags = {});
+
+    // --- run settings (command-line flags override them) ---
+    void setName(const std::string& name);
+    void setTimeStep(double dt);
+    void setEndTime(double endTime);
+    void setOutputInterval(double interval);
+    void setSkin(double skin);
+    void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
+    void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
+    RunSettings& settings() { return state_.settings; }
+
+    // A driver's own flag --name VALUE, listed by --help, parsed before setupInitialConditions.
+    void addFlag(const std::string& name, const std::string& help, double& value);
+    void addFlag(const std::string& name, const std::string& help, int& value);
+
+    // --- the scene ---
+    void setGravity(const Vec3& g) { state_.gravity = g; }
+    const Vec3& gravity() const { return state_.gravity; }
+    void setDomain(const Vec3& lo, const Vec3& hi);
+    void setPeriodic(bool x, bool y, bool z);
+    const Domain& domain() const { return state_.domain; }
+
+    std::size_t addSpecies(const std::string& name, double density, const ContactLaw& law);
+    SpeciesTable& species() { return state_.species; }
+
+    // Adds a sphere; returns its slot. Radius must be positive and the species must exist.
+    std::size_t addParticle(const Vec3& position, double radius, std::size_t species,
+                            const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
+    // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
+    std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
+    void removeParticle(std::size_t slot);
+
+    std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
+    std::size_t addMotion(const PrescribedMotion& motion);
+
+    ParticleStore& particles() { return state_.particles; }
+    const ParticleStore& particles() const { return state_.particles; }
+    std::vector<PlaneWall>& walls() { return state_.walls; }
+    std::vector<PrescribedMotion>& motions() { return state_.motions; }
+    std::mt19937_64& random() { return state_.random; }
+
+    double time() const { return state_.time; }
+    std::uint64_t step() const { return state_.step; }
+    double timeStep() const { return state_.settings.timeStep; }
+    double endTime() const { return state_.settings.endTime; }
+    const std::string& name() const { return state_.settings.name; }
+
+    // Energies of the mobile particles; elastic energy of the last force evaluation.
+    Energies energies() const;
+    const ContactSummary& contactSummary() const { return summary_; }
+    // The shortest collision time over the species pairs present (SPEC.md 1), and what it is.
+    double shortestCollisionTime(std::string* which = nullptr) const;
+
+    SimulationState& state() { return state_; }
+    const SimulationState& state() const { return state_; }
+    const PairList& pairList() const { return state_.pairList; }
+
+protected:
+    // --- hooks ---
+    virtual void setupInitialConditions() {}
+    virtual void actionsBeforeTimeStep() {}
+    virtual void actionsAfterTimeStep() {}
+    // Called at every save; the default writes .data, .fstat, .ene, .vtu and .restart.
+    virtual void writeOutput();
+    virtual void actionsAfterSolve() {}
+
+private:
+    void initialise(bool restarted);
+    void checkTimeStep() const;
+    void computeForces(std::vector<ContactRecord>* records);
+    void integrate(bool recordContacts);
+    void moveWithPrescribedMotion();
+    void save();
+    std::uint64_t saveEvery() const;
+
+    using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;
+
+    SimulationState state_;
+    HGrid grid_;
+    LawTables laws_;
+    ContactSummary summary_;
+    double elasticEnergy_ = 0;
+    std::vector<ContactRecord> records_;
+    std::unique_ptr<CommandLine> commandLine_;
+    std::unique_ptr<OutputFiles> files_;
+    bool initialised_ = false;
+    std::string restartFile_;
+};
+
+}  // namespace talus

@@ -1,0 +1,50 @@
+// What a contact law needs to know about one contact, and what it returns (SPEC.md 1).
+// Filled by the force loop for particle-particle and particle-wall contacts alike, so that each
+// law is written once for both.
+#pragma once
+
+#include "Math/Vector.h"
+
+namespace talus {
+
+struct ContactKinematics {
+    Vec3 normal;               // unit normal from j (or the wall) to i
+    double overlap;            // dn > 0
+    Vec3 relativeVelocity;     // vij = vi - vj of the centres (walls: at the contact point)
+    double normalVelocity;     // vij . n (negative while approaching)
+    Vec3 tangentialVelocity;   // vt of SPEC.md 1, including the spin terms
+    double reducedMass;        // mi mj / (mi + mj); mi for walls and fixed partners
+    double effectiveRadius;    // ri rj / (ri + rj); ri for walls
+    double distance;           // |ri - rj| for particle pairs; 0 for walls (see updateSpring)
+};
+
+struct ContactForce {
+    double normalForce;   // signed magnitude along n (positive: repulsive)
+    Vec3 tangentialForce;
+    Vec3 onI() const { return tangentialForce; }  // normal part added by the caller
+};
+
+// Tangential spring: forward Euler of SPEC.md 1, d(xi)/dt = vt - rij (xi . vij) / rij^2, which
+// keeps xi in the tangent plane as the contact rotates. A wall's normal only turns with the
+// wall, so there the spring is advanced with vt and projected back onto the tangent plane.
+inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, double dt) {
+    if (k.distance > 0) {
+        spring += dt * (k.tangentialVelocity - k.normal * (spring.dot(k.relativeVelocity) / k.distance));
+    } else {
+        spring += dt * k.tangentialVelocity;
+        spring -= k.normal * spring.dot(k.normal);
+    }
+}
+
+// Coulomb sliding (SPEC.md 1): caps |ft| at mu |fn| and resets the spring so that it is
+// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt.
+inline void applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
+                              double tangentialStiffness, double tangentialDamping, const Vec3& vt) {
+    const double limit = friction * std::abs(normalForce);
+    const double ft2 = tangentialForce.squaredNorm();
+    if (ft2 <= limit * limit) return;
+    tangentialForce *= limit / std::sqrt(ft2);
+    if (tangentialStiffness > 0) spring = -(tangentialForce + tangentialDamping * vt) / tangentialStiffness;
+}
+
+}  // namespace talus

@@ -1,0 +1,99 @@
+// Hertzian normal force with a Mindlin-type tangential spring and Coulomb sliding friction.
+//   fn = 4/3 E* sqrt(R* dn) dn - gn vn,   ft = -St xi - gt vt,   |ft| <= mu |fn|,
+//   Sn = 2 E* sqrt(R* dn), St = 8 G* sqrt(R* dn),
+//   gn = -2 sqrt(5/6) beta sqrt(Sn m*), gt = -2 sqrt(5/6) beta sqrt(St m*),
+//   beta = ln e / sqrt(ln^2 e + pi^2)
+// (Tsuji et al. 1992 in the form of Antypov & Elliott 2011; the restitution this damping gives
+// does not depend on the impact speed and is close to, not equal to, e.)
+// E* and G* are the effective moduli of the pair: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "Error.h"
+#include "Species/ContactKinematics.h"
+
+namespace talus {
+
+struct HertzMindlin {
+    double effectiveYoungsModulus = 0;  // E*
+    double effectiveShearModulus = 0;   // G*
+    double restitution = 1;             // e, sets the damping coefficient beta
+    double friction = 0;                // mu
+    // The speed at which the time-step check evaluates the (speed-dependent) collision time.
+    double characteristicVelocity = 1;
+
+    static constexpr const char* name = "HertzMindlin";
+
+    // Effective moduli from Young's modulus E and Poisson ratio nu of two equal materials.
+    static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {
+        require(youngsModulus > 0, "Young's modulus must be positive");
+        require(poissonRatio > -1 && poissonRatio < 0.5, "Poisson ratio must be in (-1, 0.5)");
+        HertzMindlin law;
+        law.effectiveYoungsModulus = youngsModulus / (2 * (1 - poissonRatio * poissonRatio));
+        const double shearModulus = youngsModulus / (2 * (1 + poissonRatio));
+        law.effectiveShearModulus = shearModulus / (2 * (2 - poissonRatio));
+        law.restitution = restitution;
+        return law;
+    }
+
+    HertzMindlin& withFriction(double mu) { friction = mu; return *this; }
+
+    double beta() const {
+        const double logE = std::log(restitution);
+        return logE / std::sqrt(logE * logE + pi * pi);
+    }
+
+    // Duration of an elastic central collision at impact speed v:
+    // tc = 2 (2/5) B(2/5, 1/2) dmax / v, dmax = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5).
+    double collisionTime(double reducedMass, double effectiveRadius, double impactSpeed) const {
+        const double maxOverlap = std::pow(
+            15 * reducedMass * impactSpeed * impactSpeed / (16 * effectiveYoungsModulus * std::sqrt(effectiveRadius)),
+            0.4);
+        return 2 * 0.4 * std::beta(0.4, 0.5) * maxOverlap / impactSpeed;
+    }
+
+    static HertzMindlin mix(const HertzMindlin& a, const HertzMindlin& b) {
+        HertzMindlin m;
+        m.effectiveYoungsModulus = 0.5 * (a.effectiveYoungsModulus + b.effectiveYoungsModulus);
+        m.effectiveShearModulus = 0.5 * (a.effectiveShearModulus + b.effectiveShearModulus);
+        m.restitution = 0.5 * (a.restitution + b.restitution);
+        m.friction = 0.5 * (a.friction + b.friction);
+        m.characteristicVelocity = std::max(a.characteristicVelocity, b.characteristicVelocity);
+        return m;
+    }
+
+    void validate(const std::string& what) const {
+        require(effectiveYoungsModulus > 0, what + ": effective Young's modulus must be positive");
+        require(effectiveShearModulus >= 0, what + ": effective shear modulus must not be negative");
+        require(restitution > 0 && restitution <= 1, what + ": restitution must be in (0, 1]");
+        require(friction >= 0, what + ": friction coefficient must not be negative");
+        require(characteristicVelocity > 0, what + ": characteristic velocity must be positive");
+    }
+
+    ContactForce force(const ContactKinematics& k, Vec3& spring, double dt) const {
+        const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);  // sqrt(R* dn)
+        const double normalStiffness = 2 * effectiveYoungsModulus * contactRadius;   // Sn
+        const double tangentialStiffness = 8 * effectiveShearModulus * contactRadius;  // St
+        const double dampingFactor = -2 * std::sqrt(5.0 / 6.0) * beta();
+        const double normalDamping = dampingFactor * std::sqrt(normalStiffness * k.reducedMass);
+        const double tangentialDamping = dampingFactor * std::sqrt(tangentialStiffness * k.reducedMass);
+        ContactForce f;
+        f.normalForce = 2.0 / 3.0 * normalStiffness * k.overlap - normalDamping * k.normalVelocity;
+        advanceTangentialSpring(spring, k, dt);
+        f.tangentialForce = -tangentialStiffness * spring - tangentialDamping * k.tangentialVelocity;
+        applyCoulombLimit(f.tangentialForce, spring, f.normalForce, friction, tangentialStiffness,
+                          tangentialDamping, k.tangentialVelocity);
+        return f;
+    }
+
+    // Normal: 8/15 E* sqrt(R*) dn^(5/2); tangential: 1/2 St |xi|^2 at the current overlap.
+    double elasticEnergy(const ContactKinematics& k, const Vec3& spring) const {
+        const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);
+        return 8.0 / 15.0 * effectiveYoungsModulus * contactRadius * k.overlap * k.overlap +
+               4 * effectiveShearModulus * contactRadius * spring.squaredNorm();
+    }
+};
+
+}  // namespace talus
