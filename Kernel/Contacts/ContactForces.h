@@ -56,8 +56,17 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const double sumR = p.radius[i] + p.radius[j];
         const double r2 = d.squaredNorm();
         Vec3& spring = list.springs[k];
+        const Law& law = laws(p.species[i], p.species[j]);
         if (r2 >= sumR * sumR) {
             spring.setZero();  // SPEC.md 1: the spring lives from the first time of contact
+            if (list.touching[k]) {  // separated during the last step
+                list.touching[k] = 0;
+                const double distance = std::sqrt(r2);
+                const Vec3 n = d / distance;
+                const Vec3 force = law.separationForce(distance - sumR, (p.velocity[i] - p.velocity[j]).dot(n), dt) * n;
+                p.force[i] += force;
+                p.force[j] -= force;
+            }
             continue;
         }
         ContactKinematics c;
@@ -72,8 +81,8 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
                                p.angularVelocity[i].cross(bij) - p.angularVelocity[j].cross(bji);
         c.reducedMass = 1.0 / (p.invMass[i] + p.invMass[j]);
         c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
-        const Law& law = laws(p.species[i], p.species[j]);
-        const ContactForce f = law.force(c, spring, dt);
+        const ContactForce f = law.force(c, spring, dt, !list.touching[k]);
+        list.touching[k] = 1;
         const Vec3 force = f.normalForce * c.normal + f.tangentialForce;
         p.force[i] += force;
         p.force[j] -= force;
@@ -91,8 +100,17 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const PlaneWall& wall = walls[list.wallPairs[k].wall];
         const double distance = wall.signedDistance(p.position[i]);
         Vec3& spring = list.wallSprings[k];
+        const Law& law = laws(p.species[i], wall.species);
         if (distance >= p.radius[i]) {
             spring.setZero();
+            if (list.wallTouching[k]) {
+                list.wallTouching[k] = 0;
+                const Vec3 contactPoint = p.position[i] - p.radius[i] * wall.normal;
+                const Vec3 wallVelocity =
+                    wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
+                p.force[i] += law.separationForce(distance - p.radius[i],
+                                                  (p.velocity[i] - wallVelocity).dot(wall.normal), dt) * wall.normal;
+            }
             continue;
         }
         ContactKinematics c;
@@ -108,8 +126,8 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
             c.relativeVelocity - c.normalVelocity * c.normal + p.angularVelocity[i].cross(bij);
         c.reducedMass = p.mass[i];
         c.effectiveRadius = p.radius[i];
-        const Law& law = laws(p.species[i], wall.species);
-        const ContactForce f = law.force(c, spring, dt);
+        const ContactForce f = law.force(c, spring, dt, !list.wallTouching[k]);
+        list.wallTouching[k] = 1;
         const Vec3 force = f.normalForce * c.normal + f.tangentialForce;
         p.force[i] += force;
         p.torque[i] += bij.cross(force);

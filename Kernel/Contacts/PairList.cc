@@ -32,6 +32,7 @@ namespace {
 struct CarriedSpring {
     std::uint64_t a, b;
     Vec3 spring;
+    std::uint8_t touching;
     bool operator<(const CarriedSpring& o) const { return a < o.a || (a == o.a && b < o.b); }
 };
 
@@ -44,16 +45,18 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     std::vector<CarriedSpring> carried;
     const std::uint64_t wallKey = ~std::uint64_t{0};
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (springs[k].isZero(0)) continue;
+        if (!touching[k] && springs[k].isZero(0)) continue;
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        carried.push_back(a < b ? CarriedSpring{a, b, springs[k]} : CarriedSpring{b, a, Vec3(-springs[k])});
+        carried.push_back(a < b ? CarriedSpring{a, b, springs[k], touching[k]}
+                                : CarriedSpring{b, a, Vec3(-springs[k]), touching[k]});
     }
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (!wallSprings[k].isZero(0))
-            carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallSprings[k]});
+        if (wallTouching[k] || !wallSprings[k].isZero(0))
+            carried.push_back(
+                {particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallSprings[k], wallTouching[k]});
     std::sort(carried.begin(), carried.end());
     auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedSpring* {
-        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedSpring{a, b, Vec3::Zero()});
+        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedSpring{a, b, Vec3::Zero(), 0});
         return it != carried.end() && it->a == a && it->b == b ? &*it : nullptr;
     };
 
@@ -61,9 +64,13 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     pairs.clear();
     grid.findPairs(particles, domain, skin, pairs);
     springs.assign(pairs.size(), Vec3::Zero());
+    touching.assign(pairs.size(), 0);
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        if (const CarriedSpring* c = find(std::min(a, b), std::max(a, b))) springs[k] = a < b ? c->spring : Vec3(-c->spring);
+        if (const CarriedSpring* c = find(std::min(a, b), std::max(a, b))) {
+            springs[k] = a < b ? c->spring : Vec3(-c->spring);
+            touching[k] = c->touching;
+        }
     }
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
@@ -74,9 +81,12 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
             wallPairs.push_back({i, w});
         }
     wallSprings.assign(wallPairs.size(), Vec3::Zero());
+    wallTouching.assign(wallPairs.size(), 0);
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (const CarriedSpring* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall))
+        if (const CarriedSpring* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall)) {
             wallSprings[k] = c->spring;
+            wallTouching[k] = c->touching;
+        }
 
     referencePosition = particles.position;
     valid = true;

@@ -189,10 +189,12 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("pairlist") << l.skin << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j) << l.springs[k]; w.end();
+            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j) << l.springs[k]
+                        << std::uint64_t(l.touching[k]); w.end();
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall) << l.wallSprings[k];
+            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall) << l.wallSprings[k]
+                        << std::uint64_t(l.wallTouching[k]);
             w.end();
         }
         for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
@@ -312,6 +314,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         l.springs.push_back(r.vec("spring"));
+        l.touching.push_back(r.flag("touching flag"));
     }
     for (std::uint64_t k = 0; k < wallPairs; ++k) {
         const auto i = r.count("wall pair particle", n - 1);
@@ -319,6 +322,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         if (t.walls.empty()) r.fail("wall pair without walls");
         l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
         l.wallSprings.push_back(r.vec("wall spring"));
+        l.wallTouching.push_back(r.flag("wall touching flag"));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
     r.expect("random");

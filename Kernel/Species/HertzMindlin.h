@@ -72,7 +72,11 @@ struct HertzMindlin {
         require(characteristicVelocity > 0, what + ": characteristic velocity must be positive");
     }
 
-    ContactForce force(const ContactKinematics& k, Vec3& spring, double dt) const {
+    // The Hertzian dashpot vanishes with the overlap, so it needs no correction at the
+    // instants of touch and separation (compare LinearSpringDashpot::onsetWeight).
+    double separationForce(double, double, double) const { return 0; }
+
+    ContactForce force(const ContactKinematics& k, Vec3& spring, double dt, bool /*firstStep*/) const {
         const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);  // sqrt(R* dn)
         const double normalStiffness = 2 * effectiveYoungsModulus * contactRadius;   // Sn
         const double tangentialStiffness = 8 * effectiveShearModulus * contactRadius;  // St
