@@ -65,7 +65,8 @@ double CommandLine::toDouble(const std::string& flag, const std::string& value) 
     errno = 0;
     char* end = nullptr;
     const double x = std::strtod(value.c_str(), &end);
-    if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE || !std::isfinite(x))
+    // ERANGE also flags subnormal results, which are finite numbers; overflow shows as inf.
+    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(x))
         throw Error("flag --" + flag + ": '" + value + "' is not a finite number");
     return x;
 }

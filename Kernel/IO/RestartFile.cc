@@ -72,7 +72,10 @@ public:
         errno = 0;
         char* end = nullptr;
         const double x = std::strtod(t.c_str(), &end);
-        if (end != t.c_str() + t.size() || errno == ERANGE) fail(std::string("bad number '") + t + "' for " + what);
+        // strtod also reports ERANGE for subnormal results, which the writer legitimately
+        // produces (a decaying velocity or spring) and which read back exactly; only overflow is bad.
+        const bool overflow = errno == ERANGE && std::isinf(x);
+        if (t.empty() || end != t.c_str() + t.size() || overflow) fail(std::string("bad number '") + t + "' for " + what);
         return x;
     }
     Vec3 vec(const char* what) {

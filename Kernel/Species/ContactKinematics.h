@@ -43,6 +43,11 @@ inline void applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normal
     const double limit = friction * std::abs(normalForce);
     const double ft2 = tangentialForce.squaredNorm();
     if (ft2 <= limit * limit) return;
+    if (limit == 0) {  // frictionless (or no normal force): no tangential force, no stored energy
+        tangentialForce.setZero();
+        spring.setZero();
+        return;
+    }
     tangentialForce *= limit / std::sqrt(ft2);
     if (tangentialStiffness > 0) spring = -(tangentialForce + tangentialDamping * vt) / tangentialStiffness;
 }
