@@ -41,6 +41,8 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [this](const std::string& v) { restartFile_ = v; });
     cl.add("skin", "S", "neighbour-list skin distance",
            [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
+    cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
+           [this](const std::string& v) { setCellSizeRatio(CommandLine::toDouble("cell-size-ratio", v)); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("files", "on|off", "write any output files at all",
@@ -75,6 +77,10 @@ void Simulation::setOutputInterval(double interval) {
 void Simulation::setSkin(double skin) {
     require(std::isfinite(skin) && skin >= 0, "skin (--skin) must not be negative, got " + str(skin));
     state_.settings.skin = skin;
+}
+void Simulation::setCellSizeRatio(double ratio) {
+    require(std::isfinite(ratio) && ratio > 1, "HGrid cell size ratio must be greater than 1, got " + str(ratio));
+    state_.settings.cellSizeRatio = ratio;
 }
 void Simulation::setFileOutput(bool on) {
     RunSettings& c = state_.settings;
@@ -203,12 +209,13 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         return;
     }
     const std::string restartFile = restartFile_;
-    if (!restartFile.empty()) {
+    if (!restartFile.empty())
         readRestartFile(restartFile, state_);
-        commandLine_->parse(flags);  // flags given now override the saved settings
-    } else {
+    else
         setupInitialConditions();
-    }
+    // The command line has the last word: over the settings of the restart file, and over run
+    // settings that setupInitialConditions may have made.
+    commandLine_->parse(flags);
     initialise(!restartFile.empty());
 
     const double dt = state_.settings.timeStep;
@@ -240,7 +247,10 @@ std::uint64_t Simulation::saveEvery() const {
 void Simulation::initialise(bool restarted) {
     RunSettings& c = state_.settings;
     require(c.timeStep > 0, "no time step: call setTimeStep or pass --dt");
-    require(c.endTime >= state_.time, "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
+    // Half a step of slack: the time is a sum of steps, so a run that reached its end time may sit
+    // a few ulps past it.
+    require(c.endTime >= state_.time - 0.5 * c.timeStep,
+            "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
     state_.species.validate();
     if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
         laws_ = state_.species.table<LinearSpringDashpot>();
@@ -249,6 +259,7 @@ void Simulation::initialise(bool restarted) {
     for (const PlaneWall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
+    grid_ = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
         double rmin = INFINITY;
         for (double r : state_.particles.radius) rmin = std::min(rmin, r);
@@ -261,56 +272,70 @@ void Simulation::initialise(bool restarted) {
     initialised_ = true;
     if (restarted) return;
 
-    // Initial forces, checking overlaps with the stricter initial limit.
+    // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
-    const double runLimit = c.maxOverlapFraction;
-    c.maxOverlapFraction = c.maxInitialOverlapFraction;
-    try {
-        computeForces(&records_);
-    } catch (const Error& e) {
-        c.maxOverlapFraction = runLimit;
-        throw Error(std::string("initial conditions: ") + e.what());
+    computeForces(&records_, /*checkOverlaps*/ false);
+    if (summary_.maxOverlapFraction > c.maxInitialOverlapFraction) {
+        std::ostringstream m;
+        m << "initial conditions: particle id " << summary_.worstA << " and "
+          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB << " overlap by "
+          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit "
+          << 100 * c.maxInitialOverlapFraction
+          << "%, settings().maxInitialOverlapFraction); place them further apart or make them smaller";
+        throw Error(m.str());
     }
-    c.maxOverlapFraction = runLimit;
     save();
 }
 
 double Simulation::shortestCollisionTime(std::string* which) const {
-    // The lightest mobile particle of each species, and whether a species has fixed particles.
+    // Per species: how many mobile particles, the lightest and the smallest of them, and whether
+    // fixed particles or walls of that species can be hit.
+    struct Present {
+        std::size_t mobile = 0;
+        double lightest = INFINITY, smallest = INFINITY;
+        bool immobile = false;  // fixed particles or walls
+    };
     const std::size_t n = state_.species.size();
-    std::vector<double> lightest(n, INFINITY), smallest(n, INFINITY);
-    std::vector<bool> hasFixed(n, false);
+    std::vector<Present> present(n);
     const ParticleStore& p = state_.particles;
     for (std::size_t i = 0; i < p.size(); ++i) {
+        Present& s = present[p.species[i]];
         if (p.fixed[i]) {
-            hasFixed[p.species[i]] = true;
-            smallest[p.species[i]] = std::min(smallest[p.species[i]], p.radius[i]);
-        } else {
-            lightest[p.species[i]] = std::min(lightest[p.species[i]], p.mass[i]);
-            smallest[p.species[i]] = std::min(smallest[p.species[i]], p.radius[i]);
+            s.immobile = true;
+            continue;
+        }
+        ++s.mobile;
+        s.lightest = std::min(s.lightest, p.mass[i]);
+        s.smallest = std::min(s.smallest, p.radius[i]);
+    }
+    for (const PlaneWall& w : state_.walls) present[w.species].immobile = true;
+
+    double shortest = INFINITY;
+    auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
+        const ContactLaw law = state_.species.pairLaw(a, b);
+        double tc = INFINITY;
+        if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
+        if (auto* h = std::get_if<HertzMindlin>(&law))
+            tc = h->collisionTime(reducedMass, effectiveRadius, h->characteristicVelocity);
+        if (tc >= shortest) return;
+        shortest = tc;
+        if (which)
+            *which = "species '" + state_.species[a].name + "' with '" + state_.species[b].name + "', reduced mass " +
+                     str(reducedMass);
+    };
+    for (std::size_t a = 0; a < n; ++a) {
+        const Present& pa = present[a];
+        if (pa.mobile == 0) continue;
+        for (std::size_t b = 0; b < n; ++b) {
+            const Present& pb = present[b];
+            // Two mobile particles (two of them if the species is the same), the lightest ones.
+            if (pb.mobile > (a == b ? 1u : 0u) && b >= a)
+                consider(a, b, pa.lightest * pb.lightest / (pa.lightest + pb.lightest),
+                         pa.smallest * pb.smallest / (pa.smallest + pb.smallest));
+            // A mobile particle against a fixed particle or a wall: the reduced mass is its own.
+            if (pb.immobile) consider(a, b, pa.lightest, pa.smallest);
         }
     }
-    double shortest = INFINITY;
-    for (std::size_t a = 0; a < n; ++a)
-        for (std::size_t b = a; b < n; ++b) {
-            double reducedMass = INFINITY;
-            if (std::isfinite(lightest[a]) && std::isfinite(lightest[b]))
-                reducedMass = lightest[a] * lightest[b] / (lightest[a] + lightest[b]);
-            else if (std::isfinite(lightest[a]) && hasFixed[b]) reducedMass = lightest[a];
-            else if (std::isfinite(lightest[b]) && hasFixed[a]) reducedMass = lightest[b];
-            if (!std::isfinite(reducedMass)) continue;
-            const double radius = smallest[a] * smallest[b] / (smallest[a] + smallest[b]);
-            const ContactLaw law = state_.species.pairLaw(a, b);
-            double tc = INFINITY;
-            if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
-            if (auto* h = std::get_if<HertzMindlin>(&law)) tc = h->collisionTime(reducedMass, radius, h->characteristicVelocity);
-            if (tc < shortest) {
-                shortest = tc;
-                if (which)
-                    *which = "species '" + state_.species[a].name + "' with '" + state_.species[b].name +
-                             "', reduced mass " + str(reducedMass);
-            }
-        }
     return shortest;
 }
 
@@ -323,7 +348,7 @@ void Simulation::checkTimeStep() const {
                     which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller");
 }
 
-void Simulation::computeForces(std::vector<ContactRecord>* records) {
+void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOverlaps) {
     ParticleStore& p = state_.particles;
     for (std::size_t i = 0; i < p.size(); ++i) {
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
@@ -343,7 +368,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records) {
         elasticEnergy_ = 0;
         for (const ContactRecord& r : *records) elasticEnergy_ += r.elasticEnergy;
     }
-    if (summary_.maxOverlapFraction > state_.settings.maxOverlapFraction) {
+    if (checkOverlaps && summary_.maxOverlapFraction > state_.settings.maxOverlapFraction) {
         std::ostringstream m;
         m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << " and "
           << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB << " overlap by "

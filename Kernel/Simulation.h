@@ -40,6 +40,7 @@ public:
     void setEndTime(double endTime);
     void setOutputInterval(double interval);
     void setSkin(double skin);
+    void setCellSizeRatio(double ratio);  // of successive HGrid levels (Contacts/HGrid.h)
     void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
     RunSettings& settings() { return state_.settings; }
@@ -102,7 +103,7 @@ protected:
 private:
     void initialise(bool restarted);
     void checkTimeStep() const;
-    void computeForces(std::vector<ContactRecord>* records);
+    void computeForces(std::vector<ContactRecord>* records, bool checkOverlaps = true);
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
     void save();

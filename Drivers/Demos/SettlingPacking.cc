@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     SettlingPacking packing;
     packing.setName("SettlingPacking");
     packing.setTimeStep(1e-4);  // about tc / 50 for the lightest pair
-    packing.setEndTime(10);
+    packing.setEndTime(20);
     packing.setOutputInterval(0.5);
     return packing.solve(argc, argv);
 }

@@ -25,6 +25,7 @@ public:
     }
 
     void setupInitialConditions() override {
+        setTimeStep(collisionTime / 50);  // --dt still overrides this
         const double reducedMass = 0.5;
         const auto glass = addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, restitution, reducedMass));
         setGravity(Vec3::Zero());
@@ -68,7 +69,6 @@ private:
 int main(int argc, char** argv) {
     TwoParticleCollision collision;
     collision.setName("TwoParticleCollision");
-    collision.setTimeStep(collision.collisionTime / 50);
     collision.setEndTime(0.2);
     collision.setOutputInterval(0.002);
     return collision.solve(argc, argv);

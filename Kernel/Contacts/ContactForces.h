@@ -38,16 +38,60 @@ struct ContactSummary {
     bool worstIsWall = false;
 };
 
+// Kinematics of particle i against a partner touching at distance `distance` along the unit
+// normal n (SPEC.md 1); overlap = radiusSum - distance may be negative for a pair that just
+// separated. Branch vectors bij = -(ri - dn/2) n and bji = (rj - dn/2) n (rj = 0 for walls).
+inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double radiusI, double radiusJ,
+                                           const Vec3& relativeVelocity, const Vec3& spinI, const Vec3& spinJ,
+                                           Vec3& bij, Vec3& bji) {
+    ContactKinematics c;
+    c.normal = n;
+    c.overlap = overlap;
+    bij = -(radiusI - 0.5 * overlap) * n;
+    bji = (radiusJ - 0.5 * overlap) * n;
+    c.relativeVelocity = relativeVelocity;
+    c.normalVelocity = relativeVelocity.dot(n);
+    c.tangentialVelocity = relativeVelocity - c.normalVelocity * n + spinI.cross(bij) - spinJ.cross(bji);
+    return c;
+}
+
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, ContactSummary& summary, std::vector<ContactRecord>* records) {
-    auto noteOverlap = [&summary](double fraction, std::uint64_t a, std::uint64_t b, bool wall) {
-        if (fraction <= summary.maxOverlapFraction) return;
-        summary.maxOverlapFraction = fraction;
-        summary.worstA = a;
-        summary.worstB = b;
-        summary.worstIsWall = wall;
+    // Force and torque on i (and j, unless it is a wall) of one contact, or of the separation
+    // impulse of a pair that stopped touching during the last step.
+    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n, const Vec3& bij,
+                      const Vec3& bji) {
+        const Vec3 force = f.normalForce * n + f.tangentialForce;
+        p.force[i] += force;
+        p.torque[i] += bij.cross(force);
+        if (j >= 0) {
+            p.force[j] -= force;
+            p.torque[j] -= bji.cross(force);
+        }
+    };
+    auto touch = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij, const Vec3& bji,
+                     ContactHistory& history, const Law& law, double smallerRadius, std::uint64_t idB) {
+        const ContactForce f = law.force(c, history, dt);  // also records what separationForce needs
+        history.touching = true;
+        apply(i, j, f, c.normal, bij, bji);
+        ++summary.contacts;
+        const double fraction = c.overlap / smallerRadius;
+        if (fraction > summary.maxOverlapFraction) {
+            summary.maxOverlapFraction = fraction;
+            summary.worstA = p.id[i];
+            summary.worstB = idB;
+            summary.worstIsWall = j < 0;
+        }
+        if (records)
+            records->push_back({i, j, p.position[i] + bij, c.overlap, history.spring.norm(), f.normalForce, c.normal,
+                                f.tangentialForce, law.elasticEnergy(c, history.spring)});
+    };
+    auto separate = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij,
+                        const Vec3& bji, ContactHistory& history, const Law& law) {
+        apply(i, j, law.separationForce(c, history, dt), c.normal, bij, bji);
+        history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
     };
 
     for (std::size_t k = 0; k < list.pairs.size(); ++k) {
@@ -55,88 +99,46 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const Vec3 d = domain.nearestImage(p.position[i] - p.position[j]);
         const double sumR = p.radius[i] + p.radius[j];
         const double r2 = d.squaredNorm();
-        Vec3& spring = list.springs[k];
-        const Law& law = laws(p.species[i], p.species[j]);
-        if (r2 >= sumR * sumR) {
-            spring.setZero();  // SPEC.md 1: the spring lives from the first time of contact
-            if (list.touching[k]) {  // separated during the last step
-                list.touching[k] = 0;
-                const double distance = std::sqrt(r2);
-                const Vec3 n = d / distance;
-                const Vec3 force = law.separationForce(distance - sumR, (p.velocity[i] - p.velocity[j]).dot(n), dt) * n;
-                p.force[i] += force;
-                p.force[j] -= force;
-            }
-            continue;
-        }
-        ContactKinematics c;
-        c.distance = std::sqrt(r2);
-        c.normal = d / c.distance;
-        c.overlap = sumR - c.distance;
-        const Vec3 bij = -(p.radius[i] - 0.5 * c.overlap) * c.normal;
-        const Vec3 bji = (p.radius[j] - 0.5 * c.overlap) * c.normal;
-        c.relativeVelocity = p.velocity[i] - p.velocity[j];
-        c.normalVelocity = c.relativeVelocity.dot(c.normal);
-        c.tangentialVelocity = c.relativeVelocity - c.normalVelocity * c.normal +
-                               p.angularVelocity[i].cross(bij) - p.angularVelocity[j].cross(bji);
+        ContactHistory& history = list.history[k];
+        const bool touching = r2 < sumR * sumR;
+        if (!touching && !history.touching) continue;
+        const double distance = std::sqrt(r2);
+        Vec3 bij, bji;
+        ContactKinematics c = contactKinematics(d / distance, sumR - distance, p.radius[i], p.radius[j],
+                                                p.velocity[i] - p.velocity[j], p.angularVelocity[i],
+                                                p.angularVelocity[j], bij, bji);
+        c.distance = distance;
         c.reducedMass = 1.0 / (p.invMass[i] + p.invMass[j]);
         c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
-        const ContactForce f = law.force(c, spring, dt, !list.touching[k]);
-        list.touching[k] = 1;
-        const Vec3 force = f.normalForce * c.normal + f.tangentialForce;
-        p.force[i] += force;
-        p.force[j] -= force;
-        p.torque[i] += bij.cross(force);
-        p.torque[j] -= bji.cross(force);
-        ++summary.contacts;
-        noteOverlap(c.overlap / std::min(p.radius[i], p.radius[j]), p.id[i], p.id[j], false);
-        if (records)
-            records->push_back({i, static_cast<std::int64_t>(j), p.position[i] + bij, c.overlap, spring.norm(),
-                                f.normalForce, c.normal, f.tangentialForce, law.elasticEnergy(c, spring)});
+        const Law& law = laws(p.species[i], p.species[j]);
+        if (touching)
+            touch(i, j, c, bij, bji, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
+        else
+            separate(i, j, c, bij, bji, history, law);
     }
 
     for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
         const std::uint32_t i = list.wallPairs[k].particle;
         const PlaneWall& wall = walls[list.wallPairs[k].wall];
         const double distance = wall.signedDistance(p.position[i]);
-        Vec3& spring = list.wallSprings[k];
-        const Law& law = laws(p.species[i], wall.species);
-        if (distance >= p.radius[i]) {
-            spring.setZero();
-            if (list.wallTouching[k]) {
-                list.wallTouching[k] = 0;
-                const Vec3 contactPoint = p.position[i] - p.radius[i] * wall.normal;
-                const Vec3 wallVelocity =
-                    wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
-                p.force[i] += law.separationForce(distance - p.radius[i],
-                                                  (p.velocity[i] - wallVelocity).dot(wall.normal), dt) * wall.normal;
-            }
-            continue;
-        }
-        ContactKinematics c;
-        c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
-        c.normal = wall.normal;
-        c.overlap = p.radius[i] - distance;
-        const Vec3 bij = -(p.radius[i] - 0.5 * c.overlap) * c.normal;
-        const Vec3 contactPoint = p.position[i] + bij;
+        ContactHistory& history = list.wallHistory[k];
+        const bool touching = distance < p.radius[i];
+        if (!touching && !history.touching) continue;
+        const double overlap = p.radius[i] - distance;
+        const Vec3 contactPoint = p.position[i] - (p.radius[i] - 0.5 * overlap) * wall.normal;
         const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
-        c.relativeVelocity = p.velocity[i] - wallVelocity;
-        c.normalVelocity = c.relativeVelocity.dot(c.normal);
-        c.tangentialVelocity =
-            c.relativeVelocity - c.normalVelocity * c.normal + p.angularVelocity[i].cross(bij);
+        Vec3 bij, bji;
+        ContactKinematics c = contactKinematics(wall.normal, overlap, p.radius[i], 0, p.velocity[i] - wallVelocity,
+                                                p.angularVelocity[i], Vec3::Zero(), bij, bji);
+        c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
         c.reducedMass = p.mass[i];
         c.effectiveRadius = p.radius[i];
-        const ContactForce f = law.force(c, spring, dt, !list.wallTouching[k]);
-        list.wallTouching[k] = 1;
-        const Vec3 force = f.normalForce * c.normal + f.tangentialForce;
-        p.force[i] += force;
-        p.torque[i] += bij.cross(force);
-        ++summary.contacts;
-        noteOverlap(c.overlap / p.radius[i], p.id[i], list.wallPairs[k].wall, true);
-        if (records)
-            records->push_back({i, -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1, contactPoint, c.overlap,
-                                spring.norm(), f.normalForce, c.normal, f.tangentialForce,
-                                law.elasticEnergy(c, spring)});
+        const Law& law = laws(p.species[i], wall.species);
+        const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
+        if (touching)
+            touch(i, wallIndex, c, bij, bji, history, law, p.radius[i], list.wallPairs[k].wall);
+        else
+            separate(i, wallIndex, c, bij, bji, history, law);
     }
 }
 

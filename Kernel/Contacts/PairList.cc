@@ -27,50 +27,51 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
 
 namespace {
 
-// History of one touching pair, keyed by the global ids (smaller first); the spring is stored
-// as seen from the smaller id.
-struct CarriedSpring {
+// History of one pair, keyed by the global ids (smaller first); the spring is stored as seen
+// from the smaller id.
+struct CarriedHistory {
     std::uint64_t a, b;
-    Vec3 spring;
-    std::uint8_t touching;
-    bool operator<(const CarriedSpring& o) const { return a < o.a || (a == o.a && b < o.b); }
+    ContactHistory history;
+    bool operator<(const CarriedHistory& o) const { return a < o.a || (a == o.a && b < o.b); }
 };
+
+ContactHistory reversed(ContactHistory h) {
+    h.spring = -h.spring;
+    return h;
+}
+
+bool worthCarrying(const ContactHistory& h) { return h.touching || !h.spring.isZero(0); }
 
 }  // namespace
 
 void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
                        HGrid& grid) {
-    // 1. Remember the springs of touching pairs by global ids (a wall w is id ~w, an id that no
+    // 1. Remember the history of touching pairs by global ids (a wall w is id ~w, an id that no
     //    particle can have).
-    std::vector<CarriedSpring> carried;
+    std::vector<CarriedHistory> carried;
     const std::uint64_t wallKey = ~std::uint64_t{0};
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (!touching[k] && springs[k].isZero(0)) continue;
+        if (!worthCarrying(history[k])) continue;
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        carried.push_back(a < b ? CarriedSpring{a, b, springs[k], touching[k]}
-                                : CarriedSpring{b, a, Vec3(-springs[k]), touching[k]});
+        carried.push_back(a < b ? CarriedHistory{a, b, history[k]} : CarriedHistory{b, a, reversed(history[k])});
     }
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (wallTouching[k] || !wallSprings[k].isZero(0))
-            carried.push_back(
-                {particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallSprings[k], wallTouching[k]});
+        if (worthCarrying(wallHistory[k]))
+            carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory[k]});
     std::sort(carried.begin(), carried.end());
-    auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedSpring* {
-        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedSpring{a, b, Vec3::Zero(), 0});
+    auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedHistory* {
+        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{a, b, {}});
         return it != carried.end() && it->a == a && it->b == b ? &*it : nullptr;
     };
 
-    // 2. New candidates.
+    // 2. New candidates, with the history they had.
     pairs.clear();
     grid.findPairs(particles, domain, skin, pairs);
-    springs.assign(pairs.size(), Vec3::Zero());
-    touching.assign(pairs.size(), 0);
+    history.assign(pairs.size(), ContactHistory{});
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        if (const CarriedSpring* c = find(std::min(a, b), std::max(a, b))) {
-            springs[k] = a < b ? c->spring : Vec3(-c->spring);
-            touching[k] = c->touching;
-        }
+        if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
+            history[k] = a < b ? c->history : reversed(c->history);
     }
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
@@ -80,13 +81,10 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
                 continue;
             wallPairs.push_back({i, w});
         }
-    wallSprings.assign(wallPairs.size(), Vec3::Zero());
-    wallTouching.assign(wallPairs.size(), 0);
+    wallHistory.assign(wallPairs.size(), ContactHistory{});
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (const CarriedSpring* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall)) {
-            wallSprings[k] = c->spring;
-            wallTouching[k] = c->touching;
-        }
+        if (const CarriedHistory* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall))
+            wallHistory[k] = c->history;
 
     referencePosition = particles.position;
     valid = true;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Boundaries/Domain.h"
+#include "Contacts/ContactHistory.h"
 #include "Contacts/HGrid.h"
 #include "Particles/ParticleStore.h"
 #include "Walls/PlaneWall.h"
@@ -26,11 +27,9 @@ struct WallCandidate {
 class PairList {
 public:
     std::vector<ParticlePair> pairs;
-    std::vector<Vec3> springs;  // springs[k] belongs to pairs[k]; zero when not in contact
-    std::vector<std::uint8_t> touching;  // 1 if pairs[k] touched at the last force evaluation
+    std::vector<ContactHistory> history;  // history[k] belongs to pairs[k]
     std::vector<WallCandidate> wallPairs;
-    std::vector<Vec3> wallSprings;
-    std::vector<std::uint8_t> wallTouching;
+    std::vector<ContactHistory> wallHistory;
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)

@@ -76,6 +76,7 @@ public:
         // produces (a decaying velocity or spring) and which read back exactly; only overflow is bad.
         const bool overflow = errno == ERANGE && std::isinf(x);
         if (t.empty() || end != t.c_str() + t.size() || overflow) fail(std::string("bad number '") + t + "' for " + what);
+        if (!std::isfinite(x)) fail(std::string("'") + t + "' for " + what + " is not a finite number");
         return x;
     }
     Vec3 vec(const char* what) {
@@ -102,6 +103,17 @@ public:
         return x;
     }
     bool flag(const char* what) { return count(what, 1) == 1; }
+    bool atEnd() {
+        int c;
+        while ((c = in_.get()) != EOF) {
+            if (c == '\n') ++line_;
+            if (!std::isspace(c)) {
+                in_.unget();
+                return false;
+            }
+        }
+        return true;
+    }
     std::istream& stream() { return in_; }
 
 private:
@@ -142,6 +154,20 @@ ContactLaw readLaw(Reader& r) {
     r.fail("unknown contact law '" + kind + "'");
 }
 
+void writeHistory(Writer& w, const ContactHistory& h) {
+    w << h.spring << h.normalForce << h.tangentialForce << std::uint64_t(h.touching);
+    w.end();
+}
+
+ContactHistory readHistory(Reader& r) {
+    ContactHistory h;
+    h.spring = r.vec("tangential spring");
+    h.normalForce = r.real("normal force");
+    h.tangentialForce = r.vec("tangential force");
+    h.touching = r.flag("touching flag");
+    return h;
+}
+
 }  // namespace
 
 void writeRestartFile(const std::string& path, const SimulationState& s) {
@@ -153,7 +179,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         const RunSettings& c = s.settings;
         w.key("Talus restart") << std::uint64_t(formatVersion); w.end();
         w.key("name") << c.name; w.end();
-        w.key("run") << c.timeStep << c.endTime << c.outputInterval << c.skin << c.progressInterval
+        w.key("run") << c.timeStep << c.endTime << c.outputInterval << c.skin << c.cellSizeRatio << c.progressInterval
                      << c.maxOverlapFraction << c.maxInitialOverlapFraction; w.end();
         w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
                        << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
@@ -192,13 +218,12 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("pairlist") << l.skin << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j) << l.springs[k]
-                        << std::uint64_t(l.touching[k]); w.end();
+            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
+            writeHistory(w, l.history[k]);
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall) << l.wallSprings[k]
-                        << std::uint64_t(l.wallTouching[k]);
-            w.end();
+            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
+            writeHistory(w, l.wallHistory[k]);
         }
         for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
         std::ostringstream random;
@@ -232,6 +257,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     c.endTime = r.real("end time");
     c.outputInterval = r.real("output interval");
     c.skin = r.real("skin");
+    c.cellSizeRatio = r.real("cell size ratio");
     c.progressInterval = r.real("progress interval");
     c.maxOverlapFraction = r.real("maximum overlap fraction");
     c.maxInitialOverlapFraction = r.real("maximum initial overlap fraction");
@@ -255,13 +281,24 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < speciesCount; ++k) {
         std::string name = r.token("species name");
         const double density = r.real("density");
-        t.species.add(name, density, readLaw(r));
+        ContactLaw law = readLaw(r);
+        try {
+            t.species.add(name, density, law);
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
     }
     r.expect("pairs");
     const auto pairCount = r.count("pair count", speciesCount * speciesCount);
     for (std::uint64_t k = 0; k < pairCount; ++k) {
         const auto a = r.count("species index", speciesCount - 1), b = r.count("species index", speciesCount - 1);
-        t.species.setPair(a, b, readLaw(r));
+        ContactLaw law = readLaw(r);
+        try {
+            std::visit([](const auto& l) { l.validate("species pair"); }, law);
+            t.species.setPair(a, b, law);
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
     }
     r.expect("motions");
     const auto motionCount = r.count("motion count", 1u << 20);
@@ -316,16 +353,14 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        l.springs.push_back(r.vec("spring"));
-        l.touching.push_back(r.flag("touching flag"));
+        l.history.push_back(readHistory(r));
     }
     for (std::uint64_t k = 0; k < wallPairs; ++k) {
         const auto i = r.count("wall pair particle", n - 1);
         const auto w = r.count("wall pair wall", t.walls.empty() ? 0 : t.walls.size() - 1);
         if (t.walls.empty()) r.fail("wall pair without walls");
         l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
-        l.wallSprings.push_back(r.vec("wall spring"));
-        l.wallTouching.push_back(r.flag("wall touching flag"));
+        l.wallHistory.push_back(readHistory(r));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
     r.expect("random");
@@ -345,6 +380,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     const auto frames = r.count("frame count", 1ull << 32);
     for (std::uint64_t k = 0; k < frames; ++k) t.output.frameTimes.push_back(r.real("frame time"));
     r.expect("end");
+    if (!r.atEnd()) r.fail("unexpected text after 'end'");
     s = std::move(t);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "Error.h"
+#include "Contacts/ContactHistory.h"
 #include "Species/ContactKinematics.h"
 
 namespace talus {
@@ -63,45 +64,73 @@ struct LinearSpringDashpot {
         require(friction >= 0, what + ": friction coefficient must not be negative");
     }
 
-    // The dashpot forces jump at the instants of first touch and of separation (the spring
-    // force does not), and the midpoint impulse dt f(t) of velocity Verlet misplaces such a jump
-    // by up to dt/2: an O(dt/tc) error in the restitution coefficient. So on the first step of a
-    // contact, which began tau = dn/|vn| ago, the dashpot counts for the dt/2 + tau of the
-    // impulse window it really acted in (the part before the window was missed by the previous
-    // step), and on the first step after separation separationForce() returns the impulse that
-    // the last contact step over- or under-counted.
-    static double onsetWeight(const ContactKinematics& k, double dt) {
-        const double speed = std::abs(k.normalVelocity);
-        if (k.overlap >= speed * dt) return 1.5;
-        return k.overlap / (speed * dt) + 0.5;
-    }
-
-    // Normal force on the first step after the pair separated, at distance gap > 0, opening at
-    // speed vn > 0: the last contact step applied the dashpot over the window up to dt/2 past
-    // it; the contact ended gap/vn ago, i.e. at dt/2 - gap/vn after that window's end.
-    double separationForce(double gap, double normalVelocity, double dt) const {
-        if (normalVelocity <= 0 || normalDamping == 0) return 0;
-        const double weight = std::max(-0.5, 0.5 - gap / (normalVelocity * dt));
-        return -weight * normalDamping * normalVelocity;
-    }
-
-    // The normal dashpot acts on the relative velocity at the end of the step, u(n+1), found
-    // implicitly for the pair alone: velocity Verlet gives u(n+1) = u + dt/(2m*) f with u the
-    // half-step velocity and f = kn dn - w gn u(n+1). Using u itself, as plain velocity Verlet
-    // does, lags the damping by dt/2, an error of O(dt/tc) in the restitution coefficient (4% for
-    // e = 0.1 at dt = tc/50); this is O((dt/tc)^2) (Documentation/Validation/Restitution.md).
-    ContactForce force(const ContactKinematics& k, Vec3& spring, double dt, bool firstStep) const {
-        const double weight = firstStep ? onsetWeight(k, dt) : 1.0;
+    // Velocity Verlet applies the force of step n as the impulse dt f(n) over the window
+    // [t - dt/2, t + dt/2]: the midpoint rule, second order only where f is smooth. At the instants
+    // of first touch and of separation the dashpot force jumps and the spring force has a kink,
+    // and the midpoint rule misplaces them by up to dt/2: an O(dt/tc) error in the restitution
+    // (4% for e = 0.1 at dt = tc/50) and an O((dt/tc)^2) one in the energy of elastic contacts.
+    // So the impulse from the touch to the first contact step, and from the last contact step to
+    // the separation, is integrated by the trapezoidal rule with the force at the touch or
+    // separation instant (spring 0, dashpot of the speed then), whose time follows from the
+    // overlap and the normal speed (Documentation/Validation/Restitution.md).
+    //
+    // The normal dashpot also acts on the relative velocity at the end of the step, u(n+1), found
+    // implicitly for the pair alone from u(n+1) = u + dt/(2m*) f, u the half-step velocity:
+    // plain velocity Verlet uses u itself, which lags the damping by dt/2 (another O(dt/tc) error).
+    ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        // On the first step the contact began tau = dn/|u| ago (u is still the approach speed):
+        // the impulse is tau (f(touch) + f)/2 + dt/2 f = dt (c f + extra f(touch)). Coulomb's
+        // limit holds for f and f(touch) each, and so for their combination.
+        double c = 1, extra = 0, springStep = dt;
+        if (!history.touching) {
+            const double speed = std::abs(k.normalVelocity);
+            const double tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
+            c = 0.5 + 0.5 * tau / dt;
+            extra = 0.5 * tau / dt;
+            springStep = tau;
+        }
         const double halfStepOverMass = 0.5 * dt / k.reducedMass;
-        const double elastic = normalStiffness * k.overlap;
-        const double endVelocity = (k.normalVelocity + halfStepOverMass * elastic) /
-                                   (1 + halfStepOverMass * weight * normalDamping);
+        const double touchNormalForce = -normalDamping * k.normalVelocity;
+        const double endVelocity =
+            (k.normalVelocity + halfStepOverMass * (c * normalStiffness * k.overlap + extra * touchNormalForce)) /
+            (1 + halfStepOverMass * c * normalDamping);
         ContactForce f;
-        f.normalForce = elastic - weight * normalDamping * endVelocity;
-        advanceTangentialSpring(spring, k, dt);
-        f.tangentialForce = -tangentialStiffness * spring - weight * tangentialDamping * k.tangentialVelocity;
-        applyCoulombLimit(f.tangentialForce, spring, f.normalForce, friction, tangentialStiffness,
+        f.normalForce = normalStiffness * k.overlap - normalDamping * endVelocity;
+        advanceTangentialSpring(history.spring, k, springStep);
+        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
+        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
                           tangentialDamping, k.tangentialVelocity);
+        if (c < 1) {
+            Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
+            Vec3 noSpring = Vec3::Zero();
+            applyCoulombLimit(touchTangentialForce, noSpring, touchNormalForce, friction, 0, 0, k.tangentialVelocity);
+            f.normalForce = c * f.normalForce + extra * touchNormalForce;
+            f.tangentialForce = c * f.tangentialForce + extra * touchTangentialForce;
+        }
+        history.normalForce = f.normalForce;  // for separationForce
+        history.tangentialForce = f.tangentialForce;
+        return f;
+    }
+
+    // Force on the first step after the pair separated (c.overlap = -gap < 0, opening at normal
+    // speed u > 0): in the trajectory of the last step the contact ended tau' = dt - gap/u after
+    // the last contact step, whose half window after it applied dt/2 f(last); the trapezoid gives
+    // tau' (f(last) + f(separation))/2. The force now is the difference. The separation speed is
+    // the one after this correction, u + dt f/m*, so the normal dashpot force at separation,
+    // -gn (u + dt f/m*), is again solved implicitly; the tangential one uses the present vt.
+    ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
+        ContactForce f{0, Vec3::Zero()};
+        if (c.normalVelocity <= 0) return f;
+        const double contactAfterLastStep = dt - std::min(dt, -c.overlap / c.normalVelocity);
+        const double atSeparation = 0.5 * contactAfterLastStep / dt, atLast = atSeparation - 0.5;
+        const double separationNormalForce = -normalDamping * c.normalVelocity;
+        Vec3 separationTangentialForce = -tangentialDamping * c.tangentialVelocity;
+        Vec3 noSpring = Vec3::Zero();
+        applyCoulombLimit(separationTangentialForce, noSpring, separationNormalForce, friction, 0, 0,
+                          c.tangentialVelocity);
+        f.normalForce = (atLast * history.normalForce + atSeparation * separationNormalForce) /
+                        (1 + atSeparation * normalDamping * dt / c.reducedMass);
+        f.tangentialForce = atLast * history.tangentialForce + atSeparation * separationTangentialForce;
         return f;
     }
 

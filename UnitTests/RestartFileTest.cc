@@ -1,0 +1,264 @@
+// Restart files: writing then reading gives back every field of the run state bitwise, and a
+// restarted run continues exactly as the uninterrupted one (DESIGN.md "Determinism").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "IO/RestartFile.h"
+#include "TestHelpers.h"
+
+using namespace talus;
+using test::sameBits;
+using test::SceneSimulation;
+
+namespace {
+
+const double collisionTime = 0.01;
+const double timeStep = collisionTime / 50;
+
+// A scene that uses every part of the state: three species with an explicit pair law and an
+// edited mixed pair, a static floor and a lid that moves and turns, fixed particles (one moving),
+// x and y periodic, tilted gravity, non-default run settings, and a block of mobile spheres
+// pressed 1% into each other with random velocities, so that springs build up at once.
+void richScene(SceneSimulation& s) {
+    s.setTimeStep(timeStep);
+    s.setDomain(Vec3(-4, -3.5, 0), Vec3(4, 3.5, 10));
+    s.setPeriodic(true, true, false);
+    s.setGravity(Vec3(0.05, -0.02, -1));
+    s.setSkin(0.07);
+    s.settings().progressInterval = 3.5;
+    s.settings().maxOverlapFraction = 0.3;
+    s.settings().maxInitialOverlapFraction = 0.04;
+    const auto unitMass = [](double restitution) { return LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5); };
+    const auto sand = s.addSpecies("sand", 6 / pi, unitMass(0.8).withFriction(0.4));
+    const auto glass = s.addSpecies("glass", 1.3 * 6 / pi, unitMass(0.9).withFriction(0.2));
+    const auto steel = s.addSpecies("steel", 2 * 6 / pi, unitMass(0.7).withFriction(0.3));
+    s.species().setPair(sand, steel, unitMass(0.6).withFriction(0.55));
+    s.species().pair<LinearSpringDashpot>(glass, steel).friction = 0.25;
+
+    const auto lidMotion = s.addMotion({Vec3(0, 0, -0.01), Vec3(0, 0, 0.2), Vec3(0.3, -0.1, 3.0)});
+    const auto conveyor = s.addMotion({Vec3(0.1, 0, 0), Vec3::Zero(), Vec3::Zero()});
+    // Neighbours 0.99 apart overlap by 1% of the radius, as do the block and the floor and lid.
+    const double spacing = 0.99, bottom = 0.495, top = bottom + 2 * spacing;
+    s.addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
+    s.addWall(-Vec3::UnitZ(), Vec3(0, 0, top + 0.495), glass, lidMotion);
+    for (int k = 0; k < 4; ++k)  // a row of fixed spheres along one side of the block
+        s.addFixedParticle(Vec3(-1 + spacing * (k - 1), 2 + spacing, bottom), 0.5, steel, k == 3 ? conveyor : -1);
+
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> speed(-0.2, 0.2);
+    const std::size_t species[] = {sand, glass, steel};
+    for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y)
+            for (int z = 0; z < 3; ++z) {
+                const Vec3 position(-1 + spacing * x, 2 - spacing * y, bottom + spacing * z);
+                const Vec3 velocity(speed(random), speed(random), speed(random));
+                s.addParticle(position, 0.5, species[(x + y + z) % 3], velocity, 10 * velocity);
+            }
+}
+
+// Runs the rich scene for `steps` steps with all files on, then draws from the generator as a
+// driver inserting particles would, so that its state is not the seed's.
+void runRichScene(SceneSimulation& s, const std::string& name, int steps) {
+    s.setup = richScene;
+    s.setName(name);
+    s.solveOrThrow({"--end-time", std::to_string(steps * timeStep), "--output-interval", std::to_string(20 * timeStep)});
+    std::uniform_real_distribution<double> unit;
+    for (int k = 0; k < 1001; ++k) unit(s.random());
+}
+
+std::vector<double> lawParameters(const ContactLaw& law) {
+    if (auto* l = std::get_if<LinearSpringDashpot>(&law))
+        return {l->normalStiffness, l->normalDamping, l->tangentialStiffness, l->tangentialDamping, l->friction};
+    const auto& h = std::get<HertzMindlin>(law);
+    return {h.effectiveYoungsModulus, h.effectiveShearModulus, h.restitution, h.friction, h.characteristicVelocity};
+}
+
+void expectSameLaw(const ContactLaw& a, const ContactLaw& b) {
+    EXPECT_EQ(a.index(), b.index());
+    EXPECT_TRUE(sameBits(lawParameters(a), lawParameters(b)));
+}
+
+// Every per-particle array, found through forEachArray so that a field added later is compared
+// without touching this test.
+void expectSameParticles(ParticleStore a, ParticleStore b) {
+    std::size_t arrayA = 0;
+    a.forEachArray([&](auto& arrayOfA) {
+        std::size_t arrayB = 0;
+        b.forEachArray([&](auto& arrayOfB) {
+            if constexpr (std::is_same_v<decltype(arrayOfA), decltype(arrayOfB)>) {
+                if (arrayA == arrayB) {
+                    EXPECT_TRUE(sameBits(arrayOfA, arrayOfB)) << "particle array " << arrayA;
+                }
+            }
+            ++arrayB;
+        });
+        ++arrayA;
+    });
+    EXPECT_EQ(a.size(), b.size());
+}
+
+void expectSameRandomGenerator(std::mt19937_64 a, std::mt19937_64 b) {
+    EXPECT_TRUE(a == b);
+    for (int k = 0; k < 1000; ++k) ASSERT_EQ(a(), b()) << "draw " << k;
+}
+
+void expectSameState(const SimulationState& a, const SimulationState& b) {
+    const RunSettings &x = a.settings, &y = b.settings;
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_TRUE(sameBits(std::vector<double>{x.timeStep, x.endTime, x.outputInterval, x.skin, x.progressInterval,
+                                             x.maxOverlapFraction, x.maxInitialOverlapFraction},
+                         std::vector<double>{y.timeStep, y.endTime, y.outputInterval, y.skin, y.progressInterval,
+                                             y.maxOverlapFraction, y.maxInitialOverlapFraction}));
+    EXPECT_EQ(std::vector<bool>({x.writeData, x.writeFstat, x.writeEne, x.writeVtu, x.writeRestart}),
+              std::vector<bool>({y.writeData, y.writeFstat, y.writeEne, y.writeVtu, y.writeRestart}));
+    EXPECT_TRUE(sameBits(a.time, b.time));
+    EXPECT_EQ(a.step, b.step);
+    EXPECT_TRUE(sameBits(a.gravity, b.gravity));
+    EXPECT_TRUE(sameBits(a.domain.lo, b.domain.lo));
+    EXPECT_TRUE(sameBits(a.domain.hi, b.domain.hi));
+    EXPECT_EQ(a.domain.periodic, b.domain.periodic);
+
+    ASSERT_EQ(a.species.size(), b.species.size());
+    for (std::size_t k = 0; k < a.species.size(); ++k) {
+        EXPECT_EQ(a.species[k].name, b.species[k].name);
+        EXPECT_TRUE(sameBits(a.species[k].density, b.species[k].density));
+        expectSameLaw(a.species[k].law, b.species[k].law);
+    }
+    ASSERT_EQ(a.species.explicitPairs().size(), b.species.explicitPairs().size());
+    for (auto p = a.species.explicitPairs().begin(), q = b.species.explicitPairs().begin();
+         p != a.species.explicitPairs().end(); ++p, ++q) {
+        EXPECT_EQ(p->first, q->first);
+        expectSameLaw(p->second, q->second);
+    }
+
+    ASSERT_EQ(a.motions.size(), b.motions.size());
+    for (std::size_t k = 0; k < a.motions.size(); ++k) {
+        EXPECT_TRUE(sameBits(a.motions[k].velocity, b.motions[k].velocity));
+        EXPECT_TRUE(sameBits(a.motions[k].angularVelocity, b.motions[k].angularVelocity));
+        EXPECT_TRUE(sameBits(a.motions[k].centre, b.motions[k].centre));
+    }
+    ASSERT_EQ(a.walls.size(), b.walls.size());
+    for (std::size_t k = 0; k < a.walls.size(); ++k) {
+        EXPECT_TRUE(sameBits(a.walls[k].normal, b.walls[k].normal));
+        EXPECT_TRUE(sameBits(a.walls[k].point, b.walls[k].point));
+        EXPECT_EQ(a.walls[k].species, b.walls[k].species);
+        EXPECT_EQ(a.walls[k].motion, b.walls[k].motion);
+    }
+    expectSameParticles(a.particles, b.particles);
+    EXPECT_EQ(a.nextId, b.nextId);
+
+    const PairList &l = a.pairList, &m = b.pairList;
+    EXPECT_TRUE(l.pairs == m.pairs);
+    EXPECT_TRUE(sameBits(l.history, m.history));
+    EXPECT_TRUE(l.wallPairs == m.wallPairs);
+    EXPECT_TRUE(sameBits(l.wallHistory, m.wallHistory));
+    EXPECT_TRUE(sameBits(l.referencePosition, m.referencePosition));
+    EXPECT_TRUE(sameBits(l.skin, m.skin));
+    EXPECT_EQ(l.valid, m.valid);
+    EXPECT_EQ(l.builds, m.builds);
+
+    expectSameRandomGenerator(a.random, b.random);
+    EXPECT_EQ(a.output.savedFrames, b.output.savedFrames);
+    EXPECT_EQ(a.output.dataBytes, b.output.dataBytes);
+    EXPECT_EQ(a.output.fstatBytes, b.output.fstatBytes);
+    EXPECT_EQ(a.output.eneBytes, b.output.eneBytes);
+    EXPECT_TRUE(sameBits(a.output.frameTimes, b.output.frameTimes));
+}
+
+std::size_t nonZeroSprings(const std::vector<ContactHistory>& history) {
+    std::size_t n = 0;
+    for (const ContactHistory& h : history) n += !h.spring.isZero(0);
+    return n;
+}
+
+TEST(RestartFile, RunStateReadsBackBitwise) {
+    SceneSimulation s;
+    runRichScene(s, "restartfile_state", 60);
+    const SimulationState& original = s.state();
+    // The test is only as good as the state is rich: make sure it is.
+    ASSERT_GT(nonZeroSprings(original.pairList.history), 10u);
+    ASSERT_GT(nonZeroSprings(original.pairList.wallHistory), 2u);
+    ASSERT_GT(original.output.savedFrames, 2u);
+    ASSERT_FALSE(original.output.frameTimes.empty());
+    ASSERT_EQ(original.species.explicitPairs().size(), 2u);
+
+    const std::string path = "restartfile_state_copy.restart";
+    writeRestartFile(path, original);
+    SimulationState restored;
+    readRestartFile(path, restored);
+    expectSameState(original, restored);
+}
+
+// Values that "%.17g" and strtod must carry exactly: thirds, tiny, huge, subnormal, negative zero.
+TEST(RestartFile, AwkwardNumbersReadBackBitwise) {
+    SimulationState state;
+    state.species.add("soft", 1.0 / 3.0, HertzMindlin::fromMaterial(1e7 / 3, 0.3, 0.9).withFriction(0.1 / 3));
+    state.species.add("hard", 1e300, HertzMindlin::fromMaterial(std::sqrt(2.0) * 1e11, 0.25, 0.5));
+    state.species.setPair(0, 1, HertzMindlin::fromMaterial(7e9, 0.2, 0.6));
+    state.time = std::nextafter(1.0, 2.0);
+    state.gravity = Vec3(-0.0, std::numeric_limits<double>::denorm_min(), -9.81);
+    state.domain.lo = Vec3(-1e-310, -std::numeric_limits<double>::max(), 0.1);
+    state.domain.hi = Vec3(1.0 / 3.0, std::numeric_limits<double>::max(), 0.7);
+    ParticleStore& p = state.particles;
+    p.position = {Vec3(0.1, 0.2, 0.3), Vec3(-0.0, 1e-300, 2.0 / 3.0)};
+    p.velocity = {Vec3(1e-17, -1e17, std::numeric_limits<double>::min()), Vec3::Zero()};
+    p.angularVelocity = p.force = p.torque = {Vec3(std::exp(1.0), -pi, 1e-5 / 7), Vec3(-0.0, 0.0, -0.0)};
+    p.radius = {0.1, std::nextafter(0.5, 0.0)};
+    p.mass = {1e-200, 4.0 / 3.0};
+    p.invMass = {1e200, 0.75};
+    p.invInertia = {0.0, 1.0 / 7.0};
+    p.species = {0, 1};
+    p.id = {0, 41};
+    p.fixed = {0, 1};
+    p.motion = {-1, -1};
+    state.nextId = 42;
+    state.pairList.pairs = {{0, 1}};
+    state.pairList.history = {ContactHistory{Vec3(1e-12 / 3, -0.0, 5e-324), -1e-300 / 3, Vec3(-0.0, 1e-310, 2.0 / 3), true}};
+    state.pairList.referencePosition = p.position;
+    state.pairList.skin = 0.01 / 3;
+    const std::string path = "restartfile_awkward.restart";
+    writeRestartFile(path, state);
+    SimulationState restored;
+    readRestartFile(path, restored);
+    expectSameState(state, restored);
+}
+
+// Reading replaces the whole state, leaving nothing of what was there before.
+TEST(RestartFile, ReadingReplacesThePreviousState) {
+    SimulationState empty;
+    empty.species.add("only", 1, LinearSpringDashpot{100, 1, 20, 1, 0.5});
+    const std::string path = "restartfile_replace_empty.restart";
+    writeRestartFile(path, empty);
+    SceneSimulation s;
+    runRichScene(s, "restartfile_replace", 5);
+    readRestartFile(path, s.state());
+    expectSameState(empty, s.state());
+}
+
+// DESIGN.md: a restart continues bitwise identically to an uninterrupted run.
+TEST(RestartFile, RestartedRunContinuesBitwise) {
+    SceneSimulation first;
+    runRichScene(first, "restartfile_continue", 40);
+
+    SceneSimulation restarted;
+    restarted.solveOrThrow({"--restart", "restartfile_continue.restart", "--end-time", std::to_string(80 * timeStep),
+                            "--files", "off"});
+    SceneSimulation uninterrupted;
+    uninterrupted.setup = richScene;
+    uninterrupted.solveOrThrow(test::stepsWithoutFiles(timeStep, 80));
+
+    ASSERT_EQ(restarted.step(), 80u);
+    EXPECT_TRUE(sameBits(restarted.time(), uninterrupted.time()));
+    expectSameParticles(restarted.particles(), uninterrupted.particles());
+    EXPECT_TRUE(restarted.pairList().pairs == uninterrupted.pairList().pairs);
+    EXPECT_TRUE(sameBits(restarted.pairList().history, uninterrupted.pairList().history));
+    EXPECT_TRUE(sameBits(restarted.pairList().wallHistory, uninterrupted.pairList().wallHistory));
+}
+
+}  // namespace

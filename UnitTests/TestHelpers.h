@@ -1,0 +1,95 @@
+// Helpers shared by the unit tests: a simulation whose scene is given in place, and checks of
+// talus::Error messages.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Error.h"
+#include "Simulation.h"
+
+namespace talus::test {
+
+// A driver whose setup and after-step hook are lambdas, so that each test states its scene
+// next to its checks instead of in a class of its own.
+class SceneSimulation : public Simulation {
+public:
+    std::function<void(SceneSimulation&)> setup;
+    std::function<void(SceneSimulation&)> afterStep;
+
+protected:
+    void setupInitialConditions() override {
+        if (setup) setup(*this);
+    }
+    void actionsAfterTimeStep() override {
+        if (afterStep) afterStep(*this);
+    }
+};
+
+// Flags that run exactly `steps` time steps of size dt from t = 0 without writing files.
+inline std::vector<std::string> stepsWithoutFiles(double dt, int steps) {
+    std::ostringstream endTime;
+    endTime.precision(17);
+    endTime << steps * dt;
+    return {"--end-time", endTime.str(), "--files", "off"};
+}
+
+// Runs action, which must throw talus::Error whose message contains every one of parts;
+// returns the message ("" when nothing was thrown) for further checks.
+template <class Action>
+std::string expectError(Action&& action, const std::vector<std::string>& parts) {
+    try {
+        action();
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        for (const std::string& part : parts)
+            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
+        return message;
+    }
+    ADD_FAILURE() << "no talus::Error thrown (expected a message containing '" << (parts.empty() ? "" : parts[0]) << "')";
+    return "";
+}
+
+inline std::string readWholeFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_TRUE(in) << "cannot read " << path;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+inline void writeWholeFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    ASSERT_TRUE(out) << "cannot write " << path;
+}
+
+// Bitwise equality: a restart must give back the very same doubles (also -0 and the last bit).
+inline bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+inline bool sameBits(const Vec3& a, const Vec3& b) {
+    return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()) && sameBits(a.z(), b.z());
+}
+template <class Integer>
+    requires std::is_integral_v<Integer>
+bool sameBits(Integer a, Integer b) {
+    return a == b;
+}
+inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
+    return sameBits(a.spring, b.spring) && sameBits(a.normalForce, b.normalForce) && sameBits(a.tangentialForce, b.tangentialForce) && a.touching == b.touching;
+}
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (!sameBits(a[k], b[k])) return false;
+    return true;
+}
+
+}  // namespace talus::test
