@@ -10,7 +10,7 @@
 #include "ContactTestScenes.h"
 
 using namespace talus;
-using namespace talus::testing;
+using namespace talus::test;
 
 namespace {
 

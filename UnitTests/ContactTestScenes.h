@@ -7,9 +7,9 @@
 #include <functional>
 #include <utility>
 
-#include "Simulation.h"
+#include "TestHelpers.h"
 
-namespace talus::testing {
+namespace talus::test {
 
 // Density that gives a sphere of diameter 1 unit mass (SPEC.md preamble: m = 1 for d = 1).
 inline constexpr double unitMassDensity = 6 / pi;
@@ -18,29 +18,7 @@ inline double sphereMass(double radius, double density = unitMassDensity) {
     return density * 4.0 / 3.0 * pi * radius * radius * radius;
 }
 
-// A Simulation whose scene and per-step observer are plain functions, so that each test states
-// only its physics. No files are written and no progress lines are printed.
-class Scene : public Simulation {
-public:
-    std::function<void(Scene&)> setup;
-    std::function<void(Scene&)> observe;  // after every time step
-
-    void run(double timeStep, double endTime) {
-        setTimeStep(timeStep);
-        setEndTime(endTime);
-        setFileOutput(false);
-        settings().progressInterval = 1e9;
-        solveOrThrow({});
-    }
-
-protected:
-    void setupInitialConditions() override {
-        if (setup) setup(*this);
-    }
-    void actionsAfterTimeStep() override {
-        if (observe) observe(*this);
-    }
-};
+using Scene = SceneSimulation;
 
 // What a head-on collision measured.
 struct HeadOnResult {
@@ -96,7 +74,7 @@ struct HeadOnCollision {
                 s.addParticle(Vec3(partnerX, 0, 0), partnerRadius, species, Vec3(-partnerSpeed, 0, 0));
         };
         double kineticBefore = 0;
-        scene.observe = [&](Scene& s) {
+        scene.afterStep = [&](Scene& s) {
             if (s.step() == 1) kineticBefore = kineticEnergy(s);  // still in free flight
         };
         scene.run(timeStep, entryTime + 1.5 * longestDuration + 5 * timeStep);
@@ -118,4 +96,4 @@ struct HeadOnCollision {
     }
 };
 
-}  // namespace talus::testing
+}  // namespace talus::test

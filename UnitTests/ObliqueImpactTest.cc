@@ -31,7 +31,7 @@
 #include "ContactTestScenes.h"
 
 using namespace talus;
-using namespace talus::testing;
+using namespace talus::test;
 
 namespace {
 
@@ -68,7 +68,7 @@ ObliqueResult impact(double tangentialToNormalRatio) {
     ObliqueResult result{};
     // With gt = 0 the tangential force is -kt xi; it sits at the Coulomb limit when
     // kt |xi| = mu kn dn (up to round-off), and below it while the contact sticks.
-    scene.observe = [&](Scene& s) {
+    scene.afterStep = [&](Scene& s) {
         const PairList& list = s.pairList();
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
             const double overlap = radius - s.walls()[list.wallPairs[k].wall].signedDistance(

@@ -15,7 +15,7 @@
 #include "ContactTestScenes.h"
 
 using namespace talus;
-using namespace talus::testing;
+using namespace talus::test;
 
 namespace {
 
@@ -40,7 +40,7 @@ double downslopeAcceleration(double angle, double friction) {
     };
     const double start = 1, end = 4;
     double startVelocity = NAN;
-    scene.observe = [&](Scene& s) {
+    scene.afterStep = [&](Scene& s) {
         if (std::abs(s.time() - start) < 0.5 * timeStep) startVelocity = s.particles().velocity[0].x();
     };
     scene.run(timeStep, end);

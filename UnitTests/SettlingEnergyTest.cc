@@ -11,7 +11,7 @@
 #include "ContactTestScenes.h"
 
 using namespace talus;
-using namespace talus::testing;
+using namespace talus::test;
 
 TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     const double collisionTime = 0.005, timeStep = collisionTime / 50, spacing = 1.2, side = 3 * spacing;
@@ -56,7 +56,7 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     // counts only if it exceeds this bound (measured increases: below 1e-7 of it).
     const double fluctuation = std::pow(pi * timeStep / collisionTime, 2);
     std::vector<double> totals, allowed;
-    scene.observe = [&](Scene& s) {
+    scene.afterStep = [&](Scene& s) {
         if (s.step() % checkEvery != 0) return;
         const Energies e = s.energies();
         totals.push_back(e.total());

@@ -24,6 +24,15 @@ public:
     std::function<void(SceneSimulation&)> setup;
     std::function<void(SceneSimulation&)> afterStep;
 
+    // Runs from t = 0 to endTime with steps dt, writing no files and printing no progress.
+    void run(double timeStep, double endTime) {
+        setTimeStep(timeStep);
+        setEndTime(endTime);
+        setFileOutput(false);
+        settings().progressInterval = 1e9;
+        solveOrThrow({});
+    }
+
 protected:
     void setupInitialConditions() override {
         if (setup) setup(*this);
