@@ -53,3 +53,33 @@ TEST(SpeciesTable, RejectsBadParametersByName) {
     table.add("b", 1, HertzMindlin::fromMaterial(1e6, 0.3, 0.9));
     EXPECT_THROW(table.validate(), Error);  // two kinds of law in one simulation
 }
+
+// SPEC.md 1 bidisperse rule on the seed Table 3.C.1 mixture (dL = 1, dS = 2^(-1/3), density 6/pi,
+// so mL = 1, mS = 1/2): every pair type rebounds with the same e, and tc/sqrt(d) is the same for
+// LL, SS and LS (d = (dL + dS)/2), each with its own reduced mass.
+#include "Species/BidisperseRule.h"
+
+TEST(BidisperseRule, SameRestitutionAndScaledCollisionTimes) {
+    SpeciesTable table;
+    const auto large = table.add("large", 6 / pi, LinearSpringDashpot{1, 0, 0, 0, 0.5});
+    const auto small = table.add("small", 6 / pi, LinearSpringDashpot{1, 0, 0, 0, 0.25});
+    const double dL = 1, dS = std::cbrt(0.5), tc = 4.97e-3, e = 0.883;
+    applyBidisperseRule(table, {large, small, dL, dS, tc, e, 0.375});
+    const double mL = 1, mS = 0.5;
+    struct Pair {
+        std::size_t a, b;
+        double diameter, reducedMass, friction;
+    };
+    for (const Pair& p : {Pair{large, large, dL, mL / 2, 0.5}, Pair{small, small, dS, mS / 2, 0.25},
+                          Pair{large, small, 0.5 * (dL + dS), mL * mS / (mL + mS), 0.375}}) {
+        const auto law = std::get<LinearSpringDashpot>(table.pairLaw(p.a, p.b));
+        EXPECT_NEAR(law.restitution(p.reducedMass), e, 1e-12);
+        EXPECT_NEAR(law.collisionTime(p.reducedMass) / std::sqrt(p.diameter), tc / std::sqrt(dL), 1e-15);
+        EXPECT_DOUBLE_EQ(law.friction, p.friction);
+        EXPECT_DOUBLE_EQ(law.tangentialStiffness, 2.0 / 7.0 * law.normalStiffness);
+    }
+    // And the LL pair is the seed's kn = 2e5, gn = 25 (to the 3 digits of tc and e given there).
+    const auto ll = std::get<LinearSpringDashpot>(table.pairLaw(large, large));
+    EXPECT_NEAR(ll.normalStiffness / 2e5, 1, 2e-3);
+    EXPECT_NEAR(ll.normalDamping / 25, 1, 2e-3);
+}
