@@ -354,7 +354,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
         p.torque[i].setZero();
     }
-    if (state_.pairList.needsRebuild(p, state_.domain, state_.time))
+    if (state_.pairList.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep))
         state_.pairList.rebuild(p, state_.domain, state_.walls, grid_);
     summary_ = ContactSummary{};
     if (records) records->clear();

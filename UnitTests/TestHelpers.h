@@ -91,7 +91,9 @@ bool sameBits(Integer a, Integer b) {
     return a == b;
 }
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
-    return sameBits(a.spring, b.spring) && sameBits(a.normalForce, b.normalForce) && sameBits(a.tangentialForce, b.tangentialForce) && a.touching == b.touching;
+    return sameBits(a.spring, b.spring) && sameBits(a.tangentialForce, b.tangentialForce) &&
+           sameBits(a.normalForce, b.normalForce) && sameBits(a.normalSpeed, b.normalSpeed) &&
+           sameBits(a.overlap, b.overlap) && a.touching == b.touching && a.approaching == b.approaching;
 }
 template <class T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {

@@ -88,10 +88,22 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
             records->push_back({i, j, p.position[i] + bij, c.overlap, history.spring.norm(), f.normalForce, c.normal,
                                 f.tangentialForce, law.elasticEnergy(c, history.spring)});
     };
-    auto separate = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij,
-                        const Vec3& bji, ContactHistory& history, const Law& law) {
-        apply(i, j, law.separationForce(c, history, dt), c.normal, bij, bji);
-        history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
+    // Apart now: a pair that stopped touching during the last step gets its separation impulse,
+    // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
+    auto apart = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij,
+                     const Vec3& bji, ContactHistory& history, const Law& law) {
+        if (history.touching) {
+            apply(i, j, law.separationForce(c, history, dt), c.normal, bij, bji);
+            history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
+        }
+        const double push = law.approachForce(c, history, dt);
+        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, bij, bji);
+    };
+    // A pair apart by more than reach + (closing speed) dt, with nothing pending, needs no work.
+    auto farApart = [dt](const ContactHistory& history, double distanceSquared, double reach, double closingSpeed) {
+        if (history.touching || history.approaching) return false;
+        const double limit = reach + closingSpeed * dt;
+        return distanceSquared >= limit * limit;
     };
 
     for (std::size_t k = 0; k < list.pairs.size(); ++k) {
@@ -101,7 +113,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const double r2 = d.squaredNorm();
         ContactHistory& history = list.history[k];
         const bool touching = r2 < sumR * sumR;
-        if (!touching && !history.touching) continue;
+        if (!touching && farApart(history, r2, sumR, (p.velocity[i] - p.velocity[j]).norm())) continue;
         const double distance = std::sqrt(r2);
         Vec3 bij, bji;
         ContactKinematics c = contactKinematics(d / distance, sumR - distance, p.radius[i], p.radius[j],
@@ -114,7 +126,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         if (touching)
             touch(i, j, c, bij, bji, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
         else
-            separate(i, j, c, bij, bji, history, law);
+            apart(i, j, c, bij, bji, history, law);
     }
 
     for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
@@ -123,7 +135,10 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const double distance = wall.signedDistance(p.position[i]);
         ContactHistory& history = list.wallHistory[k];
         const bool touching = distance < p.radius[i];
-        if (!touching && !history.touching) continue;
+        if (!touching && !history.touching && !history.approaching) {
+            const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(p.position[i]) : Vec3::Zero();
+            if (distance - p.radius[i] >= (wallVelocity - p.velocity[i]).dot(wall.normal) * dt) continue;
+        }
         const double overlap = p.radius[i] - distance;
         const Vec3 contactPoint = p.position[i] - (p.radius[i] - 0.5 * overlap) * wall.normal;
         const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
@@ -138,7 +153,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         if (touching)
             touch(i, wallIndex, c, bij, bji, history, law, p.radius[i], list.wallPairs[k].wall);
         else
-            separate(i, wallIndex, c, bij, bji, history, law);
+            apart(i, wallIndex, c, bij, bji, history, law);
     }
 }
 

@@ -7,9 +7,9 @@
 
 namespace talus {
 
-bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time) const {
+bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) const {
     bool moved = !valid || referencePosition.size() != particles.size();
-    const double limit2 = 0.25 * skin * skin;
+    const double limit = 0.5 * skin;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& x = particles.position[i];
         if (!isFinite(x) || !isFinite(particles.velocity[i])) {
@@ -20,7 +20,10 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
                     << "); the time step may be too large for the stiffest contact";
             throw Error(message.str());
         }
-        if (!moved && domain.nearestImage(x - referencePosition[i]).squaredNorm() >= limit2) moved = true;
+        if (!moved) {
+            const double reach = limit - particles.velocity[i].norm() * dt;
+            moved = reach <= 0 || domain.nearestImage(x - referencePosition[i]).squaredNorm() >= reach * reach;
+        }
     }
     return moved;
 }
@@ -40,7 +43,7 @@ ContactHistory reversed(ContactHistory h) {
     return h;
 }
 
-bool worthCarrying(const ContactHistory& h) { return h.touching || !h.spring.isZero(0); }
+bool worthCarrying(const ContactHistory& h) { return h.touching || h.approaching || !h.spring.isZero(0); }
 
 }  // namespace
 

@@ -35,10 +35,12 @@ public:
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
     std::uint64_t builds = 0;
 
-    // True when some particle has moved more than skin/2 since the last build (nearest-image
-    // displacement, so wrapping through a periodic face is not a move). Throws talus::Error
-    // naming the particle if a position is not finite.
-    bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time) const;
+    // True when some particle will have moved more than skin/2 since the last build by the end of
+    // the next step (nearest-image displacement, so wrapping through a periodic face is not a
+    // move, plus |v| dt). Looking one step ahead keeps every pair that can touch within the next
+    // step listed, which the push ahead of a touch needs (LinearSpringDashpot::approachForce).
+    // Throws talus::Error naming the particle if a position is not finite.
+    bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) const;
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.

@@ -155,16 +155,20 @@ ContactLaw readLaw(Reader& r) {
 }
 
 void writeHistory(Writer& w, const ContactHistory& h) {
-    w << h.spring << h.normalForce << h.tangentialForce << std::uint64_t(h.touching);
+    w << h.spring << h.tangentialForce << h.normalForce << h.normalSpeed << h.overlap << std::uint64_t(h.touching)
+      << std::uint64_t(h.approaching);
     w.end();
 }
 
 ContactHistory readHistory(Reader& r) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
-    h.normalForce = r.real("normal force");
     h.tangentialForce = r.vec("tangential force");
+    h.normalForce = r.real("normal force");
+    h.normalSpeed = r.real("normal speed");
+    h.overlap = r.real("overlap");
     h.touching = r.flag("touching flag");
+    h.approaching = r.flag("approaching flag");
     return h;
 }
 

@@ -80,6 +80,7 @@ struct HertzMindlin {
     ContactForce separationForce(const ContactKinematics&, const ContactHistory&, double) const {
         return {0, Vec3::Zero()};
     }
+    double approachForce(const ContactKinematics&, ContactHistory&, double) const { return 0; }
 
     ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
         const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);  // sqrt(R* dn)
@@ -98,8 +99,6 @@ struct HertzMindlin {
         f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
         applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
                           tangentialDamping, k.tangentialVelocity);
-        history.normalForce = f.normalForce;
-        history.tangentialForce = f.tangentialForce;
         return f;
     }
 

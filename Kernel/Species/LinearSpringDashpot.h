@@ -3,6 +3,7 @@
 // The damping coefficient gn is absolute (force per velocity, Luding's convention).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -64,73 +65,140 @@ struct LinearSpringDashpot {
         require(friction >= 0, what + ": friction coefficient must not be negative");
     }
 
-    // Velocity Verlet applies the force of step n as the impulse dt f(n) over the window
-    // [t - dt/2, t + dt/2]: the midpoint rule, second order only where f is smooth. At the instants
-    // of first touch and of separation the dashpot force jumps and the spring force has a kink,
-    // and the midpoint rule misplaces them by up to dt/2: an O(dt/tc) error in the restitution
-    // (4% for e = 0.1 at dt = tc/50) and an O((dt/tc)^2) one in the energy of elastic contacts.
-    // So the impulse from the touch to the first contact step, and from the last contact step to
-    // the separation, is integrated by the trapezoidal rule with the force at the touch or
-    // separation instant (spring 0, dashpot of the speed then), whose time follows from the
-    // overlap and the normal speed (Documentation/Validation/Restitution.md).
-    //
-    // The normal dashpot also acts on the relative velocity at the end of the step, u(n+1), found
-    // implicitly for the pair alone from u(n+1) = u + dt/(2m*) f, u the half-step velocity:
-    // plain velocity Verlet uses u itself, which lags the damping by dt/2 (another O(dt/tc) error).
-    ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
-        // On the first step the contact began tau = dn/|u| ago (u is still the approach speed):
-        // the impulse is tau (f(touch) + f)/2 + dt/2 f = dt (c f + extra f(touch)). Coulomb's
-        // limit holds for f and f(touch) each, and so for their combination.
-        double c = 1, extra = 0, springStep = dt;
-        if (!history.touching) {
-            const double speed = std::abs(k.normalVelocity);
-            const double tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
-            c = 0.5 + 0.5 * tau / dt;
-            extra = 0.5 * tau / dt;
-            springStep = tau;
+    // The ends of a contact. In leapfrog form, velocity Verlet moves a pair over each step with the
+    // velocity it gave it for that step, which is right if the impulse P(t) applied since the touch
+    // has been, after each step's force, its mean over the next step: the force of step n must be
+    // (mean P over [n, n+1] - mean P over [n-1, n]) / dt. Inside a contact that is the force at
+    // step n, to second order. At its ends it is not, since the dashpot force jumps at the touch
+    // and at the separation and the spring force has a kink there; plain velocity Verlet then
+    // errs by O(dt/tc) in the restitution (4% for e = 0.1 at dt = tc/50). So:
+    //  - approachForce: a pair that will touch at tau before the next step pushes already with
+    //    the mean of P over that step, (f0 tau^2/2 + f0' tau^3/6)/dt, where f0 = -gn u and
+    //    f0' = -kn u - gn f0/m* are the force and its rate at the touch;
+    //  - force, first contact step: the mean of P over the next step, P(now) + f dt/2 + f' dt^2/6,
+    //    minus what went ahead; P(now) is the quadratic (Hermite) rule from the touch,
+    //    tau (f0 + f)/2 + tau^2 (f0' - f')/12, and the dashpot acts on the speed now,
+    //    u0 + tau (f0 + f)/(2 m*), solved implicitly;
+    //  - force, inside the contact: the force now, with the dashpot on the end-of-step speed
+    //    u(n+1) = u + dt/(2m*) f (implicit; plain velocity Verlet's half-step speed lags by dt/2);
+    //  - separationForce, first step apart: the impulse from the last contact step to the
+    //    separation (found from the overlap, speed and force then), by the same Hermite rule,
+    //    minus the f dt/2 + f' dt^2/6 that step counted on.
+    // The tangential force uses the trapezoidal rule at both ends and no push ahead, except that a
+    // sliding contact's tangential impulse is mu times the normal one, push ahead included.
+    // Documentation/Validation/Restitution.md has the measured errors.
+
+    // Whether the contact slid at the last step: its tangential force sat at the Coulomb limit.
+    bool sliding(const ContactHistory& h) const {
+        const double limit = friction * std::abs(h.normalForce);
+        return limit > 0 && h.tangentialForce.squaredNorm() >= limit * limit * (1 - 1e-12);
+    }
+
+    // The force rate df/dt = -kn u - gn f/m* in a contact (d(dn)/dt = -u, du/dt = f/m*).
+    double forceRate(double force, double speed, double reducedMass) const {
+        return -normalStiffness * speed - normalDamping * force / reducedMass;
+    }
+
+    // Normal force on a pair apart (c.overlap = -gap < 0): the push ahead of a touch within the
+    // next step, less the push of the last step, which is taken back.
+    double approachForce(const ContactKinematics& c, ContactHistory& history, double dt) const {
+        const double previous = history.approaching ? history.normalForce : 0;
+        history.approaching = false;
+        history.normalForce = 0;
+        const double u = c.normalVelocity, gap = -c.overlap;
+        if (u < 0 && gap < -u * dt) {
+            const double tau = dt - gap / -u;  // from the touch to the next step
+            const double touchForce = -normalDamping * u;
+            const double touchRate = forceRate(touchForce, u, c.reducedMass);
+            history.approaching = true;
+            history.normalForce = (touchForce * tau * tau / 2 + touchRate * tau * tau * tau / 6) / (dt * dt);
+            history.normalSpeed = u;
+            history.overlap = c.overlap;
         }
-        const double halfStepOverMass = 0.5 * dt / k.reducedMass;
-        const double touchNormalForce = -normalDamping * k.normalVelocity;
-        const double endVelocity =
-            (k.normalVelocity + halfStepOverMass * (c * normalStiffness * k.overlap + extra * touchNormalForce)) /
-            (1 + halfStepOverMass * c * normalDamping);
+        return history.normalForce - previous;
+    }
+
+    ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        const double elastic = normalStiffness * k.overlap;
+        const bool firstStep = !history.touching;
+        double tau = dt, touchSpeed = k.normalVelocity, pushedAhead = 0, speedNow;
+        if (firstStep) {
+            if (history.approaching) {  // foreseen on the last step
+                touchSpeed = history.normalSpeed;
+                tau = dt + history.overlap / -touchSpeed;
+                pushedAhead = history.normalForce * dt;
+            } else {  // not foreseen: the touch was dn/|u| ago
+                const double speed = std::abs(k.normalVelocity);
+                tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
+            }
+            const double sinceTouchOverMass = 0.5 * tau / k.reducedMass;
+            speedNow = (touchSpeed + sinceTouchOverMass * (-normalDamping * touchSpeed + elastic)) /
+                       (1 + sinceTouchOverMass * normalDamping);
+        } else {
+            const double halfStepOverMass = 0.5 * dt / k.reducedMass;
+            speedNow = (k.normalVelocity + halfStepOverMass * elastic) / (1 + halfStepOverMass * normalDamping);
+        }
         ContactForce f;
-        f.normalForce = normalStiffness * k.overlap - normalDamping * endVelocity;
-        advanceTangentialSpring(history.spring, k, springStep);
+        f.normalForce = elastic - normalDamping * speedNow;
+        advanceTangentialSpring(history.spring, k, firstStep ? tau : dt);
         f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
         applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
                           tangentialDamping, k.tangentialVelocity);
-        if (c < 1) {
+        history.normalForce = f.normalForce;  // the values now, for separationForce
+        history.normalSpeed = speedNow;
+        history.overlap = k.overlap;
+        history.tangentialForce = f.tangentialForce;
+        history.approaching = false;
+        if (firstStep) {
+            const double touchForce = -normalDamping * touchSpeed;
+            const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass);
+            const double rate = forceRate(f.normalForce, speedNow, k.reducedMass);
+            const double sinceTouch = 0.5 * tau * (touchForce + f.normalForce) + tau * tau * (touchRate - rate) / 12;
+            const double meanOverNextStep = sinceTouch + f.normalForce * dt / 2 + rate * dt * dt / 6;
             Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
             Vec3 noSpring = Vec3::Zero();
-            applyCoulombLimit(touchTangentialForce, noSpring, touchNormalForce, friction, 0, 0, k.tangentialVelocity);
-            f.normalForce = c * f.normalForce + extra * touchNormalForce;
-            f.tangentialForce = c * f.tangentialForce + extra * touchTangentialForce;
+            applyCoulombLimit(touchTangentialForce, noSpring, touchForce, friction, 0, 0, k.tangentialVelocity);
+            if (sliding(history)) {  // |ft| = mu fn: the tangential impulse follows the normal one
+                f.tangentialForce *= friction * meanOverNextStep / (dt * f.tangentialForce.norm());
+            } else {
+                f.tangentialForce =
+                    0.5 * tau / dt * (touchTangentialForce + f.tangentialForce) + 0.5 * f.tangentialForce;
+            }
+            f.normalForce = (meanOverNextStep - pushedAhead) / dt;
         }
-        history.normalForce = f.normalForce;  // for separationForce
-        history.tangentialForce = f.tangentialForce;
         return f;
     }
 
-    // Force on the first step after the pair separated (c.overlap = -gap < 0, opening at normal
-    // speed u > 0): in the trajectory of the last step the contact ended tau' = dt - gap/u after
-    // the last contact step, whose half window after it applied dt/2 f(last); the trapezoid gives
-    // tau' (f(last) + f(separation))/2. The force now is the difference. The separation speed is
-    // the one after this correction, u + dt f/m*, so the normal dashpot force at separation,
-    // -gn (u + dt f/m*), is again solved implicitly; the tangential one uses the present vt.
+    // Force on the first step after the pair separated (c.overlap = -gap < 0).
     ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
-        ContactForce f{0, Vec3::Zero()};
-        if (c.normalVelocity <= 0) return f;
-        const double contactAfterLastStep = dt - std::min(dt, -c.overlap / c.normalVelocity);
-        const double atSeparation = 0.5 * contactAfterLastStep / dt, atLast = atSeparation - 0.5;
-        const double separationNormalForce = -normalDamping * c.normalVelocity;
+        const double lastOverlap = history.overlap, lastSpeed = history.normalSpeed, lastForce = history.normalForce;
+        const double m = c.reducedMass;
+        // Time s from the last contact step to the separation: dn - u s - f s^2/(2m*) = 0.
+        double s = dt;
+        const double discriminant = lastSpeed * lastSpeed + 2 * lastForce * lastOverlap / m;
+        if (discriminant >= 0 && lastSpeed + std::sqrt(discriminant) > 0)
+            s = std::clamp(2 * lastOverlap / (lastSpeed + std::sqrt(discriminant)), 0.0, dt);
+        // The speed at separation, us = u + s (f + fs)/(2m*), with fs = -gn us.
+        const double untilSeparationOverMass = 0.5 * s / m;
+        const double separationSpeed = (lastSpeed + untilSeparationOverMass * lastForce) /
+                                       (1 + untilSeparationOverMass * normalDamping);
+        const double separationForce = -normalDamping * separationSpeed;
+        const double lastRate = forceRate(lastForce, lastSpeed, m);
+        const double separationRate = forceRate(separationForce, separationSpeed, m);
+        const double afterLastStep = 0.5 * s * (lastForce + separationForce) + s * s * (lastRate - separationRate) / 12;
+        const double countedOn = lastForce * dt / 2 + lastRate * dt * dt / 6;
+        ContactForce f;
+        f.normalForce = (afterLastStep - countedOn) / dt;
+        // Tangential: trapezoid from the last step to the separation, with the dashpot force of
+        // the present tangential velocity at the separation.
         Vec3 separationTangentialForce = -tangentialDamping * c.tangentialVelocity;
         Vec3 noSpring = Vec3::Zero();
-        applyCoulombLimit(separationTangentialForce, noSpring, separationNormalForce, friction, 0, 0,
-                          c.tangentialVelocity);
-        f.normalForce = (atLast * history.normalForce + atSeparation * separationNormalForce) /
-                        (1 + atSeparation * normalDamping * dt / c.reducedMass);
-        f.tangentialForce = atLast * history.tangentialForce + atSeparation * separationTangentialForce;
+        applyCoulombLimit(separationTangentialForce, noSpring, separationForce, friction, 0, 0, c.tangentialVelocity);
+        const double atSeparation = 0.5 * s / dt;
+        if (sliding(history))
+            f.tangentialForce = history.tangentialForce * (friction * f.normalForce / history.tangentialForce.norm());
+        else
+            f.tangentialForce = (atSeparation - 0.5) * history.tangentialForce + atSeparation * separationTangentialForce;
         return f;
     }
 
