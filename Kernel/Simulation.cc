@@ -96,6 +96,10 @@ void Simulation::addFlag(const std::string& name, const std::string& help, int& 
                       [&value, name](const std::string& v) { value = CommandLine::toInt(name, v); });
 }
 
+void Simulation::addTextFlag(const std::string& name, const std::string& help, std::string& value) {
+    commandLine_->add(name, "TEXT", help + " (default " + value + ")", [&value](const std::string& v) { value = v; });
+}
+
 // --- scene ---
 
 void Simulation::setDomain(const Vec3& lo, const Vec3& hi) {
@@ -235,6 +239,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         progress.update(state_.time, k, mobile);
     }
     progress.finish(state_.time, steps);
+    lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
 }
 
@@ -361,7 +366,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
-                             state_.settings.timeStep, summary_, records);
+                             state_.settings.timeStep, state_.pairList.maxSpeed, summary_, records);
         },
         laws_);
     if (records) {

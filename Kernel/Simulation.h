@@ -48,6 +48,7 @@ public:
     // A driver's own flag --name VALUE, listed by --help, parsed before setupInitialConditions.
     void addFlag(const std::string& name, const std::string& help, double& value);
     void addFlag(const std::string& name, const std::string& help, int& value);
+    void addTextFlag(const std::string& name, const std::string& help, std::string& value);
 
     // --- the scene ---
     void setGravity(const Vec3& g) { state_.gravity = g; }
@@ -80,6 +81,15 @@ public:
     double timeStep() const { return state_.settings.timeStep; }
     double endTime() const { return state_.settings.endTime; }
     const std::string& name() const { return state_.settings.name; }
+
+    // What the last solve's time loop did: steps, mobile particles, wall seconds (the loop only).
+    struct RunStatistics {
+        std::uint64_t steps = 0;
+        std::size_t mobileParticles = 0;
+        double wallSeconds = 0;
+        double particleStepsPerSecond() const { return wallSeconds > 0 ? steps * double(mobileParticles) / wallSeconds : 0; }
+    };
+    const RunStatistics& lastRun() const { return lastRun_; }
 
     // Energies of the mobile particles; elastic energy of the last force evaluation.
     Energies energies() const;
@@ -120,6 +130,7 @@ private:
     std::unique_ptr<CommandLine> commandLine_;
     std::unique_ptr<OutputFiles> files_;
     bool initialised_ = false;
+    RunStatistics lastRun_;
     std::string restartFile_;
 };
 

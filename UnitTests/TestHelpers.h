@@ -91,9 +91,7 @@ bool sameBits(Integer a, Integer b) {
     return a == b;
 }
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
-    return sameBits(a.spring, b.spring) && sameBits(a.tangentialForce, b.tangentialForce) &&
-           sameBits(a.normalForce, b.normalForce) && sameBits(a.normalSpeed, b.normalSpeed) &&
-           sameBits(a.overlap, b.overlap) && a.touching == b.touching && a.approaching == b.approaching;
+    return sameBits(a.spring, b.spring) && a.state == b.state;
 }
 template <class T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {

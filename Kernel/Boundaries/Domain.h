@@ -45,4 +45,26 @@ struct Domain {
     }
 };
 
+// The nearest image of separations along the periodic axes of a domain, with the box lengths
+// read once (for the force loop, where Domain::nearestImage would reload them for every pair).
+class PeriodicImage {
+public:
+    explicit PeriodicImage(const Domain& domain) {
+        for (int a = 0; a < 3; ++a) {
+            length_[a] = domain.periodic[a] ? domain.length(a) : INFINITY;
+            half_[a] = 0.5 * length_[a];
+        }
+    }
+    Vec3 nearest(Vec3 d) const {
+        for (int a = 0; a < 3; ++a) {
+            if (d[a] > half_[a]) d[a] -= length_[a];
+            else if (d[a] < -half_[a]) d[a] += length_[a];
+        }
+        return d;
+    }
+
+private:
+    double length_[3], half_[3];
+};
+
 }  // namespace talus

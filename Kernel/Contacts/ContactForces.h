@@ -38,95 +38,100 @@ struct ContactSummary {
     bool worstIsWall = false;
 };
 
-// Kinematics of particle i against a partner touching at distance `distance` along the unit
-// normal n (SPEC.md 1); overlap = radiusSum - distance may be negative for a pair that just
-// separated. Branch vectors bij = -(ri - dn/2) n and bji = (rj - dn/2) n (rj = 0 for walls).
+// Kinematics of particle i against a partner at distance rij along the unit normal n (SPEC.md 1);
+// overlap = ri + rj - rij may be negative for a pair that just separated. The branch vectors are
+// bij = -armI n and bji = armJ n with arms ri - dn/2 and rj - dn/2 (rj = 0 for walls), so the
+// spin part of the tangential velocity, wi x bij - wj x bji, is -(armI wi + armJ wj) x n.
+struct Arms {
+    double i, j;
+};
 inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double radiusI, double radiusJ,
                                            const Vec3& relativeVelocity, const Vec3& spinI, const Vec3& spinJ,
-                                           Vec3& bij, Vec3& bji) {
+                                           Arms& arms) {
+    arms = {radiusI - 0.5 * overlap, radiusJ - 0.5 * overlap};
     ContactKinematics c;
     c.normal = n;
     c.overlap = overlap;
-    bij = -(radiusI - 0.5 * overlap) * n;
-    bji = (radiusJ - 0.5 * overlap) * n;
     c.relativeVelocity = relativeVelocity;
     c.normalVelocity = relativeVelocity.dot(n);
-    c.tangentialVelocity = relativeVelocity - c.normalVelocity * n + spinI.cross(bij) - spinJ.cross(bji);
+    c.tangentialVelocity = relativeVelocity - c.normalVelocity * n - (arms.i * spinI + arms.j * spinJ).cross(n);
     return c;
 }
 
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
-                      double dt, ContactSummary& summary, std::vector<ContactRecord>* records) {
+                      double dt, double maxSpeed, ContactSummary& summary, std::vector<ContactRecord>* records) {
     // Force and torque on i (and j, unless it is a wall) of one contact, or of the separation
-    // impulse of a pair that stopped touching during the last step.
-    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n, const Vec3& bij,
-                      const Vec3& bji) {
+    // impulse of a pair that stopped touching during the last step. The torques are
+    // bij x f = -armI n x f and -bji x f = -armJ n x f.
+    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n, const Arms& arms) {
         const Vec3 force = f.normalForce * n + f.tangentialForce;
+        const Vec3 turn = n.cross(f.tangentialForce);  // n x force
         p.force[i] += force;
-        p.torque[i] += bij.cross(force);
+        p.torque[i] -= arms.i * turn;
         if (j >= 0) {
             p.force[j] -= force;
-            p.torque[j] -= bji.cross(force);
+            p.torque[j] -= arms.j * turn;
         }
     };
-    auto touch = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij, const Vec3& bji,
+    auto touch = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
                      ContactHistory& history, const Law& law, double smallerRadius, std::uint64_t idB) {
-        const ContactForce f = law.force(c, history, dt);  // also records what separationForce needs
-        history.touching = true;
-        apply(i, j, f, c.normal, bij, bji);
+        const ContactForce f = law.force(c, history, dt);
+        history.state = ContactHistory::touching;
+        apply(i, j, f, c.normal, arms);
         ++summary.contacts;
-        const double fraction = c.overlap / smallerRadius;
-        if (fraction > summary.maxOverlapFraction) {
-            summary.maxOverlapFraction = fraction;
+        if (c.overlap > summary.maxOverlapFraction * smallerRadius) {
+            summary.maxOverlapFraction = c.overlap / smallerRadius;
             summary.worstA = p.id[i];
             summary.worstB = idB;
             summary.worstIsWall = j < 0;
         }
         if (records)
-            records->push_back({i, j, p.position[i] + bij, c.overlap, history.spring.norm(), f.normalForce, c.normal,
-                                f.tangentialForce, law.elasticEnergy(c, history.spring)});
+            records->push_back({i, j, p.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(), f.normalForce,
+                                c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
     };
     // Apart now: a pair that stopped touching during the last step gets its separation impulse,
     // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
-    auto apart = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Vec3& bij,
-                     const Vec3& bji, ContactHistory& history, const Law& law) {
-        if (history.touching) {
-            apply(i, j, law.separationForce(c, history, dt), c.normal, bij, bji);
+    auto apart = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
+                     ContactHistory& history, const Law& law) {
+        if (history.isTouching()) {
+            apply(i, j, law.separationForce(c, history, dt), c.normal, arms);
             history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
         }
         const double push = law.approachForce(c, history, dt);
-        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, bij, bji);
+        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
     };
-    // A pair apart by more than reach + (closing speed) dt, with nothing pending, needs no work.
-    auto farApart = [dt](const ContactHistory& history, double distanceSquared, double reach, double closingSpeed) {
-        if (history.touching || history.approaching) return false;
-        const double limit = reach + closingSpeed * dt;
-        return distanceSquared >= limit * limit;
+    // A pair apart by more than reach + (largest closing speed) dt, with nothing pending, needs
+    // no work this step.
+    const double closing = 2 * maxSpeed * dt;
+    auto farApart = [closing](const ContactHistory& history, double distanceSquared, double reach) {
+        const double limit = reach + closing;
+        return history.state == ContactHistory::apart && distanceSquared >= limit * limit;
     };
 
+    const PeriodicImage image(domain);
     for (std::size_t k = 0; k < list.pairs.size(); ++k) {
         const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
-        const Vec3 d = domain.nearestImage(p.position[i] - p.position[j]);
+        const Vec3 d = image.nearest(p.position[i] - p.position[j]);
         const double sumR = p.radius[i] + p.radius[j];
         const double r2 = d.squaredNorm();
         ContactHistory& history = list.history[k];
         const bool touching = r2 < sumR * sumR;
-        if (!touching && farApart(history, r2, sumR, (p.velocity[i] - p.velocity[j]).norm())) continue;
+        if (!touching && farApart(history, r2, sumR)) continue;
         const double distance = std::sqrt(r2);
-        Vec3 bij, bji;
+        Arms arms;
         ContactKinematics c = contactKinematics(d / distance, sumR - distance, p.radius[i], p.radius[j],
                                                 p.velocity[i] - p.velocity[j], p.angularVelocity[i],
-                                                p.angularVelocity[j], bij, bji);
+                                                p.angularVelocity[j], arms);
         c.distance = distance;
         c.reducedMass = 1.0 / (p.invMass[i] + p.invMass[j]);
-        c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
+        if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
         const Law& law = laws(p.species[i], p.species[j]);
         if (touching)
-            touch(i, j, c, bij, bji, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
+            touch(i, j, c, arms, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
         else
-            apart(i, j, c, bij, bji, history, law);
+            apart(i, j, c, arms, history, law);
     }
 
     for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
@@ -135,25 +140,24 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const double distance = wall.signedDistance(p.position[i]);
         ContactHistory& history = list.wallHistory[k];
         const bool touching = distance < p.radius[i];
-        if (!touching && !history.touching && !history.approaching) {
-            const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(p.position[i]) : Vec3::Zero();
-            if (distance - p.radius[i] >= (wallVelocity - p.velocity[i]).dot(wall.normal) * dt) continue;
-        }
+        // (A moving wall may close in faster than the particles: no shortcut for it.)
+        if (!touching && history.state == ContactHistory::apart && wall.motion < 0 && distance - p.radius[i] >= closing)
+            continue;
         const double overlap = p.radius[i] - distance;
         const Vec3 contactPoint = p.position[i] - (p.radius[i] - 0.5 * overlap) * wall.normal;
         const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
-        Vec3 bij, bji;
+        Arms arms;
         ContactKinematics c = contactKinematics(wall.normal, overlap, p.radius[i], 0, p.velocity[i] - wallVelocity,
-                                                p.angularVelocity[i], Vec3::Zero(), bij, bji);
+                                                p.angularVelocity[i], Vec3::Zero(), arms);
         c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
         c.reducedMass = p.mass[i];
         c.effectiveRadius = p.radius[i];
         const Law& law = laws(p.species[i], wall.species);
         const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
         if (touching)
-            touch(i, wallIndex, c, bij, bji, history, law, p.radius[i], list.wallPairs[k].wall);
+            touch(i, wallIndex, c, arms, history, law, p.radius[i], list.wallPairs[k].wall);
         else
-            apart(i, wallIndex, c, bij, bji, history, law);
+            apart(i, wallIndex, c, arms, history, law);
     }
 }
 

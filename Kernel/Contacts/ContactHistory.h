@@ -1,24 +1,27 @@
-// Per-contact memory, stored with the pair list (Contacts/PairList.h).
+// Per-contact memory, stored with the pair list (Contacts/PairList.h): 32 bytes a listed pair.
 #pragma once
+
+#include <cstdint>
 
 #include "Math/Vector.h"
 
 namespace talus {
 
-// What a pair remembers from step to step. The tangential spring of SPEC.md 1, and what the
-// linear law needs at the ends of a contact (LinearSpringDashpot.h): the normal overlap, speed
-// and force at the last step, and the tangential force then. The pair is in one of three
-// states: apart, approaching (it closes its gap within the next step, and an impulse was applied
-// ahead of the touch: normalForce is the force of that impulse, overlap the negative gap, speed
-// the approach speed), or touching (the values at the last contact step).
+// What a pair remembers from step to step: whether it touches, and the tangential spring of
+// SPEC.md 1. A pair that is apart but will touch within the next step is "approaching"
+// (LinearSpringDashpot::approachForce); it has no spring then, and the same three numbers hold
+// the push applied ahead of the touch, the approach speed and the overlap (minus the gap) then.
 struct ContactHistory {
+    enum State : std::uint8_t { apart = 0, approaching = 1, touching = 2 };
+
     Vec3 spring = Vec3::Zero();
-    Vec3 tangentialForce = Vec3::Zero();
-    double normalForce = 0;
-    double normalSpeed = 0;
-    double overlap = 0;
-    bool touching = false;
-    bool approaching = false;
+    State state = apart;
+
+    bool isTouching() const { return state == touching; }
+    bool isApproaching() const { return state == approaching; }
+    double& pushAhead() { return spring.x(); }
+    double& approachSpeed() { return spring.y(); }
+    double& overlapBefore() { return spring.z(); }
     bool operator==(const ContactHistory&) const = default;
 };
 

@@ -7,9 +7,9 @@
 
 namespace talus {
 
-bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) const {
-    bool moved = !valid || referencePosition.size() != particles.size();
-    const double limit = 0.5 * skin;
+bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {
+    double maxDisplacement2 = 0, maxSpeed2 = 0;
+    const bool compare = valid && referencePosition.size() == particles.size();
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& x = particles.position[i];
         if (!isFinite(x) || !isFinite(particles.velocity[i])) {
@@ -20,12 +20,11 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
                     << "); the time step may be too large for the stiffest contact";
             throw Error(message.str());
         }
-        if (!moved) {
-            const double reach = limit - particles.velocity[i].norm() * dt;
-            moved = reach <= 0 || domain.nearestImage(x - referencePosition[i]).squaredNorm() >= reach * reach;
-        }
+        maxSpeed2 = std::max(maxSpeed2, particles.velocity[i].squaredNorm());
+        if (compare) maxDisplacement2 = std::max(maxDisplacement2, domain.nearestImage(x - referencePosition[i]).squaredNorm());
     }
-    return moved;
+    maxSpeed = std::sqrt(maxSpeed2);
+    return !compare || std::sqrt(maxDisplacement2) + maxSpeed * dt >= 0.5 * skin;
 }
 
 namespace {
@@ -38,12 +37,13 @@ struct CarriedHistory {
     bool operator<(const CarriedHistory& o) const { return a < o.a || (a == o.a && b < o.b); }
 };
 
+// The same history seen from the other particle: the spring turns round, an approach does not.
 ContactHistory reversed(ContactHistory h) {
-    h.spring = -h.spring;
+    if (h.isTouching()) h.spring = -h.spring;
     return h;
 }
 
-bool worthCarrying(const ContactHistory& h) { return h.touching || h.approaching || !h.spring.isZero(0); }
+bool worthCarrying(const ContactHistory& h) { return h.state != ContactHistory::apart || !h.spring.isZero(0); }
 
 }  // namespace
 

@@ -40,7 +40,9 @@ public:
     // move, plus |v| dt). Looking one step ahead keeps every pair that can touch within the next
     // step listed, which the push ahead of a touch needs (LinearSpringDashpot::approachForce).
     // Throws talus::Error naming the particle if a position is not finite.
-    bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) const;
+    // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close.
+    bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt);
+    double maxSpeed = 0;
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.

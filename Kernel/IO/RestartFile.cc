@@ -155,20 +155,14 @@ ContactLaw readLaw(Reader& r) {
 }
 
 void writeHistory(Writer& w, const ContactHistory& h) {
-    w << h.spring << h.tangentialForce << h.normalForce << h.normalSpeed << h.overlap << std::uint64_t(h.touching)
-      << std::uint64_t(h.approaching);
+    w << h.spring << std::uint64_t(h.state);
     w.end();
 }
 
 ContactHistory readHistory(Reader& r) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
-    h.tangentialForce = r.vec("tangential force");
-    h.normalForce = r.real("normal force");
-    h.normalSpeed = r.real("normal speed");
-    h.overlap = r.real("overlap");
-    h.touching = r.flag("touching flag");
-    h.approaching = r.flag("approaching flag");
+    h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::touching));
     return h;
 }
 

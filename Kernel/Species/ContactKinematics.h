@@ -37,19 +37,20 @@ inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, do
 }
 
 // Coulomb sliding (SPEC.md 1): caps |ft| at mu |fn| and resets the spring so that it is
-// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt.
-inline void applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
+// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. Returns whether it slides.
+inline bool applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
                               double tangentialStiffness, double tangentialDamping, const Vec3& vt) {
     const double limit = friction * std::abs(normalForce);
     const double ft2 = tangentialForce.squaredNorm();
-    if (ft2 <= limit * limit) return;
+    if (ft2 <= limit * limit) return false;
     if (limit == 0) {  // frictionless (or no normal force): no tangential force, no stored energy
         tangentialForce.setZero();
         spring.setZero();
-        return;
+        return false;
     }
     tangentialForce *= limit / std::sqrt(ft2);
     if (tangentialStiffness > 0) spring = -(tangentialForce + tangentialDamping * vt) / tangentialStiffness;
+    return true;
 }
 
 }  // namespace talus

@@ -26,6 +26,7 @@ struct HertzMindlin {
     double characteristicVelocity = 1;
 
     static constexpr const char* name = "HertzMindlin";
+    static constexpr bool usesEffectiveRadius = true;
 
     // Effective moduli from Young's modulus E and Poisson ratio nu of two equal materials.
     static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {

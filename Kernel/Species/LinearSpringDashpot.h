@@ -21,6 +21,7 @@ struct LinearSpringDashpot {
     double friction = 0;             // mu
 
     static constexpr const char* name = "LinearSpringDashpot";
+    static constexpr bool usesEffectiveRadius = false;
 
     // SPEC.md 1 inverse formulas for a central collision of reduced mass m:
     // kn = m (pi^2 + ln(e)^2) / tc^2, gn = -2 m ln(e) / tc; and kt = 2/7 kn, gt = gn.
@@ -86,13 +87,9 @@ struct LinearSpringDashpot {
     //    minus the f dt/2 + f' dt^2/6 that step counted on.
     // The tangential force uses the trapezoidal rule at both ends and no push ahead, except that a
     // sliding contact's tangential impulse is mu times the normal one, push ahead included.
+    // What the ends need of the last step is recomputed from the present state (separationForce),
+    // so a pair's history is only its spring and state (Contacts/ContactHistory.h).
     // Documentation/Validation/Restitution.md has the measured errors.
-
-    // Whether the contact slid at the last step: its tangential force sat at the Coulomb limit.
-    bool sliding(const ContactHistory& h) const {
-        const double limit = friction * std::abs(h.normalForce);
-        return limit > 0 && h.tangentialForce.squaredNorm() >= limit * limit * (1 - 1e-12);
-    }
 
     // The force rate df/dt = -kn u - gn f/m* in a contact (d(dn)/dt = -u, du/dt = f/m*).
     double forceRate(double force, double speed, double reducedMass) const {
@@ -102,35 +99,35 @@ struct LinearSpringDashpot {
     // Normal force on a pair apart (c.overlap = -gap < 0): the push ahead of a touch within the
     // next step, less the push of the last step, which is taken back.
     double approachForce(const ContactKinematics& c, ContactHistory& history, double dt) const {
-        const double previous = history.approaching ? history.normalForce : 0;
-        history.approaching = false;
-        history.normalForce = 0;
+        const double previous = history.isApproaching() ? history.pushAhead() : 0;
+        history = ContactHistory{};
         const double u = c.normalVelocity, gap = -c.overlap;
         if (u < 0 && gap < -u * dt) {
             const double tau = dt - gap / -u;  // from the touch to the next step
             const double touchForce = -normalDamping * u;
             const double touchRate = forceRate(touchForce, u, c.reducedMass);
-            history.approaching = true;
-            history.normalForce = (touchForce * tau * tau / 2 + touchRate * tau * tau * tau / 6) / (dt * dt);
-            history.normalSpeed = u;
-            history.overlap = c.overlap;
+            history.state = ContactHistory::approaching;
+            history.pushAhead() = (touchForce * tau * tau / 2 + touchRate * tau * tau * tau / 6) / (dt * dt);
+            history.approachSpeed() = u;
+            history.overlapBefore() = c.overlap;
         }
-        return history.normalForce - previous;
+        return (history.isApproaching() ? history.pushAhead() : 0) - previous;
     }
 
     ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
         const double elastic = normalStiffness * k.overlap;
-        const bool firstStep = !history.touching;
+        const bool firstStep = !history.isTouching();
         double tau = dt, touchSpeed = k.normalVelocity, pushedAhead = 0, speedNow;
         if (firstStep) {
-            if (history.approaching) {  // foreseen on the last step
-                touchSpeed = history.normalSpeed;
-                tau = dt + history.overlap / -touchSpeed;
-                pushedAhead = history.normalForce * dt;
+            if (history.isApproaching()) {  // foreseen on the last step
+                touchSpeed = history.approachSpeed();
+                tau = dt + history.overlapBefore() / -touchSpeed;
+                pushedAhead = history.pushAhead() * dt;
             } else {  // not foreseen: the touch was dn/|u| ago
                 const double speed = std::abs(k.normalVelocity);
                 tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
             }
+            history.spring.setZero();
             const double sinceTouchOverMass = 0.5 * tau / k.reducedMass;
             speedNow = (touchSpeed + sinceTouchOverMass * (-normalDamping * touchSpeed + elastic)) /
                        (1 + sinceTouchOverMass * normalDamping);
@@ -142,25 +139,20 @@ struct LinearSpringDashpot {
         f.normalForce = elastic - normalDamping * speedNow;
         advanceTangentialSpring(history.spring, k, firstStep ? tau : dt);
         f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
-        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
-                          tangentialDamping, k.tangentialVelocity);
-        history.normalForce = f.normalForce;  // the values now, for separationForce
-        history.normalSpeed = speedNow;
-        history.overlap = k.overlap;
-        history.tangentialForce = f.tangentialForce;
-        history.approaching = false;
+        const bool sliding = applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction,
+                                               tangentialStiffness, tangentialDamping, k.tangentialVelocity);
         if (firstStep) {
             const double touchForce = -normalDamping * touchSpeed;
             const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass);
             const double rate = forceRate(f.normalForce, speedNow, k.reducedMass);
             const double sinceTouch = 0.5 * tau * (touchForce + f.normalForce) + tau * tau * (touchRate - rate) / 12;
             const double meanOverNextStep = sinceTouch + f.normalForce * dt / 2 + rate * dt * dt / 6;
-            Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
-            Vec3 noSpring = Vec3::Zero();
-            applyCoulombLimit(touchTangentialForce, noSpring, touchForce, friction, 0, 0, k.tangentialVelocity);
-            if (sliding(history)) {  // |ft| = mu fn: the tangential impulse follows the normal one
+            if (sliding) {  // |ft| = mu fn: the tangential impulse follows the normal one
                 f.tangentialForce *= friction * meanOverNextStep / (dt * f.tangentialForce.norm());
             } else {
+                Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
+                Vec3 noSpring = Vec3::Zero();
+                applyCoulombLimit(touchTangentialForce, noSpring, touchForce, friction, 0, 0, k.tangentialVelocity);
                 f.tangentialForce =
                     0.5 * tau / dt * (touchTangentialForce + f.tangentialForce) + 0.5 * f.tangentialForce;
             }
@@ -169,10 +161,18 @@ struct LinearSpringDashpot {
         return f;
     }
 
-    // Force on the first step after the pair separated (c.overlap = -gap < 0).
+    // Force on the first step after the pair separated (c.overlap = -gap < 0). The last contact
+    // step's overlap, speed and force follow from the present ones, as velocity Verlet moved the
+    // pair: dn = -gap + u dt (the drift), u = u(n+1) + dt/(2m*) f (the half kick, f = kn dn - gn u
+    // for the pair alone); its tangential force from the spring it left.
     ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
-        const double lastOverlap = history.overlap, lastSpeed = history.normalSpeed, lastForce = history.normalForce;
-        const double m = c.reducedMass;
+        const double m = c.reducedMass, halfStepOverMass = 0.5 * dt / m;
+        const double lastOverlap = std::max(0.0, c.overlap + c.normalVelocity * dt);
+        const double lastSpeed = (c.normalVelocity - halfStepOverMass * normalStiffness * lastOverlap) /
+                                 (1 - halfStepOverMass * normalDamping);
+        const double lastForce = normalStiffness * lastOverlap - normalDamping * lastSpeed;
+        ContactForce f{0, Vec3::Zero()};
+        if (c.normalVelocity <= 0) return f;
         // Time s from the last contact step to the separation: dn - u s - f s^2/(2m*) = 0.
         double s = dt;
         const double discriminant = lastSpeed * lastSpeed + 2 * lastForce * lastOverlap / m;
@@ -187,18 +187,26 @@ struct LinearSpringDashpot {
         const double separationRate = forceRate(separationForce, separationSpeed, m);
         const double afterLastStep = 0.5 * s * (lastForce + separationForce) + s * s * (lastRate - separationRate) / 12;
         const double countedOn = lastForce * dt / 2 + lastRate * dt * dt / 6;
-        ContactForce f;
         f.normalForce = (afterLastStep - countedOn) / dt;
-        // Tangential: trapezoid from the last step to the separation, with the dashpot force of
-        // the present tangential velocity at the separation.
-        Vec3 separationTangentialForce = -tangentialDamping * c.tangentialVelocity;
-        Vec3 noSpring = Vec3::Zero();
-        applyCoulombLimit(separationTangentialForce, noSpring, separationForce, friction, 0, 0, c.tangentialVelocity);
-        const double atSeparation = 0.5 * s / dt;
-        if (sliding(history))
-            f.tangentialForce = history.tangentialForce * (friction * f.normalForce / history.tangentialForce.norm());
-        else
-            f.tangentialForce = (atSeparation - 0.5) * history.tangentialForce + atSeparation * separationTangentialForce;
+        // Tangential: the last force from the spring left; the trapezoid to the separation, where
+        // only the dashpot of the present tangential velocity acts; or mu times the normal
+        // correction if the contact was sliding.
+        Vec3 lastTangentialForce = -tangentialStiffness * history.spring - tangentialDamping * c.tangentialVelocity;
+        Vec3 spring = history.spring;
+        applyCoulombLimit(lastTangentialForce, spring, lastForce, friction, tangentialStiffness, tangentialDamping,
+                          c.tangentialVelocity);
+        // Sliding: at the Coulomb limit (the spring was reset to it, up to round-off).
+        const double limit = friction * std::abs(lastForce);
+        if (limit > 0 && lastTangentialForce.squaredNorm() >= limit * limit * (1 - 1e-9)) {
+            f.tangentialForce = lastTangentialForce * (friction * f.normalForce / lastTangentialForce.norm());
+        } else {
+            Vec3 separationTangentialForce = -tangentialDamping * c.tangentialVelocity;
+            Vec3 noSpring = Vec3::Zero();
+            applyCoulombLimit(separationTangentialForce, noSpring, separationForce, friction, 0, 0,
+                              c.tangentialVelocity);
+            const double atSeparation = 0.5 * s / dt;
+            f.tangentialForce = (atSeparation - 0.5) * lastTangentialForce + atSeparation * separationTangentialForce;
+        }
         return f;
     }
 

@@ -1,0 +1,124 @@
+// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of SPEC.md 1-2 as the
+// peer codes run it (shared/peers/README.md, scenes B and C), timed from a LAMMPS start file.
+//
+// A rough base of fixed spheres (type 1, d = 1) carries 1000 flowing spheres of d = 1 (type 2) and
+// 2000 of d = 0.79 (type 3), density 6/pi, in a box periodic in x (20) and y (10), inclined at 24
+// degrees: g = (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with kn = 2e5,
+// kt = 2/7 kn, mu = 0.5 and the peers' damping convention: gamma = 50 per unit effective mass
+// (gn = 50 m*, with m* the mass of the flowing sphere against the base or the floor), or with
+// --damping absolute gn = 25 for every pair. A frictional floor at z = -0.5 under the base is only
+// a safety net. dt = 1e-4; the run prints the flowing particles, steps, wall seconds of the time
+// loop, particle-steps per second, the peak memory per particle and the mean downslope velocity.
+// --nx and --ny replicate the start bed to scale the scene (10^4 to 10^6 flowing particles).
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "IO/LammpsDataFile.h"
+#include "Simulation.h"
+
+using namespace talus;
+
+namespace {
+
+// Resident memory of this process in bytes, as the kernel counts it (VmRSS or VmHWM, the peak).
+double memoryBytes(const std::string& field) {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind(field + ":", 0) == 0) return 1024.0 * std::stod(line.substr(field.size() + 1));
+    return 0;
+}
+
+}  // namespace
+
+class PeriodicChuteBenchmark : public Simulation {
+public:
+    std::string startFile = TALUS_SHARED_DIR "/peers/data/chute_B_settled.data";
+    double angle = 24, stiffness = 2e5, friction = 0.5, dampingPerMass = 50, absoluteDamping = 25;
+    int nx = 1, ny = 1, absolute = 0;
+
+    PeriodicChuteBenchmark() {
+        addFlag("nx", "copies of the start bed along x", nx);
+        addFlag("ny", "copies of the start bed along y", ny);
+        addFlag("angle", "inclination in degrees", angle);
+        addFlag("absolute-damping", "1: gn = 25 for every pair; 0: gn = 50 m* (the peers' default)", absolute);
+        addTextFlag("data", "LAMMPS data file (atom style sphere) to start from", startFile);
+        baselineMemory_ = memoryBytes("VmRSS");
+    }
+
+    void setupInitialConditions() override {
+        require(nx >= 1 && ny >= 1, "--nx and --ny must be at least 1");
+        const LammpsData bed = readLammpsData(startFile);
+        require(bed.types == 3, startFile + ": expected 3 atom types (base, large, small)");
+        const Vec3 size = bed.hi - bed.lo;
+        setDomain(bed.lo, bed.lo + Vec3(nx * size.x(), ny * size.y(), size.z()));
+        setPeriodic(true, true, false);
+        setGravity(Vec3(std::sin(degrees(angle)), 0, -std::cos(degrees(angle))));
+
+        // One species per atom type, with the mass of its spheres.
+        std::map<int, double> massOf, densityOf;
+        for (const LammpsAtom& a : bed.atoms) {
+            massOf.emplace(a.type, a.density * pi / 6 * std::pow(a.diameter, 3));
+            densityOf.emplace(a.type, a.density);
+        }
+        const char* names[] = {"base", "large", "small"};
+        for (int type = 1; type <= 3; ++type)
+            addSpecies(names[type - 1], densityOf.at(type), contactLaw(massOf.at(type) / 2));
+        // Pairs: the effective mass of two flowing spheres, or of the flowing one against the base.
+        const auto lawFor = [&](int a, int b) {
+            const double ma = massOf.at(a), mb = massOf.at(b);
+            if (a == 1) return contactLaw(mb);
+            if (b == 1) return contactLaw(ma);
+            return contactLaw(ma * mb / (ma + mb));
+        };
+        for (int a = 1; a <= 3; ++a)
+            for (int b = a; b <= 3; ++b) species().setPair(a - 1, b - 1, lawFor(a, b));
+        addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), /*base*/ 0);
+
+        for (int ix = 0; ix < nx; ++ix)
+            for (int iy = 0; iy < ny; ++iy)
+                for (const LammpsAtom& a : bed.atoms) {
+                    const Vec3 x = a.position + Vec3(ix * size.x(), iy * size.y(), 0);
+                    if (a.type == 1)
+                        addFixedParticle(x, a.diameter / 2, 0);
+                    else
+                        addParticle(x, a.diameter / 2, a.type - 1, a.velocity, a.angularVelocity);
+                }
+    }
+
+    void actionsAfterSolve() override {
+        const ParticleStore& p = particles();
+        double sumVx = 0;
+        std::size_t flowing = 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (!p.fixed[i]) {
+                sumVx += p.velocity[i].x();
+                ++flowing;
+            }
+        const RunStatistics& run = lastRun();
+        std::printf("benchmark: flowing %zu  steps %llu  wall %.3f s  %.4g particle-steps/s  "
+                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %zu  listed pairs %zu  rebuilds %llu\n",
+                    flowing, static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
+                    (memoryBytes("VmHWM") - baselineMemory_) / p.size(), sumVx / flowing, contactSummary().contacts,
+                    pairList().pairs.size(), static_cast<unsigned long long>(pairList().builds));
+    }
+
+private:
+    LinearSpringDashpot contactLaw(double effectiveMass) const {
+        const double damping = absolute ? absoluteDamping : dampingPerMass * effectiveMass;
+        return LinearSpringDashpot{stiffness, damping, 2.0 / 7.0 * stiffness, damping, friction};
+    }
+    double baselineMemory_ = 0;
+};
+
+int main(int argc, char** argv) {
+    PeriodicChuteBenchmark chute;
+    chute.setName("PeriodicChuteBenchmark");
+    chute.setTimeStep(1e-4);
+    chute.setEndTime(5);  // 50000 steps
+    chute.setSkin(0.2);   // as the peers' neighbor 0.2
+    chute.setFileOutput(false);
+    return chute.solve(argc, argv);
+}
