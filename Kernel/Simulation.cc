@@ -360,7 +360,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
         p.torque[i].setZero();
     }
     if (state_.pairList.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep))
-        state_.pairList.rebuild(p, state_.domain, state_.walls, grid_);
+        state_.pairList.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     summary_ = ContactSummary{};
     if (records) records->clear();
     std::visit(

@@ -126,3 +126,34 @@ TEST(HeadOnCollision, HertzDurationAndEnergyMatchElasticTheory) {
     EXPECT_LT(worstDuration, 1e-3);
     EXPECT_LT(worstEnergy, 1e-6);
 }
+
+// With treatContactEnds = false the law is plain velocity Verlet as LAMMPS (gran/hooke/history)
+// and LIGGGHTS integrate it: the dashpot on the half-step speed, forces at the steps. The same
+// two-body collision written out here as that scheme, in the relative coordinate (overlap dn,
+// normal speed u, m* u' = kn dn - gn u), must give the same restitution to round-off. (LAMMPS
+// 29 Sep 2021 printed e = 0.886266 and tc = 4.964188e-3 for e = 0.883133 at dt = 1e-4, and so does
+// TwoParticleCollision --plain-verlet 1; see Documentation/Performance.md.)
+TEST(HeadOnCollision, PlainVerletIsThePeersScheme) {
+    HeadOnCollision collision;
+    auto law = LinearSpringDashpot::fromCollision(0.005, 0.5, collision.reducedMass());
+    law.treatContactEnds = false;
+    collision.law = law;
+    collision.timeStep = 0.005 / 50;
+    collision.longestDuration = 0.005;
+    const HeadOnResult talus = collision.run();
+
+    // The reference: the overlap starts at -gap and the relative speed at -v (closing).
+    const double m = collision.reducedMass(), dt = collision.timeStep;
+    double overlap = -(collision.stepsBeforeContact + collision.entryPhase) * dt * collision.approachSpeed();
+    double u = -collision.approachSpeed(), force = 0;
+    for (int step = 0; step < 10000; ++step) {
+        u += 0.5 * dt * force / m;                   // half kick
+        overlap -= dt * u;                           // drift
+        force = overlap > 0 ? law.normalStiffness * overlap - law.normalDamping * u : 0;  // half-step u
+        u += 0.5 * dt * force / m;                   // half kick
+        if (overlap < 0 && u > 0 && step > 10 * collision.stepsBeforeContact) break;
+    }
+    EXPECT_NEAR(talus.restitution, u / collision.approachSpeed(), 1e-12);
+    // And it is the O(dt/tc) error Talus's own treatment of the contact ends removes.
+    EXPECT_GT(std::abs(talus.restitution / 0.5 - 1), 1e-3);
+}

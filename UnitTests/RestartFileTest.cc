@@ -111,10 +111,10 @@ void expectSameRandomGenerator(std::mt19937_64 a, std::mt19937_64 b) {
 void expectSameState(const SimulationState& a, const SimulationState& b) {
     const RunSettings &x = a.settings, &y = b.settings;
     EXPECT_EQ(x.name, y.name);
-    EXPECT_TRUE(sameBits(std::vector<double>{x.timeStep, x.endTime, x.outputInterval, x.skin, x.progressInterval,
-                                             x.maxOverlapFraction, x.maxInitialOverlapFraction},
-                         std::vector<double>{y.timeStep, y.endTime, y.outputInterval, y.skin, y.progressInterval,
-                                             y.maxOverlapFraction, y.maxInitialOverlapFraction}));
+    EXPECT_TRUE(sameBits(std::vector<double>{x.timeStep, x.endTime, x.outputInterval, x.skin, x.cellSizeRatio,
+                                             x.progressInterval, x.maxOverlapFraction, x.maxInitialOverlapFraction},
+                         std::vector<double>{y.timeStep, y.endTime, y.outputInterval, y.skin, y.cellSizeRatio,
+                                             y.progressInterval, y.maxOverlapFraction, y.maxInitialOverlapFraction}));
     EXPECT_EQ(std::vector<bool>({x.writeData, x.writeFstat, x.writeEne, x.writeVtu, x.writeRestart}),
               std::vector<bool>({y.writeData, y.writeFstat, y.writeEne, y.writeVtu, y.writeRestart}));
     EXPECT_TRUE(sameBits(a.time, b.time));
@@ -160,6 +160,8 @@ void expectSameState(const SimulationState& a, const SimulationState& b) {
     EXPECT_TRUE(sameBits(l.wallHistory, m.wallHistory));
     EXPECT_TRUE(sameBits(l.referencePosition, m.referencePosition));
     EXPECT_TRUE(sameBits(l.skin, m.skin));
+    EXPECT_TRUE(sameBits(l.reach, m.reach));
+    EXPECT_TRUE(sameBits(l.maxSpeed, m.maxSpeed));
     EXPECT_EQ(l.valid, m.valid);
     EXPECT_EQ(l.builds, m.builds);
 

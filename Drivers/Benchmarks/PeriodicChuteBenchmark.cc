@@ -37,13 +37,14 @@ class PeriodicChuteBenchmark : public Simulation {
 public:
     std::string startFile = TALUS_SHARED_DIR "/peers/data/chute_B_settled.data";
     double angle = 24, stiffness = 2e5, friction = 0.5, dampingPerMass = 50, absoluteDamping = 25;
-    int nx = 1, ny = 1, absolute = 0;
+    int nx = 1, ny = 1, absolute = 0, plainVerlet = 0;
 
     PeriodicChuteBenchmark() {
         addFlag("nx", "copies of the start bed along x", nx);
         addFlag("ny", "copies of the start bed along y", ny);
         addFlag("angle", "inclination in degrees", angle);
         addFlag("absolute-damping", "1: gn = 25 for every pair; 0: gn = 50 m* (the peers' default)", absolute);
+        addFlag("plain-verlet", "1: contacts integrated as the peers do (no treatment of contact ends)", plainVerlet);
         addTextFlag("data", "LAMMPS data file (atom style sphere) to start from", startFile);
         baselineMemory_ = memoryBytes("VmRSS");
     }
@@ -108,7 +109,9 @@ public:
 private:
     LinearSpringDashpot contactLaw(double effectiveMass) const {
         const double damping = absolute ? absoluteDamping : dampingPerMass * effectiveMass;
-        return LinearSpringDashpot{stiffness, damping, 2.0 / 7.0 * stiffness, damping, friction};
+        LinearSpringDashpot law{stiffness, damping, 2.0 / 7.0 * stiffness, damping, friction};
+        law.treatContactEnds = !plainVerlet;
+        return law;
     }
     double baselineMemory_ = 0;
 };

@@ -17,17 +17,22 @@ public:
     double restitution = 0.88;
     double collisionTime = 0.005;
     double gap = 0.1;
+    int plainVerlet = 0;
 
     TwoParticleCollision() {
         addFlag("restitution", "restitution coefficient e", restitution);
         addFlag("collision-time", "collision time tc", collisionTime);
         addFlag("gap", "initial distance between the surfaces", gap);
+        addFlag("plain-verlet", "1: integrate the contact as LAMMPS and LIGGGHTS do (no treatment of its ends)",
+                plainVerlet);
     }
 
     void setupInitialConditions() override {
         setTimeStep(collisionTime / 50);  // --dt still overrides this
         const double reducedMass = 0.5;
-        const auto glass = addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, restitution, reducedMass));
+        auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, reducedMass);
+        law.treatContactEnds = !plainVerlet;
+        const auto glass = addSpecies("glass", 6 / pi, law);
         setGravity(Vec3::Zero());
         setDomain(Vec3(-2, -1, -1), Vec3(2, 1, 1));
         // Surfaces a gap apart, closing at speed 1: contact starts at t = gap exactly.

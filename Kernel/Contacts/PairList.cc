@@ -24,7 +24,7 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
         if (compare) maxDisplacement2 = std::max(maxDisplacement2, domain.nearestImage(x - referencePosition[i]).squaredNorm());
     }
     maxSpeed = std::sqrt(maxSpeed2);
-    return !compare || std::sqrt(maxDisplacement2) + maxSpeed * dt >= 0.5 * skin;
+    return !compare || std::sqrt(maxDisplacement2) + maxSpeed * dt >= 0.5 * reach;
 }
 
 namespace {
@@ -48,7 +48,7 @@ bool worthCarrying(const ContactHistory& h) { return h.state != ContactHistory::
 }  // namespace
 
 void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
-                       HGrid& grid) {
+                       HGrid& grid, double dt) {
     // 1. Remember the history of touching pairs by global ids (a wall w is id ~w, an id that no
     //    particle can have).
     std::vector<CarriedHistory> carried;
@@ -69,7 +69,8 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
 
     // 2. New candidates, with the history they had.
     pairs.clear();
-    grid.findPairs(particles, domain, skin, pairs);
+    reach = skin + 2 * maxSpeed * dt;
+    grid.findPairs(particles, domain, reach, pairs);
     history.assign(pairs.size(), ContactHistory{});
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
@@ -80,7 +81,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     for (std::uint32_t w = 0; w < walls.size(); ++w)
         for (std::uint32_t i = 0; i < particles.size(); ++i) {
             if (particles.fixed[i]) continue;
-            if (walls[w].motion < 0 && walls[w].signedDistance(particles.position[i]) >= particles.radius[i] + skin)
+            if (walls[w].motion < 0 && walls[w].signedDistance(particles.position[i]) >= particles.radius[i] + reach)
                 continue;
             wallPairs.push_back({i, w});
         }

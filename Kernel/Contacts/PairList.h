@@ -1,7 +1,9 @@
 // The candidate contacts of the current neighbour list, with their contact history.
 //
-// Pairs closer than ri + rj + skin are listed by the HGrid; the list stays valid until some
-// particle has moved more than half the skin since it was built (DESIGN.md "Data layout").
+// Pairs closer than ri + rj + reach are listed by the HGrid, where reach = skin + 2 vmax dt
+// looks one step ahead (vmax the largest particle speed); the list stays valid while no particle
+// can have moved reach/2 by the end of the next step (DESIGN.md "Data layout"). So every pair
+// that can touch within the next step is listed, even with skin 0.
 // Each listed pair and each particle-wall candidate carries its tangential spring; a rebuild
 // carries the springs of touching pairs over by the particles' global ids, so rebuilding
 // (or reordering particles) never loses history.
@@ -32,6 +34,7 @@ public:
     std::vector<ContactHistory> wallHistory;
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
+    double reach = 0;  // skin + 2 vmax dt at the last build
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
     std::uint64_t builds = 0;
 
@@ -47,7 +50,7 @@ public:
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
-                 HGrid& grid);
+                 HGrid& grid, double dt);
 };
 
 }  // namespace talus

@@ -125,7 +125,7 @@ private:
 void writeLaw(Writer& w, const ContactLaw& law) {
     if (auto* l = std::get_if<LinearSpringDashpot>(&law))
         w << std::string(LinearSpringDashpot::name) << l->normalStiffness << l->normalDamping << l->tangentialStiffness
-          << l->tangentialDamping << l->friction;
+          << l->tangentialDamping << l->friction << std::uint64_t(l->treatContactEnds);
     else if (auto* h = std::get_if<HertzMindlin>(&law))
         w << std::string(HertzMindlin::name) << h->effectiveYoungsModulus << h->effectiveShearModulus << h->restitution
           << h->friction << h->characteristicVelocity;
@@ -140,6 +140,7 @@ ContactLaw readLaw(Reader& r) {
         l.tangentialStiffness = r.real("tangential stiffness");
         l.tangentialDamping = r.real("tangential damping");
         l.friction = r.real("friction");
+        l.treatContactEnds = r.flag("contact-end flag");
         return l;
     }
     if (kind == HertzMindlin::name) {
@@ -213,7 +214,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             w.end();
         }
         const PairList& l = s.pairList;
-        w.key("pairlist") << l.skin << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
+        w.key("pairlist") << l.skin << l.reach << l.maxSpeed << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
@@ -344,6 +345,8 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     r.expect("pairlist");
     PairList& l = t.pairList;
     l.skin = r.real("skin");
+    l.reach = r.real("reach");
+    l.maxSpeed = r.real("largest speed");
     l.valid = r.flag("valid flag");
     l.builds = r.count("build count");
     const auto pairs = r.count("pair count", 1ull << 40), wallPairs = r.count("wall pair count", 1ull << 40);

@@ -19,6 +19,10 @@ struct LinearSpringDashpot {
     double tangentialStiffness = 0;  // kt
     double tangentialDamping = 0;    // gt
     double friction = 0;             // mu
+    // true: the ends of a contact are integrated as described below (restitution error
+    // O((dt/tc)^2)); false: plain velocity Verlet with the half-step speed in the dashpot, as
+    // LAMMPS (gran/hooke/history) and LIGGGHTS do, for comparing with them (error O(dt/tc)).
+    bool treatContactEnds = true;
 
     static constexpr const char* name = "LinearSpringDashpot";
     static constexpr bool usesEffectiveRadius = false;
@@ -55,7 +59,8 @@ struct LinearSpringDashpot {
     static LinearSpringDashpot mix(const LinearSpringDashpot& a, const LinearSpringDashpot& b) {
         return {0.5 * (a.normalStiffness + b.normalStiffness), 0.5 * (a.normalDamping + b.normalDamping),
                 0.5 * (a.tangentialStiffness + b.tangentialStiffness),
-                0.5 * (a.tangentialDamping + b.tangentialDamping), 0.5 * (a.friction + b.friction)};
+                0.5 * (a.tangentialDamping + b.tangentialDamping), 0.5 * (a.friction + b.friction),
+                a.treatContactEnds && b.treatContactEnds};
     }
 
     void validate(const std::string& what) const {
@@ -99,6 +104,7 @@ struct LinearSpringDashpot {
     // Normal force on a pair apart (c.overlap = -gap < 0): the push ahead of a touch within the
     // next step, less the push of the last step, which is taken back.
     double approachForce(const ContactKinematics& c, ContactHistory& history, double dt) const {
+        if (!treatContactEnds) return 0;
         const double previous = history.isApproaching() ? history.pushAhead() : 0;
         history = ContactHistory{};
         const double u = c.normalVelocity, gap = -c.overlap;
@@ -115,6 +121,7 @@ struct LinearSpringDashpot {
     }
 
     ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        if (!treatContactEnds) return plainForce(k, history, dt);
         const double elastic = normalStiffness * k.overlap;
         const bool firstStep = !history.isTouching();
         double tau = dt, touchSpeed = k.normalVelocity, pushedAhead = 0, speedNow;
@@ -166,6 +173,7 @@ struct LinearSpringDashpot {
     // pair: dn = -gap + u dt (the drift), u = u(n+1) + dt/(2m*) f (the half kick, f = kn dn - gn u
     // for the pair alone); its tangential force from the spring it left.
     ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
+        if (!treatContactEnds) return {0, Vec3::Zero()};
         const double m = c.reducedMass, halfStepOverMass = 0.5 * dt / m;
         const double lastOverlap = std::max(0.0, c.overlap + c.normalVelocity * dt);
         const double lastSpeed = (c.normalVelocity - halfStepOverMass * normalStiffness * lastOverlap) /
@@ -207,6 +215,17 @@ struct LinearSpringDashpot {
             const double atSeparation = 0.5 * s / dt;
             f.tangentialForce = (atSeparation - 0.5) * lastTangentialForce + atSeparation * separationTangentialForce;
         }
+        return f;
+    }
+
+    // SPEC.md 1 as plain velocity Verlet evaluates it: the half-step velocities, no end treatment.
+    ContactForce plainForce(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        ContactForce f;
+        f.normalForce = normalStiffness * k.overlap - normalDamping * k.normalVelocity;
+        advanceTangentialSpring(history.spring, k, dt);
+        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
+        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
+                          tangentialDamping, k.tangentialVelocity);
         return f;
     }
 
