@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 
 #include "IO/LammpsDataFile.h"
@@ -37,7 +38,8 @@ class PeriodicChuteBenchmark : public Simulation {
 public:
     std::string startFile = TALUS_SHARED_DIR "/peers/data/chute_B_settled.data";
     double angle = 24, stiffness = 2e5, friction = 0.5, dampingPerMass = 50, absoluteDamping = 25;
-    int nx = 1, ny = 1, absolute = 0, plainVerlet = 0;
+    double perturbation = 0;  // amplitude of random start velocities, for an ensemble of trajectories
+    int nx = 1, ny = 1, absolute = 0, plainVerlet = 0, seed = 1;
 
     PeriodicChuteBenchmark() {
         addFlag("nx", "copies of the start bed along x", nx);
@@ -46,6 +48,8 @@ public:
         addFlag("absolute-damping", "1: gn = 25 for every pair; 0: gn = 50 m* (the peers' default)", absolute);
         addFlag("plain-verlet", "1: contacts integrated as the peers do (no treatment of contact ends)", plainVerlet);
         addTextFlag("data", "LAMMPS data file (atom style sphere) to start from", startFile);
+        addFlag("perturbation", "add random velocities up to this speed to the flowing spheres", perturbation);
+        addFlag("seed", "seed of the random velocities", seed);
         baselineMemory_ = memoryBytes("VmRSS");
     }
 
@@ -78,6 +82,8 @@ public:
             for (int b = a; b <= 3; ++b) species().setPair(a - 1, b - 1, lawFor(a, b));
         addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), /*base*/ 0);
 
+        random().seed(static_cast<std::uint64_t>(seed));
+        std::uniform_real_distribution<double> noise(-perturbation, perturbation);
         for (int ix = 0; ix < nx; ++ix)
             for (int iy = 0; iy < ny; ++iy)
                 for (const LammpsAtom& a : bed.atoms) {
@@ -85,7 +91,9 @@ public:
                     if (a.type == 1)
                         addFixedParticle(x, a.diameter / 2, 0);
                     else
-                        addParticle(x, a.diameter / 2, a.type - 1, a.velocity, a.angularVelocity);
+                        addParticle(x, a.diameter / 2, a.type - 1,
+                                    a.velocity + Vec3(noise(random()), noise(random()), noise(random())),
+                                    a.angularVelocity);
                 }
     }
 

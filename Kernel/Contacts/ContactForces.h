@@ -121,7 +121,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         if (!touching && farApart(history, r2, sumR)) continue;
         const double distance = std::sqrt(r2);
         Arms arms;
-        ContactKinematics c = contactKinematics(d / distance, sumR - distance, p.radius[i], p.radius[j],
+        ContactKinematics c = contactKinematics(d * (1 / distance), sumR - distance, p.radius[i], p.radius[j],
                                                 p.velocity[i] - p.velocity[j], p.angularVelocity[i],
                                                 p.angularVelocity[j], arms);
         c.distance = distance;
@@ -133,6 +133,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         else
             apart(i, j, c, arms, history, law);
     }
+
 
     for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
         const std::uint32_t i = list.wallPairs[k].particle;
