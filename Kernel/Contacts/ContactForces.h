@@ -65,7 +65,8 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
     // Force and torque on i (and j, unless it is a wall) of one contact, or of the separation
     // impulse of a pair that stopped touching during the last step. The torques are
     // bij x f = -armI n x f and -bji x f = -armJ n x f.
-    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n, const Arms& arms) {
+    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n,
+                      const Arms& arms) [[gnu::always_inline]] {
         const Vec3 force = f.normalForce * n + f.tangentialForce;
         const Vec3 turn = n.cross(f.tangentialForce);  // n x force
         p.force[i] += force;
@@ -76,7 +77,8 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         }
     };
     auto touch = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                     ContactHistory& history, const Law& law, double smallerRadius, std::uint64_t idB) {
+                     ContactHistory& history, const Law& law, double smallerRadius,
+                     std::uint64_t idB) [[gnu::always_inline]] {
         const ContactForce f = law.force(c, history, dt);
         history.state = ContactHistory::touching;
         apply(i, j, f, c.normal, arms);

@@ -27,7 +27,7 @@ struct ContactForce {
 // Tangential spring: forward Euler of SPEC.md 1, d(xi)/dt = vt - rij (xi . vij) / rij^2, which
 // keeps xi in the tangent plane as the contact rotates. A wall's normal only turns with the
 // wall, so there the spring is advanced with vt and projected back onto the tangent plane.
-inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, double dt) {
+[[gnu::always_inline]] inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, double dt) {
     if (k.distance > 0) {
         spring += dt * (k.tangentialVelocity - k.normal * (spring.dot(k.relativeVelocity) / k.distance));
     } else {
@@ -38,7 +38,7 @@ inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, do
 
 // Coulomb sliding (SPEC.md 1): caps |ft| at mu |fn| and resets the spring so that it is
 // consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. Returns whether it slides.
-inline bool applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
+[[gnu::always_inline]] inline bool applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
                               double tangentialStiffness, double tangentialDamping, const Vec3& vt) {
     const double limit = friction * std::abs(normalForce);
     const double ft2 = tangentialForce.squaredNorm();

@@ -120,51 +120,65 @@ struct LinearSpringDashpot {
         return (history.isApproaching() ? history.pushAhead() : 0) - previous;
     }
 
-    ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
-        if (!treatContactEnds) return plainForce(k, history, dt);
+    // The force of a touching pair. Inside a contact (the common case, kept small so that it is
+    // inlined into the force loop): the dashpot on the end-of-step speed, solved implicitly for the
+    // pair, u(n+1) = u + dt/(2m*) (kn dn - gn u(n+1)).
+    [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        if (!treatContactEnds) [[unlikely]]
+            return plainForce(k, history, dt);
+        if (!history.isTouching()) [[unlikely]]
+            return firstContactForce(k, history, dt);
+        const double halfStepOverMass = 0.5 * dt / k.reducedMass;
         const double elastic = normalStiffness * k.overlap;
-        const bool firstStep = !history.isTouching();
-        double tau = dt, touchSpeed = k.normalVelocity, pushedAhead = 0, speedNow;
-        if (firstStep) {
-            if (history.isApproaching()) {  // foreseen on the last step
-                touchSpeed = history.approachSpeed();
-                tau = dt + history.overlapBefore() / -touchSpeed;
-                pushedAhead = history.pushAhead() * dt;
-            } else {  // not foreseen: the touch was dn/|u| ago
-                const double speed = std::abs(k.normalVelocity);
-                tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
-            }
-            history.spring.setZero();
-            const double sinceTouchOverMass = 0.5 * tau / k.reducedMass;
-            speedNow = (touchSpeed + sinceTouchOverMass * (-normalDamping * touchSpeed + elastic)) /
-                       (1 + sinceTouchOverMass * normalDamping);
-        } else {
-            const double halfStepOverMass = 0.5 * dt / k.reducedMass;
-            speedNow = (k.normalVelocity + halfStepOverMass * elastic) / (1 + halfStepOverMass * normalDamping);
-        }
+        const double speedNow =
+            (k.normalVelocity + halfStepOverMass * elastic) / (1 + halfStepOverMass * normalDamping);
         ContactForce f;
         f.normalForce = elastic - normalDamping * speedNow;
-        advanceTangentialSpring(history.spring, k, firstStep ? tau : dt);
+        advanceTangentialSpring(history.spring, k, dt);
+        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
+        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
+                          tangentialDamping, k.tangentialVelocity);
+        return f;
+    }
+
+    // The first step of a contact (see above): from the touch, foreseen or not, to now.
+    [[gnu::noinline]] ContactForce firstContactForce(const ContactKinematics& k, ContactHistory& history,
+                                                     double dt) const {
+        const double elastic = normalStiffness * k.overlap;
+        double tau, touchSpeed = k.normalVelocity, pushedAhead = 0;
+        if (history.isApproaching()) {  // foreseen on the last step
+            touchSpeed = history.approachSpeed();
+            tau = dt + history.overlapBefore() / -touchSpeed;
+            pushedAhead = history.pushAhead() * dt;
+        } else {  // not foreseen: the touch was dn/|u| ago
+            const double speed = std::abs(k.normalVelocity);
+            tau = k.overlap >= speed * dt ? dt : k.overlap / speed;
+        }
+        history.spring.setZero();
+        // The speed now, u0 + tau (f0 + kn dn - gn u(now))/(2 m*), implicit in the dashpot.
+        const double sinceTouchOverMass = 0.5 * tau / k.reducedMass;
+        const double speedNow = (touchSpeed + sinceTouchOverMass * (-normalDamping * touchSpeed + elastic)) /
+                                (1 + sinceTouchOverMass * normalDamping);
+        ContactForce f;
+        f.normalForce = elastic - normalDamping * speedNow;
+        advanceTangentialSpring(history.spring, k, tau);
         f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
         const bool sliding = applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction,
                                                tangentialStiffness, tangentialDamping, k.tangentialVelocity);
-        if (firstStep) {
-            const double touchForce = -normalDamping * touchSpeed;
-            const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass);
-            const double rate = forceRate(f.normalForce, speedNow, k.reducedMass);
-            const double sinceTouch = 0.5 * tau * (touchForce + f.normalForce) + tau * tau * (touchRate - rate) / 12;
-            const double meanOverNextStep = sinceTouch + f.normalForce * dt / 2 + rate * dt * dt / 6;
-            if (sliding) {  // |ft| = mu fn: the tangential impulse follows the normal one
-                f.tangentialForce *= friction * meanOverNextStep / (dt * f.tangentialForce.norm());
-            } else {
-                Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
-                Vec3 noSpring = Vec3::Zero();
-                applyCoulombLimit(touchTangentialForce, noSpring, touchForce, friction, 0, 0, k.tangentialVelocity);
-                f.tangentialForce =
-                    0.5 * tau / dt * (touchTangentialForce + f.tangentialForce) + 0.5 * f.tangentialForce;
-            }
-            f.normalForce = (meanOverNextStep - pushedAhead) / dt;
+        const double touchForce = -normalDamping * touchSpeed;
+        const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass);
+        const double rate = forceRate(f.normalForce, speedNow, k.reducedMass);
+        const double sinceTouch = 0.5 * tau * (touchForce + f.normalForce) + tau * tau * (touchRate - rate) / 12;
+        const double meanOverNextStep = sinceTouch + f.normalForce * dt / 2 + rate * dt * dt / 6;
+        if (sliding) {  // |ft| = mu fn: the tangential impulse follows the normal one
+            f.tangentialForce *= friction * meanOverNextStep / (dt * f.tangentialForce.norm());
+        } else {
+            Vec3 touchTangentialForce = -tangentialDamping * k.tangentialVelocity;
+            Vec3 noSpring = Vec3::Zero();
+            applyCoulombLimit(touchTangentialForce, noSpring, touchForce, friction, 0, 0, k.tangentialVelocity);
+            f.tangentialForce = 0.5 * tau / dt * (touchTangentialForce + f.tangentialForce) + 0.5 * f.tangentialForce;
         }
+        f.normalForce = (meanOverNextStep - pushedAhead) / dt;
         return f;
     }
 
@@ -219,7 +233,7 @@ struct LinearSpringDashpot {
     }
 
     // SPEC.md 1 as plain velocity Verlet evaluates it: the half-step velocities, no end treatment.
-    ContactForce plainForce(const ContactKinematics& k, ContactHistory& history, double dt) const {
+    [[gnu::noinline]] ContactForce plainForce(const ContactKinematics& k, ContactHistory& history, double dt) const {
         ContactForce f;
         f.normalForce = normalStiffness * k.overlap - normalDamping * k.normalVelocity;
         advanceTangentialSpring(history.spring, k, dt);
