@@ -82,6 +82,7 @@ public:
             for (int b = a; b <= 3; ++b) species().setPair(a - 1, b - 1, lawFor(a, b));
         addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), /*base*/ 0);
 
+        particles().reserve(static_cast<std::size_t>(nx) * ny * bed.atoms.size());  // no growth slack
         random().seed(static_cast<std::uint64_t>(seed));
         std::uniform_real_distribution<double> noise(-perturbation, perturbation);
         for (int ix = 0; ix < nx; ++ix)
