@@ -235,7 +235,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         actionsBeforeTimeStep();
         integrate(saving);
         actionsAfterTimeStep();
-        if (saving) save();
+        if (saving) writeOutput();
         progress.update(state_.time, k, mobile);
     }
     progress.finish(state_.time, steps);
@@ -274,7 +274,6 @@ void Simulation::initialise(bool restarted) {
     files_.reset();
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
     if (anyFile) files_ = std::make_unique<OutputFiles>(state_, restarted);
-    initialised_ = true;
     if (restarted) return;
 
     // Initial forces, and overlaps checked against the stricter initial limit.
@@ -289,7 +288,7 @@ void Simulation::initialise(bool restarted) {
           << "%, settings().maxInitialOverlapFraction); place them further apart or make them smaller";
         throw Error(m.str());
     }
-    save();
+    writeOutput();
 }
 
 double Simulation::shortestCollisionTime(std::string* which) const {
@@ -432,8 +431,6 @@ void Simulation::integrate(bool recordContacts) {
         p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
     }
 }
-
-void Simulation::save() { writeOutput(); }
 
 void Simulation::writeOutput() {
     if (!files_) return;

@@ -116,7 +116,6 @@ private:
     void computeForces(std::vector<ContactRecord>* records, bool checkOverlaps = true);
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
-    void save();
     std::uint64_t saveEvery() const;
 
     using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;
@@ -129,7 +128,6 @@ private:
     std::vector<ContactRecord> records_;
     std::unique_ptr<CommandLine> commandLine_;
     std::unique_ptr<OutputFiles> files_;
-    bool initialised_ = false;
     RunStatistics lastRun_;
     std::string restartFile_;
 };
