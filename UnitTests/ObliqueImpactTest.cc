@@ -74,7 +74,7 @@ ObliqueResult impact(double tangentialToNormalRatio) {
             const double overlap = radius - s.walls()[list.wallPairs[k].wall].signedDistance(
                                                 s.particles().position[list.wallPairs[k].particle]);
             if (overlap <= 0) continue;
-            const double tangential = law.tangentialStiffness * list.wallHistory[k].spring.norm();
+            const double tangential = law.tangentialStiffness * list.wallHistory.get(k).spring.norm();
             const double limit = friction * law.normalStiffness * overlap;
             if (tangential < limit * (1 - 1e-9)) ++result.stuckSteps;
             else ++result.slidingSteps;

@@ -173,9 +173,9 @@ void expectSameState(const SimulationState& a, const SimulationState& b) {
     EXPECT_TRUE(sameBits(a.output.frameTimes, b.output.frameTimes));
 }
 
-std::size_t nonZeroSprings(const std::vector<ContactHistory>& history) {
+std::size_t nonZeroSprings(const ContactHistories& history) {
     std::size_t n = 0;
-    for (const ContactHistory& h : history) n += !h.spring.isZero(0);
+    for (std::size_t k = 0; k < history.size(); ++k) n += !history.get(k).spring.isZero(0);
     return n;
 }
 
@@ -221,7 +221,7 @@ TEST(RestartFile, AwkwardNumbersReadBackBitwise) {
     p.motion = {-1, -1};
     state.nextId = 42;
     state.pairList.pairs = {{0, 1}};
-    state.pairList.history = {ContactHistory{Vec3(1e-12 / 3, -0.0, 5e-324), ContactHistory::touching}};
+    state.pairList.history.push_back(ContactHistory{Vec3(1e-12 / 3, -0.0, 5e-324), ContactHistory::touching});
     state.pairList.referencePosition = p.position;
     state.pairList.skin = 0.01 / 3;
     const std::string path = "restartfile_awkward.restart";

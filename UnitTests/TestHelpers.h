@@ -93,6 +93,12 @@ bool sameBits(Integer a, Integer b) {
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
     return sameBits(a.spring, b.spring) && a.state == b.state;
 }
+inline bool sameBits(const ContactHistories& a, const ContactHistories& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (!sameBits(a.get(k), b.get(k))) return false;
+    return true;
+}
 template <class T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
     if (a.size() != b.size()) return false;

@@ -107,9 +107,9 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
     // A pair apart by more than reach + (largest closing speed) dt, with nothing pending, needs
     // no work this step.
     const double closing = 2 * maxSpeed * dt;
-    auto farApart = [closing](const ContactHistory& history, double distanceSquared, double reach) {
+    auto farApart = [closing](ContactHistory::State state, double distanceSquared, double reach) {
         const double limit = reach + closing;
-        return history.state == ContactHistory::apart && distanceSquared >= limit * limit;
+        return state == ContactHistory::apart && distanceSquared >= limit * limit;
     };
 
     const PeriodicImage image(domain);
@@ -118,9 +118,9 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const Vec3 d = image.nearest(p.position[i] - p.position[j]);
         const double sumR = p.radius[i] + p.radius[j];
         const double r2 = d.squaredNorm();
-        ContactHistory& history = list.history[k];
         const bool touching = r2 < sumR * sumR;
-        if (!touching && farApart(history, r2, sumR)) continue;
+        if (!touching && farApart(list.history.state(k), r2, sumR)) continue;
+        ContactHistory history = list.history.get(k);
         const double distance = std::sqrt(r2);
         Arms arms;
         ContactKinematics c = contactKinematics(d * (1 / distance), sumR - distance, p.radius[i], p.radius[j],
@@ -134,6 +134,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
             touch(i, j, c, arms, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
         else
             apart(i, j, c, arms, history, law);
+        list.history.set(k, history);
     }
 
 
@@ -141,11 +142,12 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
         const std::uint32_t i = list.wallPairs[k].particle;
         const PlaneWall& wall = walls[list.wallPairs[k].wall];
         const double distance = wall.signedDistance(p.position[i]);
-        ContactHistory& history = list.wallHistory[k];
         const bool touching = distance < p.radius[i];
         // (A moving wall may close in faster than the particles: no shortcut for it.)
-        if (!touching && history.state == ContactHistory::apart && wall.motion < 0 && distance - p.radius[i] >= closing)
+        if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
+            distance - p.radius[i] >= closing)
             continue;
+        ContactHistory history = list.wallHistory.get(k);
         const double overlap = p.radius[i] - distance;
         const Vec3 contactPoint = p.position[i] - (p.radius[i] - 0.5 * overlap) * wall.normal;
         const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
@@ -161,6 +163,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
             touch(i, wallIndex, c, arms, history, law, p.radius[i], list.wallPairs[k].wall);
         else
             apart(i, wallIndex, c, arms, history, law);
+        list.wallHistory.set(k, history);
     }
 }
 

@@ -1,7 +1,8 @@
-// Per-contact memory, stored with the pair list (Contacts/PairList.h): 32 bytes a listed pair.
+// Per-contact memory, stored with the pair list (Contacts/PairList.h): 25 bytes a listed pair.
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "Math/Vector.h"
 
@@ -23,6 +24,32 @@ struct ContactHistory {
     double& approachSpeed() { return spring.y(); }
     double& overlapBefore() { return spring.z(); }
     bool operator==(const ContactHistory&) const = default;
+};
+
+// The histories of a list of pairs, stored field by field: the force loop reads the state of
+// every listed pair each step but the spring only of the few that touch or are about to, so the
+// states are kept apart, one byte each.
+class ContactHistories {
+public:
+    std::size_t size() const { return states_.size(); }
+    ContactHistory::State state(std::size_t k) const { return states_[k]; }
+    ContactHistory get(std::size_t k) const { return {springs_[k], states_[k]}; }
+    void set(std::size_t k, const ContactHistory& h) {
+        springs_[k] = h.spring;
+        states_[k] = h.state;
+    }
+    void assign(std::size_t n) {
+        springs_.assign(n, Vec3::Zero());
+        states_.assign(n, ContactHistory::apart);
+    }
+    void push_back(const ContactHistory& h) {
+        springs_.push_back(h.spring);
+        states_.push_back(h.state);
+    }
+
+private:
+    std::vector<Vec3> springs_;
+    std::vector<ContactHistory::State> states_;
 };
 
 }  // namespace talus

@@ -54,13 +54,14 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     std::vector<CarriedHistory> carried;
     const std::uint64_t wallKey = ~std::uint64_t{0};
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-        if (!worthCarrying(history[k])) continue;
+        const ContactHistory h = history.get(k);
+        if (!worthCarrying(h)) continue;
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        carried.push_back(a < b ? CarriedHistory{a, b, history[k]} : CarriedHistory{b, a, reversed(history[k])});
+        carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
     }
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (worthCarrying(wallHistory[k]))
-            carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory[k]});
+        if (worthCarrying(wallHistory.get(k)))
+            carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory.get(k)});
     std::sort(carried.begin(), carried.end());
     auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedHistory* {
         auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{a, b, {}});
@@ -71,11 +72,11 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     pairs.clear();
     reach = skin + 2 * maxSpeed * dt;
     grid.findPairs(particles, domain, reach, pairs);
-    history.assign(pairs.size(), ContactHistory{});
+    history.assign(pairs.size());
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
         if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
-            history[k] = a < b ? c->history : reversed(c->history);
+            history.set(k, a < b ? c->history : reversed(c->history));
     }
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
@@ -85,10 +86,10 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
                 continue;
             wallPairs.push_back({i, w});
         }
-    wallHistory.assign(wallPairs.size(), ContactHistory{});
+    wallHistory.assign(wallPairs.size());
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
         if (const CarriedHistory* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall))
-            wallHistory[k] = c->history;
+            wallHistory.set(k, c->history);
 
     referencePosition = particles.position;
     valid = true;

@@ -29,9 +29,9 @@ struct WallCandidate {
 class PairList {
 public:
     std::vector<ParticlePair> pairs;
-    std::vector<ContactHistory> history;  // history[k] belongs to pairs[k]
+    ContactHistories history;  // history.get(k) belongs to pairs[k]
     std::vector<WallCandidate> wallPairs;
-    std::vector<ContactHistory> wallHistory;
+    ContactHistories wallHistory;
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
     double reach = 0;  // skin + 2 vmax dt at the last build

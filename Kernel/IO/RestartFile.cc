@@ -218,11 +218,11 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
-            writeHistory(w, l.history[k]);
+            writeHistory(w, l.history.get(k));
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
-            writeHistory(w, l.wallHistory[k]);
+            writeHistory(w, l.wallHistory.get(k));
         }
         for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
         std::ostringstream random;
