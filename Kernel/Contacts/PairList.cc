@@ -10,9 +10,13 @@ namespace talus {
 bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {
     double maxDisplacement2 = 0, maxSpeed2 = 0;
     const bool compare = valid && referencePosition.size() == particles.size();
+    const PeriodicImage image(domain);
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& x = particles.position[i];
-        if (!isFinite(x) || !isFinite(particles.velocity[i])) {
+        const double speed2 = particles.velocity[i].squaredNorm();
+        // One comparison catches NaN and infinity in any component of x or v (the sum is then not
+        // below infinity); huge finite values whose squares overflow are blow-ups too.
+        if (!(speed2 + x.squaredNorm() < INFINITY)) [[unlikely]] {
             std::ostringstream message;
             message << "blow-up at t = " << time << ": particle id " << particles.id[i]
                     << " has a non-finite position or velocity (" << x.transpose() << "; "
@@ -20,8 +24,8 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
                     << "); the time step may be too large for the stiffest contact";
             throw Error(message.str());
         }
-        maxSpeed2 = std::max(maxSpeed2, particles.velocity[i].squaredNorm());
-        if (compare) maxDisplacement2 = std::max(maxDisplacement2, domain.nearestImage(x - referencePosition[i]).squaredNorm());
+        maxSpeed2 = std::max(maxSpeed2, speed2);
+        if (compare) maxDisplacement2 = std::max(maxDisplacement2, image.nearest(x - referencePosition[i]).squaredNorm());
     }
     maxSpeed = std::sqrt(maxSpeed2);
     return !compare || std::sqrt(maxDisplacement2) + maxSpeed * dt >= 0.5 * reach;
