@@ -33,20 +33,13 @@ struct Domain {
         }
     }
 
-    // Nearest periodic image of a separation d = xi - xj of two wrapped positions.
-    Vec3 nearestImage(Vec3 d) const {
-        for (int a = 0; a < 3; ++a) {
-            if (!periodic[a]) continue;
-            const double L = length(a);
-            if (d[a] > 0.5 * L) d[a] -= L;
-            else if (d[a] < -0.5 * L) d[a] += L;
-        }
-        return d;
-    }
+    // Nearest periodic image of a separation d = xi - xj of two wrapped positions (PeriodicImage,
+    // which loops that call it many times keep).
+    Vec3 nearestImage(const Vec3& d) const;
 };
 
 // The nearest image of separations along the periodic axes of a domain, with the box lengths
-// read once (for the force loop, where Domain::nearestImage would reload them for every pair).
+// read once (for the force loop and the neighbour search, which need it for every pair).
 class PeriodicImage {
 public:
     explicit PeriodicImage(const Domain& domain) {
@@ -66,5 +59,7 @@ public:
 private:
     double length_[3], half_[3];
 };
+
+inline Vec3 Domain::nearestImage(const Vec3& d) const { return PeriodicImage(*this).nearest(d); }
 
 }  // namespace talus

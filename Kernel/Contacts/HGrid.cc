@@ -94,6 +94,7 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
             entries_[fill[bucket[i]]++] = {static_cast<std::uint32_t>(i), cells[i][0], cells[i][1], cells[i][2], levelOf_[i]};
     }
 
+    const PeriodicImage image(domain);
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3& xi = particles.position[i];
         const double di = 2 * particles.radius[i] + skin;
@@ -133,7 +134,7 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
                             if (l == levelOf_[i] && j <= i) continue;
                             if (fixedI && particles.fixed[j]) continue;
                             const double reachIJ = 0.5 * (di + 2 * particles.radius[j] + skin);
-                            const Vec3 d = domain.nearestImage(xi - particles.position[j]);
+                            const Vec3 d = image.nearest(xi - particles.position[j]);
                             if (d.squaredNorm() < reachIJ * reachIJ)
                                 pairs.push_back({static_cast<std::uint32_t>(i), j});
                         }
