@@ -354,7 +354,9 @@ void Simulation::checkTimeStep() const {
 
 void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOverlaps) {
     ParticleStore& p = state_.particles;
+    previousForce_.resize(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
+        previousForce_[i] = p.force[i];
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
         p.torque[i].setZero();
     }
@@ -365,7 +367,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
-                             state_.settings.timeStep, state_.pairList.maxSpeed, summary_, records);
+                             state_.settings.timeStep, state_.pairList.maxSpeed, previousForce_, summary_, records);
         },
         laws_);
     if (records) {

@@ -126,6 +126,7 @@ private:
     ContactSummary summary_;
     double elasticEnergy_ = 0;
     std::vector<ContactRecord> records_;
+    std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
     std::unique_ptr<CommandLine> commandLine_;
     std::unique_ptr<OutputFiles> files_;
     RunStatistics lastRun_;

@@ -221,7 +221,7 @@ TEST(RestartFile, AwkwardNumbersReadBackBitwise) {
     p.motion = {-1, -1};
     state.nextId = 42;
     state.pairList.pairs = {{0, 1}};
-    state.pairList.history.push_back(ContactHistory{Vec3(1e-12 / 3, -0.0, 5e-324), ContactHistory::touching});
+    state.pairList.history.push_back(ContactHistory{Vec3(1e-12 / 3, -0.0, 5e-324), -1e-300 / 3, ContactHistory::touching});
     state.pairList.referencePosition = p.position;
     state.pairList.skin = 0.01 / 3;
     const std::string path = "restartfile_awkward.restart";

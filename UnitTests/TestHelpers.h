@@ -91,7 +91,7 @@ bool sameBits(Integer a, Integer b) {
     return a == b;
 }
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
-    return sameBits(a.spring, b.spring) && a.state == b.state;
+    return sameBits(a.spring, b.spring) && sameBits(a.lastNormalForce, b.lastNormalForce) && a.state == b.state;
 }
 inline bool sameBits(const ContactHistories& a, const ContactHistories& b) {
     if (a.size() != b.size()) return false;

@@ -61,7 +61,8 @@ inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
-                      double dt, double maxSpeed, ContactSummary& summary, std::vector<ContactRecord>* records) {
+                      double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
+                      std::vector<ContactRecord>* records) {
     // Force and torque on i (and j, unless it is a wall) of one contact, or of the separation
     // impulse of a pair that stopped touching during the last step. The torques are
     // bij x f = -armI n x f and -bji x f = -armJ n x f.
@@ -81,6 +82,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
                      std::uint64_t idB) [[gnu::always_inline]] {
         const ContactForce f = law.force(c, history, dt);
         history.state = ContactHistory::touching;
+        history.lastNormalForce = f.normalForce;
         apply(i, j, f, c.normal, arms);
         ++summary.contacts;
         if (c.overlap > summary.maxOverlapFraction * smallerRadius) {
@@ -97,12 +99,16 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
     // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
     auto apart = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
                      ContactHistory& history, const Law& law) {
+        double normalForce = 0;
         if (history.isTouching()) {
-            apply(i, j, law.separationForce(c, history, dt), c.normal, arms);
+            const ContactForce f = law.separationForce(c, history, dt);
+            apply(i, j, f, c.normal, arms);
+            normalForce = f.normalForce;
             history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
         }
         const double push = law.approachForce(c, history, dt);
         if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
+        history.lastNormalForce = normalForce + push;
     };
     // A pair apart by more than reach + (largest closing speed) dt, with nothing pending, needs
     // no work this step.
@@ -127,7 +133,11 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
                                                 p.velocity[i] - p.velocity[j], p.angularVelocity[i],
                                                 p.angularVelocity[j], arms);
         c.distance = distance;
-        c.reducedMass = 1.0 / (p.invMass[i] + p.invMass[j]);
+        const double inverseMassSum = p.invMass[i] + p.invMass[j];
+        c.reducedMass = 1.0 / inverseMassSum;
+        // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
+        c.otherAcceleration = previousForce[i].dot(c.normal) * p.invMass[i] -
+                              previousForce[j].dot(c.normal) * p.invMass[j] - history.lastNormalForce * inverseMassSum;
         if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
         const Law& law = laws(p.species[i], p.species[j]);
         if (touching)
@@ -156,6 +166,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
                                                 p.angularVelocity[i], Vec3::Zero(), arms);
         c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
         c.reducedMass = p.mass[i];
+        c.otherAcceleration = (previousForce[i].dot(c.normal) - history.lastNormalForce) * p.invMass[i];
         c.effectiveRadius = p.radius[i];
         const Law& law = laws(p.species[i], wall.species);
         const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;

@@ -1,4 +1,4 @@
-// Per-contact memory, stored with the pair list (Contacts/PairList.h): 25 bytes a listed pair.
+// Per-contact memory, stored with the pair list (Contacts/PairList.h): 33 bytes a listed pair.
 #pragma once
 
 #include <cstdint>
@@ -8,14 +8,16 @@
 
 namespace talus {
 
-// What a pair remembers from step to step: whether it touches, and the tangential spring of
-// SPEC.md 1. A pair that is apart but will touch within the next step is "approaching"
+// What a pair remembers from step to step: whether it touches, the tangential spring of
+// SPEC.md 1, and the normal force it applied at the last step (to tell its own part of the
+// particles' last forces from the rest, ContactKinematics::otherAcceleration). A pair that is apart but will touch within the next step is "approaching"
 // (LinearSpringDashpot::approachForce); it has no spring then, and the same three numbers hold
 // the push applied ahead of the touch, the approach speed and the overlap (minus the gap) then.
 struct ContactHistory {
     enum State : std::uint8_t { apart = 0, approaching = 1, touching = 2 };
 
     Vec3 spring = Vec3::Zero();
+    double lastNormalForce = 0;  // the normal force the pair applied at the last step
     State state = apart;
 
     bool isTouching() const { return state == touching; }
@@ -33,22 +35,26 @@ class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }
     ContactHistory::State state(std::size_t k) const { return states_[k]; }
-    ContactHistory get(std::size_t k) const { return {springs_[k], states_[k]}; }
+    ContactHistory get(std::size_t k) const { return {springs_[k], lastNormalForces_[k], states_[k]}; }
     void set(std::size_t k, const ContactHistory& h) {
         springs_[k] = h.spring;
+        lastNormalForces_[k] = h.lastNormalForce;
         states_[k] = h.state;
     }
     void assign(std::size_t n) {
         springs_.assign(n, Vec3::Zero());
+        lastNormalForces_.assign(n, 0);
         states_.assign(n, ContactHistory::apart);
     }
     void push_back(const ContactHistory& h) {
         springs_.push_back(h.spring);
+        lastNormalForces_.push_back(h.lastNormalForce);
         states_.push_back(h.state);
     }
 
 private:
     std::vector<Vec3> springs_;
+    std::vector<double> lastNormalForces_;
     std::vector<ContactHistory::State> states_;
 };
 

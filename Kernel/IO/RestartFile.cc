@@ -156,13 +156,14 @@ ContactLaw readLaw(Reader& r) {
 }
 
 void writeHistory(Writer& w, const ContactHistory& h) {
-    w << h.spring << std::uint64_t(h.state);
+    w << h.spring << h.lastNormalForce << std::uint64_t(h.state);
     w.end();
 }
 
 ContactHistory readHistory(Reader& r) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
+    h.lastNormalForce = r.real("last normal force");
     h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::touching));
     return h;
 }

@@ -14,6 +14,10 @@ struct ContactKinematics {
     double normalVelocity;     // vij . n (negative while approaching)
     Vec3 tangentialVelocity;   // vt of SPEC.md 1, including the spin terms
     double reducedMass;        // mi mj / (mi + mj); mi for walls and fixed partners
+    // d(vij . n)/dt from all the other forces on the two particles, as of the last step (gravity,
+    // other contacts): what the implicit end-of-step speed of the dashpot must include, or a
+    // pair at rest under load would see a spurious speed and a spurious damping force.
+    double otherAcceleration = 0;
     double effectiveRadius;    // ri rj / (ri + rj); ri for walls
     double distance;           // |ri - rj| for particle pairs; 0 for walls (see updateSpring)
 };

@@ -93,7 +93,8 @@ struct HertzMindlin {
         // As for the linear law, the dashpot acts on the implicit end-of-step velocity.
         const double elastic = 2.0 / 3.0 * normalStiffness * k.overlap;
         const double halfStepOverMass = 0.5 * dt / k.reducedMass;
-        const double endVelocity = (k.normalVelocity + halfStepOverMass * elastic) / (1 + halfStepOverMass * normalDamping);
+        const double endVelocity = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
+                                   (1 + halfStepOverMass * normalDamping);
         advanceTangentialSpring(history.spring, k, dt);
         ContactForce f;
         f.normalForce = elastic - normalDamping * endVelocity;

@@ -86,7 +86,9 @@ struct LinearSpringDashpot {
     //    tau (f0 + f)/2 + tau^2 (f0' - f')/12, and the dashpot acts on the speed now,
     //    u0 + tau (f0 + f)/(2 m*), solved implicitly;
     //  - force, inside the contact: the force now, with the dashpot on the end-of-step speed
-    //    u(n+1) = u + dt/(2m*) f (implicit; plain velocity Verlet's half-step speed lags by dt/2);
+    //    u(n+1) = u + dt/2 (f/m* + a), implicit in f, where a is the acceleration the other forces
+    //    on the pair gave it at the last step (plain velocity Verlet's half-step speed lags by
+    //    dt/2; leaving a out would give a pair at rest under load a spurious damping force);
     //  - separationForce, first step apart: the impulse from the last contact step to the
     //    separation (found from the overlap, speed and force then), by the same Hermite rule,
     //    minus the f dt/2 + f' dt^2/6 that step counted on.
@@ -121,8 +123,8 @@ struct LinearSpringDashpot {
     }
 
     // The force of a touching pair. Inside a contact (the common case, kept small so that it is
-    // inlined into the force loop): the dashpot on the end-of-step speed, solved implicitly for the
-    // pair, u(n+1) = u + dt/(2m*) (kn dn - gn u(n+1)).
+    // inlined into the force loop): the dashpot on the end-of-step speed, solved implicitly,
+    // u(n+1) = u + dt/2 ((kn dn - gn u(n+1))/m* + a), a from the other forces on the pair.
     [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
         if (!treatContactEnds) [[unlikely]]
             return plainForce(k, history, dt);
@@ -130,8 +132,8 @@ struct LinearSpringDashpot {
             return firstContactForce(k, history, dt);
         const double halfStepOverMass = 0.5 * dt / k.reducedMass;
         const double elastic = normalStiffness * k.overlap;
-        const double speedNow =
-            (k.normalVelocity + halfStepOverMass * elastic) / (1 + halfStepOverMass * normalDamping);
+        const double speedNow = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
+                                (1 + halfStepOverMass * normalDamping);
         ContactForce f;
         f.normalForce = elastic - normalDamping * speedNow;
         advanceTangentialSpring(history.spring, k, dt);
@@ -184,14 +186,15 @@ struct LinearSpringDashpot {
 
     // Force on the first step after the pair separated (c.overlap = -gap < 0). The last contact
     // step's overlap, speed and force follow from the present ones, as velocity Verlet moved the
-    // pair: dn = -gap + u dt (the drift), u = u(n+1) + dt/(2m*) f (the half kick, f = kn dn - gn u
-    // for the pair alone); its tangential force from the spring it left.
+    // pair: dn = -gap + u dt (the drift), u = u(n+1) + dt/2 (f/m* + a) (the half kick,
+    // f = kn dn - gn u, a from the other forces); its tangential force from the spring it left.
     ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
         if (!treatContactEnds) return {0, Vec3::Zero()};
         const double m = c.reducedMass, halfStepOverMass = 0.5 * dt / m;
         const double lastOverlap = std::max(0.0, c.overlap + c.normalVelocity * dt);
-        const double lastSpeed = (c.normalVelocity - halfStepOverMass * normalStiffness * lastOverlap) /
-                                 (1 - halfStepOverMass * normalDamping);
+        const double lastSpeed =
+            (c.normalVelocity - 0.5 * dt * c.otherAcceleration - halfStepOverMass * normalStiffness * lastOverlap) /
+            (1 - halfStepOverMass * normalDamping);
         const double lastForce = normalStiffness * lastOverlap - normalDamping * lastSpeed;
         ContactForce f{0, Vec3::Zero()};
         if (c.normalVelocity <= 0) return f;
