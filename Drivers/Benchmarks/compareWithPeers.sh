@@ -75,12 +75,15 @@ echo "## Speed: mobile particle-steps per second, $steps steps, one core, interl
 echo
 echo "| round | LAMMPS | LIGGGHTS | Talus | Talus/LAMMPS | Talus/LIGGGHTS |"
 echo "|---|---|---|---|---|---|"
-rate_peer() { awk -v n=$steps '/^Loop time of/ {t+=$4} END {printf "%.4g", 3000 * n / t}' "$1"; }
+# The peers' logs give the loop time; the number of mobile particles is Talus's count of the same file.
+rate_peer() { awk -v n=$steps -v m="$2" '/^Loop time of/ {t+=$4} END {printf "%.4g", m * n / t}' "$1"; }
 for r in $(seq 1 "$rounds"); do
   (cd "$work/B_chute" && lmp -in in.chute.lammps -var data "$data" -var out ../runs/S_lammps_$r -var dumpevery 0 -var nsteps $steps -var nfirst $steps -log ../runs/S_lammps_$r.log >/dev/null)
   (cd "$work/B_chute" && liggghts -in in.chute.liggghts -var data "$data" -var out ../runs/S_liggghts_$r -var dumpevery 0 -var nsteps $steps -var nfirst $steps -log ../runs/S_liggghts_$r.log >/dev/null)
-  tal=$("$talus" --data "$data" --end-time "$endtime" --progress-interval 1e9 | sed -n 's/.*wall [^ ]* s  \([^ ]*\) particle-steps.*/\1/p')
-  lam=$(rate_peer "$work/runs/S_lammps_$r.log"); lig=$(rate_peer "$work/runs/S_liggghts_$r.log")
+  line=$("$talus" --data "$data" --end-time "$endtime" --progress-interval 1e9 | grep '^benchmark:')
+  tal=$(echo "$line" | sed -n 's/.*wall [^ ]* s  \([^ ]*\) particle-steps.*/\1/p')
+  flowing=$(echo "$line" | sed -n 's/.*flowing \([0-9]*\).*/\1/p')
+  lam=$(rate_peer "$work/runs/S_lammps_$r.log" "$flowing"); lig=$(rate_peer "$work/runs/S_liggghts_$r.log" "$flowing")
   awk -v r=$r -v a=$lam -v b=$lig -v c=$tal 'BEGIN {printf "| %d | %.4g | %.4g | %.4g | %.2f | %.2f |\n", r, a, b, c, c/a, c/b}'
 done
 echo
