@@ -58,124 +58,167 @@ inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double
     return c;
 }
 
+// The force loop over the listed pairs and wall candidates of one step, for one contact law.
+// Its parts are member functions so that the compiler inlines the common case (a pair inside a
+// contact) whole and keeps the rare ones (the ends of a contact, output records) out of the way.
+template <class Law>
+class ContactForceLoop {
+public:
+    ContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt, double maxSpeed,
+                     const std::vector<Vec3>& previousForce, ContactSummary& summary,
+                     std::vector<ContactRecord>* records)
+        : p_(p), laws_(laws), dt_(dt), closing_(2 * maxSpeed * dt), previousForce_(previousForce), summary_(summary),
+          records_(records) {}
+
+    void particlePairs(PairList& list, const Domain& domain) {
+        const PeriodicImage image(domain);
+        // Two passes: a branch-free sweep over all listed pairs picks those that need work
+        // (touching, about to touch within the next step, or just separated), then the contacts
+        // are computed for those alone.
+        std::vector<std::uint32_t>& active = list.activeScratch;
+        active.resize(list.pairs.size());
+        std::size_t activeCount = 0;
+        for (std::size_t k = 0; k < list.pairs.size(); ++k) {
+            const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
+            const Vec3 d = image.nearest(p_.position[i] - p_.position[j]);
+            const double limit = p_.radius[i] + p_.radius[j] + closing_;
+            active[activeCount] = static_cast<std::uint32_t>(k);
+            activeCount += (d.squaredNorm() < limit * limit) | (list.history.state(k) != ContactHistory::apart);
+        }
+        for (std::size_t a = 0; a < activeCount; ++a) {
+            const std::size_t k = active[a];
+            const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
+            const Vec3 d = image.nearest(p_.position[i] - p_.position[j]);
+            const double sumR = p_.radius[i] + p_.radius[j];
+            const double r2 = d.squaredNorm();
+            const bool touching = r2 < sumR * sumR;
+            ContactHistory history = list.history.get(k);
+            const double distance = std::sqrt(r2);
+            Arms arms;
+            ContactKinematics c = contactKinematics(d * (1 / distance), sumR - distance, p_.radius[i], p_.radius[j],
+                                                    p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
+                                                    p_.angularVelocity[j], arms);
+            c.distance = distance;
+            const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
+            c.reducedMass = 1.0 / inverseMassSum;
+            // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
+            c.otherAcceleration = previousForce_[i].dot(c.normal) * p_.invMass[i] -
+                                  previousForce_[j].dot(c.normal) * p_.invMass[j] -
+                                  history.lastNormalForce * inverseMassSum;
+            if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+            const Law& law = laws_(p_.species[i], p_.species[j]);
+            if (touching)
+                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]), p_.id[j]);
+            else
+                apart(i, j, c, arms, history, law);
+            list.history.set(k, history);
+        }
+    }
+
+    void wallPairs(PairList& list, const std::vector<PlaneWall>& walls, const std::vector<PrescribedMotion>& motions) {
+        for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
+            const std::uint32_t i = list.wallPairs[k].particle;
+            const PlaneWall& wall = walls[list.wallPairs[k].wall];
+            const double distance = wall.signedDistance(p_.position[i]);
+            const bool touching = distance < p_.radius[i];
+            // (A moving wall may close in faster than the particles: no shortcut for it.)
+            if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
+                distance - p_.radius[i] >= closing_)
+                continue;
+            ContactHistory history = list.wallHistory.get(k);
+            const double overlap = p_.radius[i] - distance;
+            const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * wall.normal;
+            const Vec3 wallVelocity =
+                wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
+            Arms arms;
+            ContactKinematics c = contactKinematics(wall.normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
+                                                    p_.angularVelocity[i], Vec3::Zero(), arms);
+            c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
+            c.reducedMass = p_.mass[i];
+            c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
+            c.effectiveRadius = p_.radius[i];
+            const Law& law = laws_(p_.species[i], wall.species);
+            const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
+            if (touching)
+                touch(i, wallIndex, c, arms, history, law, p_.radius[i], list.wallPairs[k].wall);
+            else
+                apart(i, wallIndex, c, arms, history, law);
+            list.wallHistory.set(k, history);
+        }
+    }
+
+private:
+    // Force and torque on i (and j, unless it is a wall, j < 0) of one contact, or of the
+    // separation impulse of a pair that stopped touching during the last step. The torques are
+    // bij x f = -armI n x f and -bji x f = -armJ n x f.
+    [[gnu::always_inline]] void apply(std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n,
+                                      const Arms& arms) {
+        const Vec3 force = f.normalForce * n + f.tangentialForce;
+        const Vec3 turn = n.cross(f.tangentialForce);  // n x force
+        p_.force[i] += force;
+        p_.torque[i] -= arms.i * turn;
+        if (j >= 0) {
+            p_.force[j] -= force;
+            p_.torque[j] -= arms.j * turn;
+        }
+    }
+
+    [[gnu::always_inline]] void touch(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
+                                      ContactHistory& history, const Law& law, double smallerRadius,
+                                      std::uint64_t idB) {
+        const ContactForce f = law.force(c, history, dt_);
+        history.state = ContactHistory::touching;
+        history.lastNormalForce = f.normalForce;
+        apply(i, j, f, c.normal, arms);
+        ++summary_.contacts;
+        if (c.overlap > summary_.maxOverlapFraction * smallerRadius) [[unlikely]] {
+            summary_.maxOverlapFraction = c.overlap / smallerRadius;
+            summary_.worstA = p_.id[i];
+            summary_.worstB = idB;
+            summary_.worstIsWall = j < 0;
+        }
+        if (records_) [[unlikely]]
+            record(i, j, c, arms, history, law, f);
+    }
+
+    [[gnu::noinline]] void record(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
+                                  const ContactHistory& history, const Law& law, const ContactForce& f) {
+        records_->push_back({i, j, p_.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(),
+                             f.normalForce, c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
+    }
+
+    // Apart now: a pair that stopped touching during the last step gets its separation impulse,
+    // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
+    [[gnu::noinline]] void apart(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
+                                 ContactHistory& history, const Law& law) {
+        double normalForce = 0;
+        if (history.isTouching()) {
+            const ContactForce f = law.separationForce(c, history, dt_);
+            apply(i, j, f, c.normal, arms);
+            normalForce = f.normalForce;
+            history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
+        }
+        const double push = law.approachForce(c, history, dt_);
+        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
+        history.lastNormalForce = normalForce + push;
+    }
+
+    ParticleStore& p_;
+    const PairTable<Law>& laws_;
+    const double dt_, closing_;
+    const std::vector<Vec3>& previousForce_;
+    ContactSummary& summary_;
+    std::vector<ContactRecord>* records_;
+};
+
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
                       std::vector<ContactRecord>* records) {
-    // Force and torque on i (and j, unless it is a wall) of one contact, or of the separation
-    // impulse of a pair that stopped touching during the last step. The torques are
-    // bij x f = -armI n x f and -bji x f = -armJ n x f.
-    auto apply = [&p](std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n,
-                      const Arms& arms) [[gnu::always_inline]] {
-        const Vec3 force = f.normalForce * n + f.tangentialForce;
-        const Vec3 turn = n.cross(f.tangentialForce);  // n x force
-        p.force[i] += force;
-        p.torque[i] -= arms.i * turn;
-        if (j >= 0) {
-            p.force[j] -= force;
-            p.torque[j] -= arms.j * turn;
-        }
-    };
-    auto touch = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                     ContactHistory& history, const Law& law, double smallerRadius,
-                     std::uint64_t idB) [[gnu::always_inline]] {
-        const ContactForce f = law.force(c, history, dt);
-        history.state = ContactHistory::touching;
-        history.lastNormalForce = f.normalForce;
-        apply(i, j, f, c.normal, arms);
-        ++summary.contacts;
-        if (c.overlap > summary.maxOverlapFraction * smallerRadius) {
-            summary.maxOverlapFraction = c.overlap / smallerRadius;
-            summary.worstA = p.id[i];
-            summary.worstB = idB;
-            summary.worstIsWall = j < 0;
-        }
-        if (records)
-            records->push_back({i, j, p.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(), f.normalForce,
-                                c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
-    };
-    // Apart now: a pair that stopped touching during the last step gets its separation impulse,
-    // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
-    auto apart = [&](std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                     ContactHistory& history, const Law& law) {
-        double normalForce = 0;
-        if (history.isTouching()) {
-            const ContactForce f = law.separationForce(c, history, dt);
-            apply(i, j, f, c.normal, arms);
-            normalForce = f.normalForce;
-            history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
-        }
-        const double push = law.approachForce(c, history, dt);
-        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
-        history.lastNormalForce = normalForce + push;
-    };
-    // A pair apart by more than reach + (largest closing speed) dt, with nothing pending, needs
-    // no work this step.
-    const double closing = 2 * maxSpeed * dt;
-    auto farApart = [closing](ContactHistory::State state, double distanceSquared, double reach) {
-        const double limit = reach + closing;
-        return state == ContactHistory::apart && distanceSquared >= limit * limit;
-    };
-
-    const PeriodicImage image(domain);
-    for (std::size_t k = 0; k < list.pairs.size(); ++k) {
-        const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
-        const Vec3 d = image.nearest(p.position[i] - p.position[j]);
-        const double sumR = p.radius[i] + p.radius[j];
-        const double r2 = d.squaredNorm();
-        const bool touching = r2 < sumR * sumR;
-        if (!touching && farApart(list.history.state(k), r2, sumR)) continue;
-        ContactHistory history = list.history.get(k);
-        const double distance = std::sqrt(r2);
-        Arms arms;
-        ContactKinematics c = contactKinematics(d * (1 / distance), sumR - distance, p.radius[i], p.radius[j],
-                                                p.velocity[i] - p.velocity[j], p.angularVelocity[i],
-                                                p.angularVelocity[j], arms);
-        c.distance = distance;
-        const double inverseMassSum = p.invMass[i] + p.invMass[j];
-        c.reducedMass = 1.0 / inverseMassSum;
-        // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
-        c.otherAcceleration = previousForce[i].dot(c.normal) * p.invMass[i] -
-                              previousForce[j].dot(c.normal) * p.invMass[j] - history.lastNormalForce * inverseMassSum;
-        if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
-        const Law& law = laws(p.species[i], p.species[j]);
-        if (touching)
-            touch(i, j, c, arms, history, law, std::min(p.radius[i], p.radius[j]), p.id[j]);
-        else
-            apart(i, j, c, arms, history, law);
-        list.history.set(k, history);
-    }
-
-
-    for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
-        const std::uint32_t i = list.wallPairs[k].particle;
-        const PlaneWall& wall = walls[list.wallPairs[k].wall];
-        const double distance = wall.signedDistance(p.position[i]);
-        const bool touching = distance < p.radius[i];
-        // (A moving wall may close in faster than the particles: no shortcut for it.)
-        if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
-            distance - p.radius[i] >= closing)
-            continue;
-        ContactHistory history = list.wallHistory.get(k);
-        const double overlap = p.radius[i] - distance;
-        const Vec3 contactPoint = p.position[i] - (p.radius[i] - 0.5 * overlap) * wall.normal;
-        const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
-        Arms arms;
-        ContactKinematics c = contactKinematics(wall.normal, overlap, p.radius[i], 0, p.velocity[i] - wallVelocity,
-                                                p.angularVelocity[i], Vec3::Zero(), arms);
-        c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
-        c.reducedMass = p.mass[i];
-        c.otherAcceleration = (previousForce[i].dot(c.normal) - history.lastNormalForce) * p.invMass[i];
-        c.effectiveRadius = p.radius[i];
-        const Law& law = laws(p.species[i], wall.species);
-        const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
-        if (touching)
-            touch(i, wallIndex, c, arms, history, law, p.radius[i], list.wallPairs[k].wall);
-        else
-            apart(i, wallIndex, c, arms, history, law);
-        list.wallHistory.set(k, history);
-    }
+    ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records);
+    loop.particlePairs(list, domain);
+    loop.wallPairs(list, walls, motions);
 }
 
 }  // namespace talus

@@ -37,6 +37,7 @@ public:
     double reach = 0;  // skin + 2 vmax dt at the last build
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
     std::uint64_t builds = 0;
+    std::vector<std::uint32_t> activeScratch;  // the force loop's list of pairs that need work
 
     // True when some particle will have moved more than skin/2 since the last build by the end of
     // the next step (nearest-image displacement, so wrapping through a periodic face is not a
