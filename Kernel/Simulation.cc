@@ -1,5 +1,6 @@
 #include "Simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "IO/OutputFiles.h"
 #include "IO/Progress.h"
 #include "IO/RestartFile.h"
+#include "Particles/SpaceFillingCurve.h"
 
 namespace talus {
 
@@ -43,6 +45,8 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
     cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
            [this](const std::string& v) { setCellSizeRatio(CommandLine::toDouble("cell-size-ratio", v)); });
+    cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
+           [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("files", "on|off", "write any output files at all",
@@ -354,14 +358,16 @@ void Simulation::checkTimeStep() const {
 
 void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOverlaps) {
     ParticleStore& p = state_.particles;
+    PairList& list = state_.pairList;
+    const bool rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
+    if (rebuild && state_.settings.reorderParticles) reorderParticles();
     previousForce_.resize(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
         previousForce_[i] = p.force[i];
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
         p.torque[i].setZero();
     }
-    if (state_.pairList.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep))
-        state_.pairList.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
+    if (rebuild) list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     summary_ = ContactSummary{};
     if (records) records->clear();
     std::visit(
@@ -383,6 +389,28 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
           << "%); the contact is too soft for the impact speed, or the time step too large";
         throw Error(m.str());
     }
+}
+
+std::size_t Simulation::slotOf(std::uint64_t id) const {
+    const std::vector<std::uint64_t>& ids = state_.particles.id;
+    const auto it = std::find(ids.begin(), ids.end(), id);
+    require(it != ids.end(), "no particle has id " + std::to_string(id));
+    return static_cast<std::size_t>(it - ids.begin());
+}
+
+// Cells of the largest diameter: the particles of one cell and its neighbours, which make up most
+// listed pairs, end up close in memory.
+void Simulation::reorderParticles() {
+    ParticleStore& p = state_.particles;
+    double largest = 0;
+    for (double r : p.radius) largest = std::max(largest, r);
+    if (p.size() < 2 || largest <= 0) return;
+    const std::vector<std::size_t> order = spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest);
+    bool unchanged = true;
+    for (std::size_t k = 0; k < order.size() && unchanged; ++k) unchanged = order[k] == k;
+    if (unchanged) return;
+    p.permute(order);
+    state_.pairList.followPermutation(order);
 }
 
 void Simulation::moveWithPrescribedMotion() {

@@ -41,6 +41,9 @@ public:
     void setOutputInterval(double interval);
     void setSkin(double skin);
     void setCellSizeRatio(double ratio);  // of successive HGrid levels (Contacts/HGrid.h)
+    // Renew the particle order along a space-filling curve at neighbour-list rebuilds (default on;
+    // Particles/SpaceFillingCurve.h). Slots then change during a run: find a particle by its id.
+    void setParticleReordering(bool on) { state_.settings.reorderParticles = on; }
     void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
     RunSettings& settings() { return state_.settings; }
@@ -72,6 +75,9 @@ public:
 
     ParticleStore& particles() { return state_.particles; }
     const ParticleStore& particles() const { return state_.particles; }
+    // The current slot of the particle with global id `id` (ids count from 0 in the order of
+    // addParticle/addFixedParticle). A linear search: for drivers and tests, not inner loops.
+    std::size_t slotOf(std::uint64_t id) const;
     std::vector<PlaneWall>& walls() { return state_.walls; }
     std::vector<PrescribedMotion>& motions() { return state_.motions; }
     std::mt19937_64& random() { return state_.random; }
@@ -116,6 +122,7 @@ private:
     void computeForces(std::vector<ContactRecord>* records, bool checkOverlaps = true);
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
+    void reorderParticles();
     std::uint64_t saveEvery() const;
 
     using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;

@@ -24,6 +24,7 @@ struct RunSettings {
     double outputInterval = 0;     // simulated time between saved frames; 0: first and last only
     double skin = -1;              // neighbour-list skin; < 0: 0.2 x the smallest radius
     double cellSizeRatio = 2;      // of successive HGrid levels
+    bool reorderParticles = true;  // along a space-filling curve at list rebuilds (slots change)
     bool writeData = true, writeFstat = true, writeEne = true, writeVtu = true, writeRestart = true;
     double progressInterval = 10;  // wall seconds between progress lines
     double maxOverlapFraction = 0.25;      // of the smaller radius, during the run

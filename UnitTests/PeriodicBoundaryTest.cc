@@ -47,10 +47,11 @@ PairState touchingPairAfterOneStep(const Vec3& middle) {
     s.solveOrThrow(test::stepsWithoutFiles(dt, 1));
     EXPECT_EQ(s.step(), 1u);
     PairState state;
-    for (int k = 0; k < 2; ++k) {
-        state.force[k] = s.particles().force[k];
-        state.torque[k] = s.particles().torque[k];
-        state.position[k] = s.particles().position[k];
+    for (int k = 0; k < 2; ++k) {  // by id: the slots follow the space-filling curve
+        const std::size_t slot = s.slotOf(k);
+        state.force[k] = s.particles().force[slot];
+        state.torque[k] = s.particles().torque[slot];
+        state.position[k] = s.particles().position[slot];
     }
     return state;
 }

@@ -100,4 +100,13 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     ++builds;
 }
 
+void PairList::followPermutation(const std::vector<std::size_t>& order) {
+    std::vector<std::uint32_t> newSlot(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) newSlot[order[k]] = static_cast<std::uint32_t>(k);
+    for (ParticlePair& pair : pairs) pair = {newSlot[pair.i], newSlot[pair.j]};
+    for (WallCandidate& candidate : wallPairs) candidate.particle = newSlot[candidate.particle];
+    referencePosition.clear();
+    valid = false;
+}
+
 }  // namespace talus

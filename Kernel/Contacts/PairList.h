@@ -52,6 +52,11 @@ public:
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
                  HGrid& grid, double dt);
+
+    // The particles were permuted (new slot k holds old slot order[k], ParticleStore::permute):
+    // the listed pairs and wall candidates follow their particles, so that a rebuild still finds
+    // their histories. The reference positions are dropped, which forces that rebuild.
+    void followPermutation(const std::vector<std::size_t>& order);
 };
 
 }  // namespace talus

@@ -13,7 +13,7 @@ namespace talus {
 
 namespace {
 
-constexpr int formatVersion = 1;
+constexpr int formatVersion = 2;  // 2: the run line ends with the reorder flag
 
 class Writer {
 public:
@@ -180,7 +180,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("Talus restart") << std::uint64_t(formatVersion); w.end();
         w.key("name") << c.name; w.end();
         w.key("run") << c.timeStep << c.endTime << c.outputInterval << c.skin << c.cellSizeRatio << c.progressInterval
-                     << c.maxOverlapFraction << c.maxInitialOverlapFraction; w.end();
+                     << c.maxOverlapFraction << c.maxInitialOverlapFraction << std::uint64_t(c.reorderParticles); w.end();
         w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
                        << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
         w.key("time") << s.time << s.step; w.end();
@@ -261,6 +261,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     c.progressInterval = r.real("progress interval");
     c.maxOverlapFraction = r.real("maximum overlap fraction");
     c.maxInitialOverlapFraction = r.real("maximum initial overlap fraction");
+    c.reorderParticles = r.flag("reorder flag");
     r.expect("files");
     c.writeData = r.flag("data flag");
     c.writeFstat = r.flag("fstat flag");
