@@ -78,6 +78,9 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     std::printf("[ measured ] settling: %d increases of %zu intervals, worst %.2e; E %.4f -> %.4f, final KE %.2e\n",
                 increases, totals.size() - 1, worstIncrease, totals.front(), totals.back(), final.kinetic);
     EXPECT_EQ(increases, 0) << "worst relative increase " << worstIncrease;
-    // It did settle: almost all of the initial energy above the final state is gone.
-    EXPECT_LT(final.kinetic, 1e-6 * (totals.front() - totals.back()));
+    // It did settle: almost all of the initial energy above the final state is gone. A frictionless
+    // packing keeps rearranging slowly for long (its energy still falling); trajectories that
+    // differ only by round-off ended at t = 20 with KE from 7e-8 to 6e-4, that is 1e-9 to 1e-5 of
+    // the energy dissipated, against a peak KE of 26.
+    EXPECT_LT(final.kinetic, 1e-4 * (totals.front() - totals.back()));
 }

@@ -93,14 +93,14 @@ public:
             const double r2 = d.squaredNorm();
             const bool touching = r2 < sumR * sumR;
             ContactHistory history = list.history.get(k);
-            const double distance = std::sqrt(r2);
+            const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
             Arms arms;
-            ContactKinematics c = contactKinematics(d * (1 / distance), sumR - distance, p_.radius[i], p_.radius[j],
+            ContactKinematics c = contactKinematics(d * inverseDistance, sumR - distance, p_.radius[i], p_.radius[j],
                                                     p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
                                                     p_.angularVelocity[j], arms);
-            c.distance = distance;
+            c.inverseDistance = inverseDistance;
             const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
-            c.reducedMass = 1.0 / inverseMassSum;
+            c.inverseReducedMass = inverseMassSum;
             // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
             c.otherAcceleration = previousForce_[i].dot(c.normal) * p_.invMass[i] -
                                   previousForce_[j].dot(c.normal) * p_.invMass[j] -
@@ -133,8 +133,8 @@ public:
             Arms arms;
             ContactKinematics c = contactKinematics(wall.normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
                                                     p_.angularVelocity[i], Vec3::Zero(), arms);
-            c.distance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
-            c.reducedMass = p_.mass[i];
+            c.inverseDistance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
+            c.inverseReducedMass = p_.invMass[i];
             c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
             c.effectiveRadius = p_.radius[i];
             const Law& law = laws_(p_.species[i], wall.species);

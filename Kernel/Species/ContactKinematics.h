@@ -13,13 +13,15 @@ struct ContactKinematics {
     Vec3 relativeVelocity;     // vij = vi - vj of the centres (walls: at the contact point)
     double normalVelocity;     // vij . n (negative while approaching)
     Vec3 tangentialVelocity;   // vt of SPEC.md 1, including the spin terms
-    double reducedMass;        // mi mj / (mi + mj); mi for walls and fixed partners
+    double inverseReducedMass; // 1/mi + 1/mj; 1/mi for walls and fixed partners
     // d(vij . n)/dt from all the other forces on the two particles, as of the last step (gravity,
     // other contacts): what the implicit end-of-step speed of the dashpot must include, or a
     // pair at rest under load would see a spurious speed and a spurious damping force.
     double otherAcceleration = 0;
     double effectiveRadius;    // ri rj / (ri + rj); ri for walls
-    double distance;           // |ri - rj| for particle pairs; 0 for walls (see updateSpring)
+    double inverseDistance;    // 1 / |ri - rj| for particle pairs; 0 for walls (advanceTangentialSpring)
+
+    double reducedMass() const { return 1 / inverseReducedMass; }  // mi mj / (mi + mj)
 };
 
 struct ContactForce {
@@ -32,8 +34,8 @@ struct ContactForce {
 // keeps xi in the tangent plane as the contact rotates. A wall's normal only turns with the
 // wall, so there the spring is advanced with vt and projected back onto the tangent plane.
 [[gnu::always_inline]] inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, double dt) {
-    if (k.distance > 0) {
-        spring += dt * (k.tangentialVelocity - k.normal * (spring.dot(k.relativeVelocity) / k.distance));
+    if (k.inverseDistance > 0) {
+        spring += dt * (k.tangentialVelocity - k.normal * (spring.dot(k.relativeVelocity) * k.inverseDistance));
     } else {
         spring += dt * k.tangentialVelocity;
         spring -= k.normal * spring.dot(k.normal);

@@ -88,11 +88,11 @@ struct HertzMindlin {
         const double normalStiffness = 2 * effectiveYoungsModulus * contactRadius;   // Sn
         const double tangentialStiffness = 8 * effectiveShearModulus * contactRadius;  // St
         const double dampingFactor = -2 * std::sqrt(5.0 / 6.0) * beta();
-        const double normalDamping = dampingFactor * std::sqrt(normalStiffness * k.reducedMass);
-        const double tangentialDamping = dampingFactor * std::sqrt(tangentialStiffness * k.reducedMass);
+        const double normalDamping = dampingFactor * std::sqrt(normalStiffness * k.reducedMass());
+        const double tangentialDamping = dampingFactor * std::sqrt(tangentialStiffness * k.reducedMass());
         // As for the linear law, the dashpot acts on the implicit end-of-step velocity.
         const double elastic = 2.0 / 3.0 * normalStiffness * k.overlap;
-        const double halfStepOverMass = 0.5 * dt / k.reducedMass;
+        const double halfStepOverMass = 0.5 * dt * k.inverseReducedMass;
         const double endVelocity = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
                                    (1 + halfStepOverMass * normalDamping);
         advanceTangentialSpring(history.spring, k, dt);

@@ -113,7 +113,7 @@ struct LinearSpringDashpot {
         if (u < 0 && gap < -u * dt) {
             const double tau = dt - gap / -u;  // from the touch to the next step
             const double touchForce = -normalDamping * u;
-            const double touchRate = forceRate(touchForce, u, c.reducedMass);
+            const double touchRate = forceRate(touchForce, u, c.reducedMass());
             history.state = ContactHistory::approaching;
             history.pushAhead() = (touchForce * tau * tau / 2 + touchRate * tau * tau * tau / 6) / (dt * dt);
             history.approachSpeed() = u;
@@ -130,7 +130,7 @@ struct LinearSpringDashpot {
             return plainForce(k, history, dt);
         if (!history.isTouching()) [[unlikely]]
             return firstContactForce(k, history, dt);
-        const double halfStepOverMass = 0.5 * dt / k.reducedMass;
+        const double halfStepOverMass = 0.5 * dt * k.inverseReducedMass;
         const double elastic = normalStiffness * k.overlap;
         const double speedNow = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
                                 (1 + halfStepOverMass * normalDamping);
@@ -158,7 +158,7 @@ struct LinearSpringDashpot {
         }
         history.spring.setZero();
         // The speed now, u0 + tau (f0 + kn dn - gn u(now))/(2 m*), implicit in the dashpot.
-        const double sinceTouchOverMass = 0.5 * tau / k.reducedMass;
+        const double sinceTouchOverMass = 0.5 * tau / k.reducedMass();
         const double speedNow = (touchSpeed + sinceTouchOverMass * (-normalDamping * touchSpeed + elastic)) /
                                 (1 + sinceTouchOverMass * normalDamping);
         ContactForce f;
@@ -168,8 +168,8 @@ struct LinearSpringDashpot {
         const bool sliding = applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction,
                                                tangentialStiffness, tangentialDamping, k.tangentialVelocity);
         const double touchForce = -normalDamping * touchSpeed;
-        const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass);
-        const double rate = forceRate(f.normalForce, speedNow, k.reducedMass);
+        const double touchRate = forceRate(touchForce, touchSpeed, k.reducedMass());
+        const double rate = forceRate(f.normalForce, speedNow, k.reducedMass());
         const double sinceTouch = 0.5 * tau * (touchForce + f.normalForce) + tau * tau * (touchRate - rate) / 12;
         const double meanOverNextStep = sinceTouch + f.normalForce * dt / 2 + rate * dt * dt / 6;
         if (sliding) {  // |ft| = mu fn: the tangential impulse follows the normal one
@@ -190,7 +190,7 @@ struct LinearSpringDashpot {
     // f = kn dn - gn u, a from the other forces); its tangential force from the spring it left.
     ContactForce separationForce(const ContactKinematics& c, const ContactHistory& history, double dt) const {
         if (!treatContactEnds) return {0, Vec3::Zero()};
-        const double m = c.reducedMass, halfStepOverMass = 0.5 * dt / m;
+        const double m = c.reducedMass(), halfStepOverMass = 0.5 * dt / m;
         const double lastOverlap = std::max(0.0, c.overlap + c.normalVelocity * dt);
         const double lastSpeed =
             (c.normalVelocity - 0.5 * dt * c.otherAcceleration - halfStepOverMass * normalStiffness * lastOverlap) /
