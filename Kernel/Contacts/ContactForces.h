@@ -108,7 +108,7 @@ public:
             if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
             const Law& law = laws_(p_.species[i], p_.species[j]);
             if (touching)
-                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]), p_.id[j]);
+                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
             else
                 apart(i, j, c, arms, history, law);
             list.history.set(k, history);
@@ -140,7 +140,7 @@ public:
             const Law& law = laws_(p_.species[i], wall.species);
             const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
             if (touching)
-                touch(i, wallIndex, c, arms, history, law, p_.radius[i], list.wallPairs[k].wall);
+                touch(i, wallIndex, c, arms, history, law, p_.radius[i]);
             else
                 apart(i, wallIndex, c, arms, history, law);
             list.wallHistory.set(k, history);
@@ -164,8 +164,7 @@ private:
     }
 
     [[gnu::always_inline]] void touch(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                                      ContactHistory& history, const Law& law, double smallerRadius,
-                                      std::uint64_t idB) {
+                                      ContactHistory& history, const Law& law, double smallerRadius) {
         const ContactForce f = law.force(c, history, dt_);
         history.state = ContactHistory::touching;
         history.lastNormalForce = f.normalForce;
@@ -174,7 +173,7 @@ private:
         if (c.overlap > summary_.maxOverlapFraction * smallerRadius) [[unlikely]] {
             summary_.maxOverlapFraction = c.overlap / smallerRadius;
             summary_.worstA = p_.id[i];
-            summary_.worstB = idB;
+            summary_.worstB = j >= 0 ? p_.id[j] : static_cast<std::uint64_t>(-j - 1);  // wall index
             summary_.worstIsWall = j < 0;
         }
         if (records_) [[unlikely]]

@@ -55,7 +55,7 @@ struct ContactForce {
         return false;
     }
     tangentialForce *= limit / std::sqrt(ft2);
-    if (tangentialStiffness > 0) spring = -(tangentialForce + tangentialDamping * vt) / tangentialStiffness;
+    if (tangentialStiffness > 0) spring = (tangentialForce + tangentialDamping * vt) * (-1 / tangentialStiffness);
     return true;
 }
 
