@@ -92,12 +92,22 @@ public:
             const double sumR = p_.radius[i] + p_.radius[j];
             const double r2 = d.squaredNorm();
             const bool touching = r2 < sumR * sumR;
-            ContactHistory history = list.history.get(k);
             const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
+            const Vec3 n = d * inverseDistance, relativeVelocity = p_.velocity[i] - p_.velocity[j];
+            // Apart with nothing pending, and not closing the gap within the next step at the
+            // present speed: no force (approachForce would push nothing), and no work beyond
+            // noting that the pair applied no force this step.
+            if (!touching && list.history.state(k) == ContactHistory::apart) {
+                const double u = relativeVelocity.dot(n);
+                if (!(u < 0 && distance - sumR < -u * dt_)) {
+                    list.history.clearLastNormalForce(k);
+                    continue;
+                }
+            }
+            ContactHistory history = list.history.get(k);
             Arms arms;
-            ContactKinematics c = contactKinematics(d * inverseDistance, sumR - distance, p_.radius[i], p_.radius[j],
-                                                    p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
-                                                    p_.angularVelocity[j], arms);
+            ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j], relativeVelocity,
+                                                    p_.angularVelocity[i], p_.angularVelocity[j], arms);
             c.inverseDistance = inverseDistance;
             const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
             c.inverseReducedMass = inverseMassSum;

@@ -41,6 +41,7 @@ public:
         lastNormalForces_[k] = h.lastNormalForce;
         states_[k] = h.state;
     }
+    void clearLastNormalForce(std::size_t k) { lastNormalForces_[k] = 0; }
     void assign(std::size_t n) {
         springs_.assign(n, Vec3::Zero());
         lastNormalForces_.assign(n, 0);

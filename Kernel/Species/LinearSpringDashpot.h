@@ -104,7 +104,9 @@ struct LinearSpringDashpot {
     }
 
     // Normal force on a pair apart (c.overlap = -gap < 0): the push ahead of a touch within the
-    // next step, less the push of the last step, which is taken back.
+    // next step, less the push of the last step, which is taken back. Zero for a pair apart with
+    // no push pending that does not close its gap within dt at its present speed, which the
+    // force loop therefore skips (every law's approachForce must keep to that).
     double approachForce(const ContactKinematics& c, ContactHistory& history, double dt) const {
         if (!treatContactEnds) return 0;
         const double previous = history.isApproaching() ? history.pushAhead() : 0;
