@@ -120,7 +120,7 @@ public:
             if (touching)
                 touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
             else
-                apart(i, j, c, arms, history, law);
+                history = apart(i, j, c, arms, history, law);
             list.history.set(k, history);
         }
     }
@@ -152,7 +152,7 @@ public:
             if (touching)
                 touch(i, wallIndex, c, arms, history, law, p_.radius[i]);
             else
-                apart(i, wallIndex, c, arms, history, law);
+                history = apart(i, wallIndex, c, arms, history, law);
             list.wallHistory.set(k, history);
         }
     }
@@ -190,16 +190,17 @@ private:
             record(i, j, c, arms, history, law, f);
     }
 
-    [[gnu::noinline]] void record(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                                  const ContactHistory& history, const Law& law, const ContactForce& f) {
+    [[gnu::noinline]] void record(std::uint32_t i, std::int64_t j, ContactKinematics c, Arms arms,
+                                  ContactHistory history, const Law& law, ContactForce f) {
         records_->push_back({i, j, p_.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(),
                              f.normalForce, c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
     }
 
     // Apart now: a pair that stopped touching during the last step gets its separation impulse,
     // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
-    [[gnu::noinline]] void apart(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
-                                 ContactHistory& history, const Law& law) {
+    // (Everything by value, so that the caller's copies stay in registers; returns the new history.)
+    [[gnu::noinline]] ContactHistory apart(std::uint32_t i, std::int64_t j, ContactKinematics c, Arms arms,
+                                           ContactHistory history, const Law& law) {
         double normalForce = 0;
         if (history.isTouching()) {
             const ContactForce f = law.separationForce(c, history, dt_);
@@ -210,6 +211,7 @@ private:
         const double push = law.approachForce(c, history, dt_);
         if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
         history.lastNormalForce = normalForce + push;
+        return history;
     }
 
     ParticleStore& p_;

@@ -128,10 +128,11 @@ struct LinearSpringDashpot {
     // inlined into the force loop): the dashpot on the end-of-step speed, solved implicitly,
     // u(n+1) = u + dt/2 ((kn dn - gn u(n+1))/m* + a), a from the other forces on the pair.
     [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+        // (The rare cases get copies, so that k and history never leave registers on the common path.)
         if (!treatContactEnds) [[unlikely]]
-            return plainForce(k, history, dt);
+            return coldCall(&LinearSpringDashpot::plainForce, k, history, dt);
         if (!history.isTouching()) [[unlikely]]
-            return firstContactForce(k, history, dt);
+            return coldCall(&LinearSpringDashpot::firstContactForce, k, history, dt);
         const double halfStepOverMass = 0.5 * dt * k.inverseReducedMass;
         const double elastic = normalStiffness * k.overlap;
         const double speedNow = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
@@ -245,6 +246,14 @@ struct LinearSpringDashpot {
         f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
         applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
                           tangentialDamping, k.tangentialVelocity);
+        return f;
+    }
+
+    template <class Member>
+    ContactForce coldCall(Member member, ContactKinematics k, ContactHistory& history, double dt) const {
+        ContactHistory copy = history;
+        const ContactForce f = (this->*member)(k, copy, dt);
+        history = copy;
         return f;
     }
 
