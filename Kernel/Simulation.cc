@@ -94,10 +94,43 @@ void Simulation::setFileOutput(bool on) {
 void Simulation::addFlag(const std::string& name, const std::string& help, double& value) {
     commandLine_->add(name, "X", help + " (default " + str(value) + ")",
                       [&value, name](const std::string& v) { value = CommandLine::toDouble(name, v); });
+    keepInRestart("flag." + name, value);
 }
 void Simulation::addFlag(const std::string& name, const std::string& help, int& value) {
     commandLine_->add(name, "N", help + " (default " + std::to_string(value) + ")",
                       [&value, name](const std::string& v) { value = CommandLine::toInt(name, v); });
+    keepInRestart("flag." + name, value);
+}
+
+void Simulation::keepInRestart(const std::string& name, double& value) { addKept({name, &value, nullptr}); }
+void Simulation::keepInRestart(const std::string& name, int& value) { addKept({name, nullptr, &value}); }
+
+void Simulation::addKept(KeptValue value) {
+    require(!value.name.empty() && value.name.find_first_of(" \t\n") == std::string::npos,
+            "keepInRestart: the name must be one word, got '" + value.name + "'");
+    for (const KeptValue& k : kept_)
+        require(k.name != value.name, "keepInRestart: the name '" + value.name + "' is taken");
+    kept_.push_back(std::move(value));
+}
+
+void Simulation::saveKeptValues() {
+    state_.keptValues.clear();
+    for (const KeptValue& k : kept_) state_.keptValues.emplace_back(k.name, k.real ? *k.real : *k.integer);
+}
+
+// Every kept value must be in the file: a restart file of another driver (or of an older build
+// of this one) would otherwise continue with values that were never saved.
+void Simulation::restoreKeptValues(const std::string& restartFile) {
+    for (const KeptValue& k : kept_) {
+        const auto it = std::find_if(state_.keptValues.begin(), state_.keptValues.end(),
+                                     [&k](const auto& saved) { return saved.first == k.name; });
+        require(it != state_.keptValues.end(),
+                restartFile + ": no value '" + k.name + "' (a restart file of another driver?)");
+        if (k.real)
+            *k.real = it->second;
+        else
+            *k.integer = static_cast<int>(it->second);
+    }
 }
 
 void Simulation::addTextFlag(const std::string& name, const std::string& help, std::string& value) {
@@ -217,9 +250,10 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         return;
     }
     const std::string restartFile = restartFile_;
-    if (!restartFile.empty())
+    if (!restartFile.empty()) {
         readRestartFile(restartFile, state_);
-    else
+        restoreKeptValues(restartFile);
+    } else
         setupInitialConditions();
     // The command line has the last word: over the settings of the restart file, and over run
     // settings that setupInitialConditions may have made.
@@ -465,6 +499,7 @@ void Simulation::integrate(bool recordContacts) {
 void Simulation::writeOutput() {
     if (!files_) return;
     files_->writeFrame(state_, records_, elasticEnergy_);
+    saveKeptValues();
     files_->writeRestart(state_);
 }
 

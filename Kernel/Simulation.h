@@ -52,6 +52,12 @@ public:
     void addFlag(const std::string& name, const std::string& help, double& value);
     void addFlag(const std::string& name, const std::string& help, int& value);
     void addTextFlag(const std::string& name, const std::string& help, std::string& value);
+    // A number of the driver's (or of a boundary it owns) that the restart file keeps: saved with
+    // every restart file and put back when the run restarts, before the command line is read
+    // again. Number flags (addFlag) are kept this way too, as "flag.NAME". Names are one word
+    // and unique.
+    void keepInRestart(const std::string& name, double& value);
+    void keepInRestart(const std::string& name, int& value);
 
     // --- the scene ---
     void setGravity(const Vec3& g) { state_.gravity = g; }
@@ -135,6 +141,15 @@ private:
     std::vector<ContactRecord> records_;
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
     std::unique_ptr<CommandLine> commandLine_;
+    struct KeptValue {
+        std::string name;
+        double* real = nullptr;
+        int* integer = nullptr;
+    };
+    std::vector<KeptValue> kept_;
+    void addKept(KeptValue value);
+    void saveKeptValues();
+    void restoreKeptValues(const std::string& restartFile);
     std::unique_ptr<OutputFiles> files_;
     RunStatistics lastRun_;
     std::string restartFile_;

@@ -53,6 +53,9 @@ struct SimulationState {
     std::mt19937_64 random{20260101};
     std::uint64_t nextId = 0;
     OutputProgress output;
+    // Values of the driver's that the restart file keeps (Simulation::keepInRestart, and every
+    // number flag of addFlag), by name, as they were at the save.
+    std::vector<std::pair<std::string, double>> keptValues;
 };
 
 }  // namespace talus

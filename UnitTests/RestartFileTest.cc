@@ -20,6 +20,7 @@ namespace {
 
 const double collisionTime = 0.01;
 const double timeStep = collisionTime / 50;
+const double sceneTimeStep = timeStep;  // (for classes with a timeStep() of their own)
 
 // A scene that uses every part of the state: three species with an explicit pair law and an
 // edited mixed pair, a static floor and a lid that moves and turns, fixed particles (one moving),
@@ -261,6 +262,52 @@ TEST(RestartFile, RestartedRunContinuesBitwise) {
     EXPECT_TRUE(restarted.pairList().pairs == uninterrupted.pairList().pairs);
     EXPECT_TRUE(sameBits(restarted.pairList().history, uninterrupted.pairList().history));
     EXPECT_TRUE(sameBits(restarted.pairList().wallHistory, uninterrupted.pairList().wallHistory));
+}
+
+// A driver's number flags and the values it keeps (Simulation::keepInRestart) come back on
+// restart; a flag given again on the command line wins; a restart file that lacks one of them is
+// refused, and names must be unique words.
+struct KeepingDriver : SceneSimulation {
+    double height = 1, counted = 0;
+    int layers = 2;
+    KeepingDriver() {
+        addFlag("height", "a number flag", height);
+        addFlag("layers", "an integer flag", layers);
+        keepInRestart("steps.counted", counted);
+        setup = [](SceneSimulation& s) {
+            s.setTimeStep(sceneTimeStep);
+            s.addSpecies("glass", 1, LinearSpringDashpot::fromCollision(collisionTime, 0.5, 0.5));
+            s.addParticle(Vec3::Zero(), 0.5, 0);
+        };
+        afterStep = [this](SceneSimulation&) { counted += 1; };
+    }
+};
+
+TEST(RestartFile, KeepsTheDriversFlagsAndValues) {
+    const std::string end10 = std::to_string(10 * timeStep), end20 = std::to_string(20 * timeStep);
+    KeepingDriver first;
+    first.solveOrThrow({"--name", "restartfile_kept", "--height", "2.5", "--layers", "7", "--end-time", end10,
+                        "--progress-interval", "1e9"});
+    ASSERT_EQ(first.counted, 10);
+
+    KeepingDriver restarted;
+    restarted.solveOrThrow({"--restart", "restartfile_kept.restart", "--end-time", end20, "--files", "off"});
+    EXPECT_EQ(restarted.height, 2.5);
+    EXPECT_EQ(restarted.layers, 7);
+    EXPECT_EQ(restarted.counted, 20);  // 10 kept, 10 more counted
+
+    KeepingDriver overridden;
+    overridden.solveOrThrow({"--restart", "restartfile_kept.restart", "--height", "4", "--end-time", end20, "--files", "off"});
+    EXPECT_EQ(overridden.height, 4);
+    EXPECT_EQ(overridden.layers, 7);
+
+    SceneSimulation other;
+    double unknown = 0;
+    other.keepInRestart("not.saved", unknown);
+    test::expectError([&] { other.solveOrThrow({"--restart", "restartfile_kept.restart", "--files", "off"}); },
+                      {"restartfile_kept.restart", "no value 'not.saved'"});
+    test::expectError([&] { other.keepInRestart("not.saved", unknown); }, {"'not.saved' is taken"});
+    test::expectError([&] { other.keepInRestart("two words", unknown); }, {"one word"});
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace talus {
 
 namespace {
 
-constexpr int formatVersion = 2;  // 2: the run line ends with the reorder flag
+constexpr int formatVersion = 3;  // 2: the run line ends with the reorder flag; 3: kept values
 
 class Writer {
 public:
@@ -232,6 +232,8 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("output") << s.output.savedFrames << s.output.dataBytes << s.output.fstatBytes << s.output.eneBytes
                         << std::uint64_t(s.output.frameTimes.size()); w.end();
         for (double t : s.output.frameTimes) { w.key("  ") << t; w.end(); }
+        w.key("values") << std::uint64_t(s.keptValues.size()); w.end();
+        for (const auto& [name, value] : s.keptValues) { w.key("  ") << name << value; w.end(); }
         w.key("end"); w.end();
         out.flush();
         if (!out) throw Error("error while writing restart file " + temporary);
@@ -382,6 +384,12 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     t.output.eneBytes = r.count("ene bytes");
     const auto frames = r.count("frame count", 1ull << 32);
     for (std::uint64_t k = 0; k < frames; ++k) t.output.frameTimes.push_back(r.real("frame time"));
+    r.expect("values");
+    const auto values = r.count("value count", 1ull << 20);
+    for (std::uint64_t k = 0; k < values; ++k) {
+        std::string name = r.token("value name");
+        t.keptValues.emplace_back(std::move(name), r.real("kept value"));
+    }
     r.expect("end");
     if (!r.atEnd()) r.fail("unexpected text after 'end'");
     s = std::move(t);
