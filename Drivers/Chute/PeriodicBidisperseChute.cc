@@ -1,0 +1,134 @@
+// The periodic calibration chute of SPEC.md 2 with the mixture of seed Table 3.C.1.
+//
+// Methods. A chute inclined at 24 degrees, periodic in x (length 20) and y (width 10), has a
+// disordered rough base of fixed spheres of diameter 1. 1000 large spheres (d = 1) and 2000
+// small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random above it and
+// flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with Coulomb
+// friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same e and
+// tc ~ sqrt(d) for every pair type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
+// 0.25 (SS), 0.375 (LS); the base is of the large material. dt = 1e-4.
+// Every time unit the run samples the kinetic energy and the mass flux; once both have been on
+// a plateau for the last 20 samples (the second half's mean within 2% of the first's) the flow
+// is steady, and from then on the run averages depth profiles and the flow's mean velocity,
+// height and flux, written at the end with their standard errors (NAME.profile, NAME.steady).
+// (The statistics are the driver's own: a restarted run starts them afresh.)
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <tuple>
+#include <vector>
+
+#include "Boundaries/InsertionBoundary.h"
+#include "Chute/Chute.h"
+#include "Chute/ChuteStatistics.h"
+#include "Species/BidisperseRule.h"
+
+using namespace talus;
+
+class PeriodicBidisperseChute : public Chute {
+public:
+    double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02;
+    int large = 1000, small = 2000, seed = 1, window = 20;
+
+    PeriodicBidisperseChute() {
+        addFlag("angle", "inclination in degrees", angle);
+        addFlag("length", "periodic length along x", length);
+        addFlag("width", "periodic width along y", width);
+        addFlag("large", "number of large spheres (d = 1)", large);
+        addFlag("small", "number of small spheres (d = 0.7937)", small);
+        addFlag("seed", "seed of the base and of the start positions", seed);
+        addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
+        addFlag("window", "samples on a plateau that make the flow steady", window);
+        addFlag("tolerance", "relative change of the plateau's half-window means", tolerance);
+    }
+
+    void setupInitialConditions() override {
+        require(large >= 0 && small >= 0 && large + small > 0, "--large and --small: at least one sphere");
+        setChuteAngle(angle);
+        setChuteGeometry({.length = length, .width = width, .height = 60, .periodicEnds = true});
+        // Seed Table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the others.
+        const LinearSpringDashpot largeLaw{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
+        const double density = 6 / pi;
+        largeSpecies_ = addSpecies("large", density, largeLaw);
+        smallSpecies_ = addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
+        applyBidisperseRule(species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
+                                        .smallDiameter = smallDiameter, .largeCollisionTime = largeLaw.collisionTime(0.5),
+                                        .restitution = largeLaw.restitution(0.5), .mixedFriction = 0.375});
+        addBase(ChuteBase::disordered, 1, largeSpecies_, static_cast<std::uint64_t>(seed));
+        // The spheres start at rest at random places in a loose layer above the base (packing
+        // fraction about 0.2, so the insertion never jams).
+        random().seed(static_cast<std::uint64_t>(seed));
+        const double volume = large * pi / 6 + small * pi / 6 * std::pow(smallDiameter, 3);
+        const double top = 1 + volume / (0.2 * length * width);
+        for (auto [count, species, diameter] : {std::tuple{large, largeSpecies_, 1.0}, {small, smallSpecies_, smallDiameter}}) {
+            InsertionBoundary box(Vec3(0, 0, 1), Vec3(length, width, top),
+                                  SizeDistribution::byNumber().add(species, diameter / 2));
+            const InsertionReport report = box.insertCount(*this, static_cast<std::size_t>(count));
+            std::printf("%s\n", report.describe().c_str());
+            require(report.complete, "could not place the start configuration: " + report.describe());
+        }
+        plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
+        profile_ = DepthProfile(0.25, 40, length, width, smallSpecies_);
+    }
+
+    void actionsAfterTimeStep() override {
+        // At the multiples of the sample interval (so also after a restart).
+        if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
+        const ChuteSnapshot s = measureChute(particles(), length, width, smallSpecies_, time());
+        // No sphere may pass through the base (its centres lie within +-0.25 of z = 0).
+        for (std::size_t i = 0; i < particles().size(); ++i)
+            if (!particles().fixed[i] && particles().position[i].z() < -0.5)
+                throw Error("particle id " + std::to_string(particles().id[i]) + " fell through the base (z = " +
+                            std::to_string(particles().position[i].z()) + " at t = " + std::to_string(time()) + ")");
+        if (!plateau_.steady()) {
+            if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}))
+                std::printf("%s: steady flow at t = %g (kinetic energy %.4g and mass flux %.4g per unit area and width "
+                            "on a plateau for %d samples)\n", name().c_str(), time(), s.kineticEnergy, s.massFlux, window);
+            return;
+        }
+        steadySamples_.push_back(s);
+        profile_.add(particles());
+    }
+
+    void actionsAfterSolve() override {
+        if (steadySamples_.empty()) {
+            std::printf("%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
+                        name().c_str(), time(), plateau_.samples());
+            return;
+        }
+        std::vector<double> velocity, height, flux, concentration;
+        for (const ChuteSnapshot& s : steadySamples_) {
+            velocity.push_back(s.meanVelocity);
+            height.push_back(s.height);
+            flux.push_back(s.massFlux);
+            concentration.push_back(s.smallConcentration);
+        }
+        const MeanAndError u = batchMean(velocity), h = batchMean(height), q = batchMean(flux);
+        profile_.write(name() + ".profile");
+        std::ofstream out(name() + ".steady");
+        out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
+            << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";
+        out << "meanVelocity " << u.mean << ' ' << u.error << "\nheight " << h.mean << ' ' << h.error << "\nmassFlux "
+            << q.mean << ' ' << q.error << '\n';
+        std::printf("%s: steady from t = %g; over %zu samples: mean velocity %.4f +- %.4f, height %.3f +- %.3f, "
+                    "mass flux %.4f +- %.4f (NAME.steady, depth profiles in NAME.profile)\n",
+                    name().c_str(), plateau_.steadySince(), steadySamples_.size(), u.mean, u.error, h.mean, h.error,
+                    q.mean, q.error);
+    }
+
+private:
+    static constexpr double smallDiameter = 0.79370052598409979;  // 2^(-1/3): half the volume
+    std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
+    PlateauDetector plateau_{20, 0.02};
+    std::vector<ChuteSnapshot> steadySamples_;
+    DepthProfile profile_{0.25, 40, 20, 10, 1};
+};
+
+int main(int argc, char** argv) {
+    PeriodicBidisperseChute chute;
+    chute.setName("PeriodicBidisperseChute");
+    chute.setTimeStep(1e-4);
+    chute.setEndTime(500);
+    chute.setOutputInterval(10);
+    return chute.solve(argc, argv);
+}

@@ -1,0 +1,50 @@
+#include "Boundaries/DeletionBoundary.h"
+
+#include <cmath>
+
+#include "Error.h"
+#include "Simulation.h"
+
+namespace talus {
+
+DeletionBoundary::DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
+                                   const std::string& name)
+    : speciesMass_(species, 0), speciesVolume_(species, 0) {
+    setPlane(normal, point);
+    s.keepInRestart(name + ".count", count_);
+    s.keepInRestart(name + ".mass", mass_);
+    s.keepInRestart(name + ".volume", volume_);
+    for (std::size_t k = 0; k < species; ++k) {
+        s.keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
+        s.keepInRestart(name + ".volume." + std::to_string(k), speciesVolume_[k]);
+    }
+}
+
+void DeletionBoundary::setPlane(const Vec3& normal, const Vec3& point) {
+    require(isFinite(normal) && normal.norm() > 0 && isFinite(point),
+            "deletion boundary: the plane needs a non-zero normal and a finite point");
+    normal_ = normal.normalized();
+    point_ = point;
+}
+
+std::size_t DeletionBoundary::apply(Simulation& s) {
+    const ParticleStore& p = s.particles();
+    std::size_t removed = 0;
+    // From the last slot down: removal moves the last particle into the freed slot.
+    for (std::size_t i = p.size(); i-- > 0;) {
+        if (p.fixed[i] || (p.position[i] - point_).dot(normal_) <= 0) continue;
+        const double volume = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
+        count_ += 1;
+        mass_ += p.mass[i];
+        volume_ += volume;
+        if (p.species[i] < speciesMass_.size()) {
+            speciesMass_[p.species[i]] += p.mass[i];
+            speciesVolume_[p.species[i]] += volume;
+        }
+        s.removeParticle(i);
+        ++removed;
+    }
+    return removed;
+}
+
+}  // namespace talus

@@ -1,0 +1,47 @@
+// Deletion: removes the mobile particles whose centre has passed a plane, and records what left
+// (the outflow end of an open chute, SPEC.md 2). The totals are kept in the restart file, so a
+// restarted run goes on counting (Simulation::keepInRestart).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "Math/Vector.h"
+
+namespace talus {
+
+class Simulation;
+
+class DeletionBoundary {
+public:
+    // Deletes particles with (x - point) . normal > 0. Construct it in the driver's constructor
+    // (it registers its totals with the simulation, as flags are); `name` prefixes the totals in
+    // the restart file and must be unique among the driver's boundaries; totals are kept per
+    // species for the first `species` species.
+    DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
+                     const std::string& name = "deletion");
+    DeletionBoundary(const DeletionBoundary&) = delete;  // the simulation holds references to the totals
+    DeletionBoundary& operator=(const DeletionBoundary&) = delete;
+
+    // Moves the plane (before the run, for a geometry known only then).
+    void setPlane(const Vec3& normal, const Vec3& point);
+
+    // Removes every mobile particle past the plane; returns how many. Call it from
+    // actionsAfterTimeStep() (every step, or every few steps: a particle past the plane of an
+    // open end touches nothing that matters).
+    std::size_t apply(Simulation& s);
+
+    double count() const { return count_; }
+    double mass() const { return mass_; }
+    double volume() const { return volume_; }
+    double mass(std::size_t species) const { return speciesMass_.at(species); }
+    double volume(std::size_t species) const { return speciesVolume_.at(species); }
+
+private:
+    Vec3 normal_, point_;
+    double count_ = 0, mass_ = 0, volume_ = 0;
+    std::vector<double> speciesMass_, speciesVolume_;
+};
+
+}  // namespace talus

@@ -1,0 +1,118 @@
+#include "Chute/ChuteStatistics.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "Error.h"
+#include "Math/Vector.h"
+
+namespace talus {
+
+ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time) {
+    ChuteSnapshot s;
+    s.time = time;
+    double mass = 0, massZ = 0, volume = 0, smallVolume = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) continue;
+        const double m = p.mass[i], v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
+        mass += m;
+        massZ += m * p.position[i].z();
+        s.massFlux += m * p.velocity[i].x();
+        s.kineticEnergy += 0.5 * m * p.velocity[i].squaredNorm() +
+                           (p.invInertia[i] > 0 ? 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i] : 0);
+        volume += v;
+        if (p.species[i] == smallSpecies) smallVolume += v;
+    }
+    if (mass > 0) {
+        s.meanVelocity = s.massFlux / mass;
+        s.height = 2 * massZ / mass;
+    }
+    s.massFlux /= length * width;
+    s.kineticEnergy /= length * width;
+    s.smallConcentration = volume > 0 ? smallVolume / volume : 0;
+    return s;
+}
+
+PlateauDetector::PlateauDetector(std::size_t window, double tolerance) : window_(window), tolerance_(tolerance) {
+    require(window >= 4 && window % 2 == 0, "steady-state window must be an even number of samples >= 4, got " +
+                                                std::to_string(window));
+    require(tolerance > 0, "steady-state tolerance must be positive");
+}
+
+bool PlateauDetector::add(double time, const std::vector<double>& values) {
+    require(history_.empty() || values.size() == history_.front().size(),
+            "steady-state detector: every sample must have the same number of series");
+    history_.push_back(values);
+    if (steady() || history_.size() < window_) return steady();
+    const std::size_t start = history_.size() - window_, half = window_ / 2;
+    for (std::size_t q = 0; q < values.size(); ++q) {
+        double first = 0, second = 0;
+        for (std::size_t k = 0; k < half; ++k) {
+            first += history_[start + k][q];
+            second += history_[start + half + k][q];
+        }
+        first /= half;
+        second /= half;
+        if (!(std::abs(second - first) <= tolerance_ * std::abs(second))) return false;
+    }
+    steadySince_ = time;
+    return true;
+}
+
+MeanAndError batchMean(const std::vector<double>& samples, std::size_t batches) {
+    MeanAndError r;
+    if (samples.empty()) return r;
+    for (double x : samples) r.mean += x;
+    r.mean /= samples.size();
+    const std::size_t per = samples.size() / batches;
+    if (batches < 2 || per == 0) return r;
+    std::vector<double> means(batches, 0);
+    for (std::size_t b = 0; b < batches; ++b) {
+        for (std::size_t k = 0; k < per; ++k) means[b] += samples[b * per + k];
+        means[b] /= per;
+    }
+    double meanOfMeans = 0, variance = 0;
+    for (double m : means) meanOfMeans += m;
+    meanOfMeans /= batches;
+    for (double m : means) variance += (m - meanOfMeans) * (m - meanOfMeans);
+    variance /= batches - 1;
+    r.error = std::sqrt(variance / batches);
+    return r;
+}
+
+DepthProfile::DepthProfile(double bin, double top, double length, double width, std::size_t smallSpecies)
+    : bin_(bin), length_(length), width_(width), smallSpecies_(smallSpecies) {
+    require(bin > 0 && top > bin, "depth profile: bin must be positive and below the top");
+    const auto n = static_cast<std::size_t>(std::ceil(top / bin));
+    volume_.assign(n, 0);
+    smallVolume_.assign(n, 0);
+    mass_.assign(n, 0);
+    momentum_.assign(n, 0);
+}
+
+void DepthProfile::add(const ParticleStore& p) {
+    ++samples_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i] || p.position[i].z() < 0) continue;
+        const auto k = static_cast<std::size_t>(p.position[i].z() / bin_);
+        if (k >= volume_.size()) continue;
+        const double v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
+        volume_[k] += v;
+        if (p.species[i] == smallSpecies_) smallVolume_[k] += v;
+        mass_[k] += p.mass[i];
+        momentum_[k] += p.mass[i] * p.velocity[i].x();
+    }
+}
+
+void DepthProfile::write(const std::string& path) const {
+    std::ofstream out(path);
+    if (!out) throw Error("cannot write depth profile " + path);
+    out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";
+    const double slab = bin_ * length_ * width_ * static_cast<double>(std::max<std::size_t>(samples_, 1));
+    for (std::size_t k = 0; k < volume_.size(); ++k)
+        out << (k + 0.5) * bin_ << ' ' << volume_[k] / slab << ' ' << (mass_[k] > 0 ? momentum_[k] / mass_[k] : 0) << ' '
+            << (volume_[k] > 0 ? smallVolume_[k] / volume_[k] : 0) << '\n';
+    if (!out) throw Error("error while writing depth profile " + path);
+}
+
+}  // namespace talus

@@ -1,0 +1,69 @@
+// What a chute-flow driver measures while it runs (SPEC.md 2): bulk quantities of the flowing
+// particles, the plateau of their time series (a steady flow), and depth profiles.
+// These are quick diagnostics for running a study; the coarse-graining tool (Tools/CG) gives
+// the proper continuum fields afterwards.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+// Bulk state of the flowing (not fixed) particles of a chute of the given length and width.
+struct ChuteSnapshot {
+    double time = 0;
+    double kineticEnergy = 0;   // translational and rotational, per unit base area
+    double massFlux = 0;        // downslope mass flux per unit width, sum(m vx) / length / width
+    double meanVelocity = 0;    // mass-weighted mean vx
+    double height = 0;          // flow height: twice the mass-weighted mean z (a uniform layer on z = 0)
+    double smallConcentration = 0;  // volume fraction of the particles of the small species
+};
+ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time);
+
+// The plateau of time series sampled at equal intervals: steady once, over the last `window`
+// samples, the mean of the second half differs from that of the first half by at most
+// `tolerance` times its magnitude, for every series (and stays steady from then on).
+class PlateauDetector {
+public:
+    PlateauDetector(std::size_t window, double tolerance);
+    // Adds one sample of every series (the same number of series each time); returns steady().
+    bool add(double time, const std::vector<double>& values);
+    bool steady() const { return steadySince_ >= 0; }
+    double steadySince() const { return steadySince_; }  // time of the sample that made it steady
+    std::size_t samples() const { return history_.size(); }
+
+private:
+    std::size_t window_;
+    double tolerance_;
+    std::vector<std::vector<double>> history_;
+    double steadySince_ = -1;
+};
+
+// Mean and standard error of the mean of samples, from the means of `batches` consecutive
+// batches (batch means remove most of the correlation between neighbouring samples).
+struct MeanAndError {
+    double mean = 0, error = 0;
+};
+MeanAndError batchMean(const std::vector<double>& samples, std::size_t batches = 5);
+
+// Depth profiles averaged over samples: volume fraction (of centres in each slab, a histogram,
+// not a coarse-grained field), mass-weighted downslope velocity and the small species' volume
+// concentration, in slabs of thickness `bin` from z = 0 up.
+class DepthProfile {
+public:
+    DepthProfile(double bin, double top, double length, double width, std::size_t smallSpecies);
+    void add(const ParticleStore& p);
+    // Columns z, volume fraction, vx, small concentration; one line per slab.
+    void write(const std::string& path) const;
+    std::size_t samples() const { return samples_; }
+
+private:
+    double bin_, length_, width_;
+    std::size_t smallSpecies_, samples_ = 0;
+    std::vector<double> volume_, smallVolume_, mass_, momentum_;
+};
+
+}  // namespace talus
