@@ -8,7 +8,7 @@
 // tc ~ sqrt(d) for every pair type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
 // 0.25 (SS), 0.375 (LS); the base is of the large material. dt = 1e-4.
 // Every time unit the run samples the kinetic energy and the mass flux; once both have been on
-// a plateau for the last 20 samples (the second half's mean within 2% of the first's) the flow
+// a plateau for the last 100 samples (their trend over them below 2% of their mean) the flow
 // is steady, and from then on the run averages depth profiles and the flow's mean velocity,
 // height and flux, written at the end with their standard errors (NAME.profile, NAME.steady).
 // (The statistics are the driver's own: a restarted run starts them afresh.)
@@ -28,7 +28,7 @@ using namespace talus;
 class PeriodicBidisperseChute : public Chute {
 public:
     double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02;
-    int large = 1000, small = 2000, seed = 1, window = 20;
+    int large = 1000, small = 2000, seed = 1, window = 100;
 
     PeriodicBidisperseChute() {
         addFlag("angle", "inclination in degrees", angle);
@@ -39,7 +39,7 @@ public:
         addFlag("seed", "seed of the base and of the start positions", seed);
         addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         addFlag("window", "samples on a plateau that make the flow steady", window);
-        addFlag("tolerance", "relative change of the plateau's half-window means", tolerance);
+        addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
     }
 
     void setupInitialConditions() override {
@@ -119,7 +119,7 @@ public:
 private:
     static constexpr double smallDiameter = 0.79370052598409979;  // 2^(-1/3): half the volume
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
-    PlateauDetector plateau_{20, 0.02};
+    PlateauDetector plateau_{100, 0.02};
     std::vector<ChuteSnapshot> steadySamples_;
     DepthProfile profile_{0.25, 40, 20, 10, 1};
 };

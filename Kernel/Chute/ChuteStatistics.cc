@@ -34,8 +34,7 @@ ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, 
 }
 
 PlateauDetector::PlateauDetector(std::size_t window, double tolerance) : window_(window), tolerance_(tolerance) {
-    require(window >= 4 && window % 2 == 0, "steady-state window must be an even number of samples >= 4, got " +
-                                                std::to_string(window));
+    require(window >= 4, "steady-state window must be at least 4 samples, got " + std::to_string(window));
     require(tolerance > 0, "steady-state tolerance must be positive");
 }
 
@@ -44,16 +43,19 @@ bool PlateauDetector::add(double time, const std::vector<double>& values) {
             "steady-state detector: every sample must have the same number of series");
     history_.push_back(values);
     if (steady() || history_.size() < window_) return steady();
-    const std::size_t start = history_.size() - window_, half = window_ / 2;
+    const std::size_t start = history_.size() - window_;
+    const double n = static_cast<double>(window_), meanIndex = 0.5 * (n - 1);
     for (std::size_t q = 0; q < values.size(); ++q) {
-        double first = 0, second = 0;
-        for (std::size_t k = 0; k < half; ++k) {
-            first += history_[start + k][q];
-            second += history_[start + half + k][q];
+        double mean = 0;
+        for (std::size_t k = 0; k < window_; ++k) mean += history_[start + k][q];
+        mean /= n;
+        double covariance = 0, variance = 0;  // of the series with the sample index
+        for (std::size_t k = 0; k < window_; ++k) {
+            covariance += (k - meanIndex) * (history_[start + k][q] - mean);
+            variance += (k - meanIndex) * (k - meanIndex);
         }
-        first /= half;
-        second /= half;
-        if (!(std::abs(second - first) <= tolerance_ * std::abs(second))) return false;
+        const double changeOverWindow = covariance / variance * (n - 1);
+        if (!(std::abs(changeOverWindow) <= tolerance_ * std::abs(mean))) return false;
     }
     steadySince_ = time;
     return true;
