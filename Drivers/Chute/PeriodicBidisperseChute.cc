@@ -11,6 +11,7 @@
 // a plateau for the last 100 samples (their trend over them below 2% of their mean) the flow
 // is steady, and from then on the run averages depth profiles and the flow's mean velocity,
 // height and flux, written at the end with their standard errors (NAME.profile, NAME.steady).
+// Every sample is also appended to NAME.series.
 // (The statistics are the driver's own: a restarted run starts them afresh.)
 #include <cmath>
 #include <cstdio>
@@ -75,6 +76,13 @@ public:
         // At the multiples of the sample interval (so also after a restart).
         if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
         const ChuteSnapshot s = measureChute(particles(), length, width, smallSpecies_, time());
+        if (!series_.is_open()) {  // appended to, so that a restarted run continues it
+            series_.open(name() + ".series", std::ios::app);
+            if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
+                series_ << "# t kineticEnergy massFlux meanVelocity height smallConcentration (per unit area/width)\n";
+        }
+        series_ << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height
+                << ' ' << s.smallConcentration << std::endl;
         // No sphere may pass through the base (its centres lie within +-0.25 of z = 0).
         for (std::size_t i = 0; i < particles().size(); ++i)
             if (!particles().fixed[i] && particles().position[i].z() < -0.5)
@@ -121,6 +129,7 @@ private:
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
     PlateauDetector plateau_{100, 0.02};
     std::vector<ChuteSnapshot> steadySamples_;
+    std::ofstream series_;
     DepthProfile profile_{0.25, 40, 20, 10, 1};
 };
 
