@@ -42,6 +42,8 @@ public:
         states_[k] = h.state;
     }
     void clearLastNormalForce(std::size_t k) { lastNormalForces_[k] = 0; }
+    double lastNormalForceOf(std::size_t k) const { return lastNormalForces_[k]; }
+    const Vec3& springOf(std::size_t k) const { return springs_[k]; }
     void assign(std::size_t n) {
         springs_.assign(n, Vec3::Zero());
         lastNormalForces_.assign(n, 0);

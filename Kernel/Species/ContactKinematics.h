@@ -3,6 +3,9 @@
 // law is written once for both.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "Math/Vector.h"
 
 namespace talus {
@@ -30,33 +33,63 @@ struct ContactForce {
     Vec3 onI() const { return tangentialForce; }  // normal part added by the caller
 };
 
+// The rules below are written on plain numbers, branch-free (selects, and no division inside a
+// select, which the compiler would not speculate), so that the batched force loop
+// (Contacts/ContactForces.h) can run them on lanes of contacts that the compiler vectorises;
+// the Vec3 forms wrap them for the scalar paths.
+
 // Tangential spring: forward Euler of SPEC.md 1, d(xi)/dt = vt - rij (xi . vij) / rij^2, which
 // keeps xi in the tangent plane as the contact rotates. A wall's normal only turns with the
-// wall, so there the spring is advanced with vt and projected back onto the tangent plane.
+// wall, so there (inverseDistance 0) the spring is advanced with vt and projected back onto the
+// tangent plane. (n, v, t: normal, relative velocity of the centres, tangential velocity.)
+[[gnu::always_inline]] inline void advanceTangentialSpring(double& sx, double& sy, double& sz, double nx, double ny,
+                                                           double nz, double vx, double vy, double vz, double tx,
+                                                           double ty, double tz, double inverseDistance, double dt) {
+    const double turn = (sx * vx + sy * vy + sz * vz) * inverseDistance;
+    const double rx = sx + dt * (tx - nx * turn), ry = sy + dt * (ty - ny * turn), rz = sz + dt * (tz - nz * turn);
+    const double ax = sx + dt * tx, ay = sy + dt * ty, az = sz + dt * tz;
+    const double along = ax * nx + ay * ny + az * nz;
+    const bool pair = inverseDistance > 0;
+    sx = pair ? rx : ax - nx * along;
+    sy = pair ? ry : ay - ny * along;
+    sz = pair ? rz : az - nz * along;
+}
 [[gnu::always_inline]] inline void advanceTangentialSpring(Vec3& spring, const ContactKinematics& k, double dt) {
-    if (k.inverseDistance > 0) {
-        spring += dt * (k.tangentialVelocity - k.normal * (spring.dot(k.relativeVelocity) * k.inverseDistance));
-    } else {
-        spring += dt * k.tangentialVelocity;
-        spring -= k.normal * spring.dot(k.normal);
-    }
+    advanceTangentialSpring(spring.x(), spring.y(), spring.z(), k.normal.x(), k.normal.y(), k.normal.z(),
+                            k.relativeVelocity.x(), k.relativeVelocity.y(), k.relativeVelocity.z(),
+                            k.tangentialVelocity.x(), k.tangentialVelocity.y(), k.tangentialVelocity.z(),
+                            k.inverseDistance, dt);
 }
 
 // Coulomb sliding (SPEC.md 1): caps |ft| at mu |fn| and resets the spring so that it is
-// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. Returns whether it slides.
-[[gnu::always_inline]] inline bool applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
-                              double tangentialStiffness, double tangentialDamping, const Vec3& vt) {
+// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. A frictionless contact (or
+// one without normal force) that would slide keeps no tangential force and no spring. Returns
+// whether it slides.
+[[gnu::always_inline]] inline bool applyCoulombLimit(double& fx, double& fy, double& fz, double& sx, double& sy,
+                                                     double& sz, double normalForce, double friction,
+                                                     double tangentialStiffness, double tangentialDamping, double tx,
+                                                     double ty, double tz) {
+    constexpr double tiny = 1e-300;
     const double limit = friction * std::abs(normalForce);
-    const double ft2 = tangentialForce.squaredNorm();
-    if (ft2 <= limit * limit) return false;
-    if (limit == 0) {  // frictionless (or no normal force): no tangential force, no stored energy
-        tangentialForce.setZero();
-        spring.setZero();
-        return false;
-    }
-    tangentialForce *= limit / std::sqrt(ft2);
-    if (tangentialStiffness > 0) spring = (tangentialForce + tangentialDamping * vt) * (-1 / tangentialStiffness);
-    return true;
+    const double ft2 = fx * fx + fy * fy + fz * fz;
+    const bool slide = ft2 > limit * limit, frictionless = limit <= 0;
+    const double ratio = limit / std::sqrt(std::max(ft2, tiny));
+    const double scale = slide ? ratio : 1.0;
+    fx *= scale, fy *= scale, fz *= scale;
+    const double minusInverseKt = -1 / std::max(tangentialStiffness, tiny);
+    const bool resetSpring = slide & (tangentialStiffness > 0), clearSpring = slide & frictionless;
+    const double qx = (fx + tangentialDamping * tx) * minusInverseKt, qy = (fy + tangentialDamping * ty) * minusInverseKt,
+                 qz = (fz + tangentialDamping * tz) * minusInverseKt;
+    sx = clearSpring ? 0.0 : (resetSpring ? qx : sx);
+    sy = clearSpring ? 0.0 : (resetSpring ? qy : sy);
+    sz = clearSpring ? 0.0 : (resetSpring ? qz : sz);
+    return slide & !frictionless;
+}
+[[gnu::always_inline]] inline bool applyCoulombLimit(Vec3& tangentialForce, Vec3& spring, double normalForce, double friction,
+                                                     double tangentialStiffness, double tangentialDamping, const Vec3& vt) {
+    return applyCoulombLimit(tangentialForce.x(), tangentialForce.y(), tangentialForce.z(), spring.x(), spring.y(),
+                             spring.z(), normalForce, friction, tangentialStiffness, tangentialDamping, vt.x(), vt.y(),
+                             vt.z());
 }
 
 }  // namespace talus

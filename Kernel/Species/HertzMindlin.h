@@ -27,6 +27,7 @@ struct HertzMindlin {
 
     static constexpr const char* name = "HertzMindlin";
     static constexpr bool usesEffectiveRadius = true;
+    static constexpr bool batched = false;  // (no lastingContactForce: ContactForceLoop computes it pair by pair)
 
     // Effective moduli from Young's modulus E and Poisson ratio nu of two equal materials.
     static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {

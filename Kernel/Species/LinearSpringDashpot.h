@@ -133,17 +133,47 @@ struct LinearSpringDashpot {
             return coldCall(&LinearSpringDashpot::plainForce, k, history, dt);
         if (!history.isTouching()) [[unlikely]]
             return coldCall(&LinearSpringDashpot::firstContactForce, k, history, dt);
-        const double halfStepOverMass = 0.5 * dt * k.inverseReducedMass;
-        const double elastic = normalStiffness * k.overlap;
-        const double speedNow = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
+        return lastingContactForce(k, history, dt);
+    }
+
+    // Inside a lasting contact, with the ends treated: the common case, in one place for the
+    // scalar path (walls) and for the batched force loop, which runs it on lanes of plain numbers
+    // that the compiler vectorises (Contacts/ContactForces.h; Eigen expressions defeat its
+    // vectoriser). Branch-free, as the rules of ContactKinematics.h it uses.
+    struct Lane {
+        double nx, ny, nz, overlap;             // normal, overlap
+        double vx, vy, vz, normalVelocity;      // relative velocity of the centres, its normal part
+        double tx, ty, tz;                      // tangential velocity vt (SPEC.md 1)
+        double otherAcceleration, inverseReducedMass, inverseDistance;  // (ContactKinematics)
+        double sx, sy, sz;                      // spring, advanced in place
+        double normalForce, fx, fy, fz;         // out: fn and the tangential force
+    };
+    static constexpr bool batched = true;
+    [[gnu::always_inline]] void lastingContact(Lane& c, double dt) const {
+        // Normal: the dashpot on the end-of-step speed, u(n+1) = u + dt/2 ((kn dn - gn u(n+1))/m* + a).
+        const double halfStepOverMass = 0.5 * dt * c.inverseReducedMass;
+        const double elastic = normalStiffness * c.overlap;
+        const double speedNow = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
                                 (1 + halfStepOverMass * normalDamping);
-        ContactForce f;
-        f.normalForce = elastic - normalDamping * speedNow;
-        advanceTangentialSpring(history.spring, k, dt);
-        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
-        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
-                          tangentialDamping, k.tangentialVelocity);
-        return f;
+        c.normalForce = elastic - normalDamping * speedNow;
+        advanceTangentialSpring(c.sx, c.sy, c.sz, c.nx, c.ny, c.nz, c.vx, c.vy, c.vz, c.tx, c.ty, c.tz, c.inverseDistance,
+                                dt);
+        c.fx = -tangentialStiffness * c.sx - tangentialDamping * c.tx;
+        c.fy = -tangentialStiffness * c.sy - tangentialDamping * c.ty;
+        c.fz = -tangentialStiffness * c.sz - tangentialDamping * c.tz;
+        applyCoulombLimit(c.fx, c.fy, c.fz, c.sx, c.sy, c.sz, c.normalForce, friction, tangentialStiffness,
+                          tangentialDamping, c.tx, c.ty, c.tz);
+    }
+    [[gnu::always_inline]] ContactForce lastingContactForce(const ContactKinematics& k, ContactHistory& history,
+                                                             double dt) const {
+        Lane c{k.normal.x(), k.normal.y(), k.normal.z(), k.overlap,
+               k.relativeVelocity.x(), k.relativeVelocity.y(), k.relativeVelocity.z(), k.normalVelocity,
+               k.tangentialVelocity.x(), k.tangentialVelocity.y(), k.tangentialVelocity.z(),
+               k.otherAcceleration, k.inverseReducedMass, k.inverseDistance,
+               history.spring.x(), history.spring.y(), history.spring.z(), 0, 0, 0, 0};
+        lastingContact(c, dt);
+        history.spring = Vec3(c.sx, c.sy, c.sz);
+        return {c.normalForce, Vec3(c.fx, c.fy, c.fz)};
     }
 
     // The first step of a contact (see above): from the touch, foreseen or not, to now.
