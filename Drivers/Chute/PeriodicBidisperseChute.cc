@@ -8,7 +8,7 @@
 // tc ~ sqrt(d) for every pair type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
 // 0.25 (SS), 0.375 (LS); the base is of the large material. dt = 1e-4.
 // Every time unit the run samples the kinetic energy and the mass flux; once both have been on
-// a plateau for the last 100 samples (their trend over them below 2% of their mean) the flow
+// a plateau for the last 200 samples (their trend over them below 2% of their mean) the flow
 // is steady, and from then on the run averages depth profiles and the flow's mean velocity,
 // height and flux, written at the end with their standard errors (NAME.profile, NAME.steady).
 // Every sample is also appended to NAME.series.
@@ -29,7 +29,7 @@ using namespace talus;
 class PeriodicBidisperseChute : public Chute {
 public:
     double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02;
-    int large = 1000, small = 2000, seed = 1, window = 100;
+    int large = 1000, small = 2000, seed = 1, window = 200;
 
     PeriodicBidisperseChute() {
         addFlag("angle", "inclination in degrees", angle);
@@ -127,7 +127,7 @@ public:
 private:
     static constexpr double smallDiameter = 0.79370052598409979;  // 2^(-1/3): half the volume
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
-    PlateauDetector plateau_{100, 0.02};
+    PlateauDetector plateau_{200, 0.02};
     std::vector<ChuteSnapshot> steadySamples_;
     std::ofstream series_;
     DepthProfile profile_{0.25, 40, 20, 10, 1};
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
     PeriodicBidisperseChute chute;
     chute.setName("PeriodicBidisperseChute");
     chute.setTimeStep(1e-4);
-    chute.setEndTime(500);
+    chute.setEndTime(1500);
     chute.setOutputInterval(10);
     return chute.solve(argc, argv);
 }
