@@ -2,6 +2,7 @@
 // with a message that names the parameter, file and line, or the particle and time.
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +16,13 @@ public:
 // Throws Error(message) unless condition holds. Used for argument checks in setters.
 inline void require(bool condition, const std::string& message) {
     if (!condition) throw Error(message);
+}
+
+// A number as messages show it (shortest form, as std::ostream writes it: 0.1, 1e-05, nan).
+inline std::string str(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
 }
 
 }  // namespace talus

@@ -15,12 +15,6 @@ namespace talus {
 
 namespace {
 
-std::string str(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
-
 void requireWord(const std::string& word, const std::string& what) {
     require(!word.empty() && word.find_first_of(" \t\n\r") == std::string::npos,
             what + " must be one word without spaces, got '" + word + "'");

@@ -13,12 +13,6 @@ namespace talus {
 
 namespace {
 
-std::string str(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
-
 std::string str(const Vec3& v) {
     std::ostringstream s;
     s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";

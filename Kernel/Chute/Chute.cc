@@ -1,7 +1,6 @@
 #include "Chute/Chute.h"
 
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -12,12 +11,6 @@
 namespace talus {
 
 namespace {
-
-std::string str(double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", x);
-    return buffer;
-}
 
 // Random sequential addition of equal spheres in a periodic slab, with a cell grid of one
 // diameter so that each attempt looks at 27 cells only.
