@@ -262,12 +262,19 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     Progress progress(std::cout, state_.settings.progressInterval);
     progress.start(name(), state_.time, state_.settings.endTime, steps, mobile);
     const std::uint64_t every = saveEvery();
+    std::size_t counted = state_.particles.size();
     for (std::uint64_t k = 1; k <= steps; ++k) {
         const bool saving = (state_.step + 1) % every == 0 || k == steps;
         actionsBeforeTimeStep();
         integrate(saving);
         actionsAfterTimeStep();
         if (saving) writeOutput();
+        // Boundaries may add and delete particles: count again when the number changed.
+        if (state_.particles.size() != counted) {
+            counted = state_.particles.size();
+            mobile = 0;
+            for (auto f : state_.particles.fixed) mobile += !f;
+        }
         progress.update(state_.time, k, mobile);
     }
     progress.finish(state_.time, steps);
@@ -410,8 +417,14 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
     }
     if (checkOverlaps && summary_.maxOverlapFraction > state_.settings.maxOverlapFraction) {
         std::ostringstream m;
-        m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << " and "
-          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB << " overlap by "
+        auto at = [this](std::uint64_t id) {
+            std::ostringstream where;
+            where << " at (" << state_.particles.position[slotOf(id)].transpose() << ")";
+            return where.str();
+        };
+        m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << at(summary_.worstA) << " and "
+          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB
+          << (summary_.worstIsWall ? std::string() : at(summary_.worstB)) << " overlap by "
           << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit "
           << 100 * state_.settings.maxOverlapFraction
           << "%); the contact is too soft for the impact speed, or the time step too large";
@@ -482,6 +495,7 @@ void Simulation::integrate(bool recordContacts) {
         for (Vec3& x : p.position) state_.domain.wrap(x);
     state_.time += dt;
     ++state_.step;
+    for (Boundary* b : boundaries_) b->afterDrift(*this);
     computeForces(recordContacts ? &records_ : nullptr);
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.fixed[i]) continue;

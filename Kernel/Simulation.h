@@ -3,7 +3,7 @@
 // A driver sets species, particles, walls and boundaries in setupInitialConditions() and may
 // override the hooks; main() sets the name, time step and end time and calls solve(argc, argv).
 // The time loop is velocity Verlet (SPEC.md 1): half kick, drift, prescribed motions, periodic
-// wrap, neighbour-list update when needed, forces, half kick.
+// wrap, boundaries (addBoundary), neighbour-list update when needed, forces, half kick.
 #pragma once
 
 #include <functional>
@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "Boundaries/Boundary.h"
 #include "Contacts/ContactForces.h"
 #include "Contacts/HGrid.h"
 #include "Error.h"
@@ -75,6 +76,10 @@ public:
     // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
     std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
     void removeParticle(std::size_t slot);
+
+    // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
+    // boundaries register themselves, in their constructors. Not owned: it must outlive the run.
+    void addBoundary(Boundary& boundary) { boundaries_.push_back(&boundary); }
 
     std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
     std::size_t addMotion(const PrescribedMotion& motion);
@@ -150,6 +155,7 @@ private:
     void addKept(KeptValue value);
     void saveKeptValues();
     void restoreKeptValues(const std::string& restartFile);
+    std::vector<Boundary*> boundaries_;
     std::unique_ptr<OutputFiles> files_;
     RunStatistics lastRun_;
     std::string restartFile_;

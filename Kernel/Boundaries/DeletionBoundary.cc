@@ -11,6 +11,12 @@ DeletionBoundary::DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3
                                    const std::string& name)
     : speciesMass_(species, 0), speciesVolume_(species, 0) {
     setPlane(normal, point);
+    // The plane too: a driver may set it from its flags in setupInitialConditions, which a
+    // restarted run does not call.
+    for (int a = 0; a < 3; ++a) {
+        s.keepInRestart(name + ".normal." + std::to_string(a), normal_[a]);
+        s.keepInRestart(name + ".point." + std::to_string(a), point_[a]);
+    }
     s.keepInRestart(name + ".count", count_);
     s.keepInRestart(name + ".mass", mass_);
     s.keepInRestart(name + ".volume", volume_);

@@ -4,15 +4,37 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "Math/Vector.h"
 
 namespace talus {
 
+// A box along x that is periodic one way inside a domain that is open along x: the activated
+// maser of SPEC.md 3 (Boundaries/MaserBoundary.h). Mobile particles of its species near the
+// upstream face (lo) feel the particles of its species near the downstream face (hi) through
+// their images shifted by -(hi - lo); those near the downstream face do not feel the upstream
+// ones. Listed as PairList::oneWayPairs.
+struct OneWayPeriodicBox {
+    bool active = false;
+    double lo = 0, hi = 0;
+    // Per species: the species a particle of the box becomes when it leaves through the
+    // downstream face, or -1 for species that are not the box's. Set before activation too
+    // (MaserBoundary::maserSpecies), so that the restart file keeps it in both phases.
+    std::vector<std::int32_t> outflowSpecies;
+
+    double length() const { return hi - lo; }
+    bool isMember(std::uint32_t species) const {
+        return species < outflowSpecies.size() && outflowSpecies[species] >= 0;
+    }
+};
+
 struct Domain {
     Vec3 lo = Vec3::Zero();
     Vec3 hi = Vec3::Ones();
     std::array<bool, 3> periodic{false, false, false};
+    OneWayPeriodicBox oneWay;
 
     double length(int axis) const { return hi[axis] - lo[axis]; }
     bool anyPeriodic() const { return periodic[0] || periodic[1] || periodic[2]; }

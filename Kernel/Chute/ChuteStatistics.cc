@@ -8,12 +8,13 @@
 
 namespace talus {
 
-ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time) {
+ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
+                           double xMin, double xMax) {
     ChuteSnapshot s;
     s.time = time;
     double mass = 0, massZ = 0, volume = 0, smallVolume = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.fixed[i]) continue;
+        if (p.fixed[i] || !(p.position[i].x() >= xMin && p.position[i].x() < xMax)) continue;
         const double m = p.mass[i], v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
         mass += m;
         massZ += m * p.position[i].z();

@@ -4,6 +4,8 @@
 // the proper continuum fields afterwards.
 #pragma once
 
+#include <cmath>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,7 +23,10 @@ struct ChuteSnapshot {
     double height = 0;          // flow height: twice the mass-weighted mean z (a uniform layer on z = 0)
     double smallConcentration = 0;  // volume fraction of the particles of the small species
 };
-ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time);
+// Over the mobile particles with xMin <= x < xMax (all by default); length and width are those
+// of the region measured.
+ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
+                           double xMin = -INFINITY, double xMax = INFINITY);
 
 // The plateau of time series sampled at equal intervals: steady once, over the last `window`
 // samples, the least-squares line through each series changes by at most `tolerance` times the

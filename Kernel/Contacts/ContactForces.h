@@ -214,6 +214,42 @@ public:
         if constexpr (Law::batched) flush(list);
     }
 
+    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, SPEC.md 3):
+    // the scalar path with j's image, and the force on i alone. They are few (one layer of the
+    // face), so they never enter a batch; they write no .fstat records (a force without its
+    // reaction would break the stress of coarse graining).
+    void oneWayPairs(PairList& list, const Domain& domain) {
+        if (list.oneWayPairs.empty()) return;
+        const PeriodicImage image(domain);
+        const double shift = domain.oneWay.length();
+        oneWay_ = true;
+        for (std::size_t k = 0; k < list.oneWayPairs.size(); ++k) {
+            const std::uint32_t i = list.oneWayPairs[k].i, j = list.oneWayPairs[k].j;
+            Vec3 d = p_.position[i] - p_.position[j];
+            d.x() += shift;
+            d = image.nearest(d);
+            const double sumR = p_.radius[i] + p_.radius[j], distance = d.norm();
+            const Vec3 n = d / distance;
+            ContactHistory history = list.oneWayHistory.get(k);
+            Arms arms;
+            ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j],
+                                                    p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
+                                                    p_.angularVelocity[j], arms);
+            c.inverseDistance = 1 / distance;
+            c.inverseReducedMass = p_.invMass[i] + p_.invMass[j];
+            c.otherAcceleration = previousForce_[i].dot(n) * p_.invMass[i] - previousForce_[j].dot(n) * p_.invMass[j] -
+                                  history.lastNormalForce * c.inverseReducedMass;
+            if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+            const Law& law = laws_(p_.species[i], p_.species[j]);
+            if (distance < sumR)
+                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
+            else
+                history = apart(i, j, c, arms, history, law);
+            list.oneWayHistory.set(k, history);
+        }
+        oneWay_ = false;
+    }
+
     void wallPairs(PairList& list, const std::vector<PlaneWall>& walls, const std::vector<PrescribedMotion>& motions) {
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
             const std::uint32_t i = list.wallPairs[k].particle;
@@ -256,7 +292,7 @@ private:
         const Vec3 turn = n.cross(f.tangentialForce);  // n x force
         p_.force[i] += force;
         p_.torque[i] -= arms.i * turn;
-        if (j >= 0) {
+        if (j >= 0 && !oneWay_) {
             p_.force[j] -= force;
             p_.torque[j] -= arms.j * turn;
         }
@@ -275,7 +311,7 @@ private:
             summary_.worstB = j >= 0 ? p_.id[j] : static_cast<std::uint64_t>(-j - 1);  // wall index
             summary_.worstIsWall = j < 0;
         }
-        if (records_) [[unlikely]]
+        if (records_ && !oneWay_) [[unlikely]]
             record(i, j, c, arms, history, law, f);
     }
 
@@ -338,6 +374,7 @@ private:
     }
 
     ContactBatch batch_;
+    bool oneWay_ = false;  // in oneWayPairs: no reaction on j, no records
     ParticleStore& p_;
     const PairTable<Law>& laws_;
     const double dt_, closing_;
@@ -353,6 +390,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneW
                       std::vector<ContactRecord>* records) {
     ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records);
     loop.particlePairs(list, domain);
+    loop.oneWayPairs(list, domain);
     loop.wallPairs(list, walls, motions);
 }
 

@@ -63,6 +63,12 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
         std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
         carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
     }
+    for (std::size_t k = 0; k < oneWayPairs.size(); ++k) {
+        const ContactHistory h = oneWayHistory.get(k);
+        if (!worthCarrying(h)) continue;
+        std::uint64_t a = particles.id[oneWayPairs[k].i], b = particles.id[oneWayPairs[k].j];
+        carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
+    }
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
         if (worthCarrying(wallHistory.get(k)))
             carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory.get(k)});
@@ -82,6 +88,13 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
         if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
             history.set(k, a < b ? c->history : reversed(c->history));
     }
+    listOneWayPairs(particles, domain);
+    oneWayHistory.assign(oneWayPairs.size());
+    for (std::size_t k = 0; k < oneWayPairs.size(); ++k) {
+        std::uint64_t a = particles.id[oneWayPairs[k].i], b = particles.id[oneWayPairs[k].j];
+        if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
+            oneWayHistory.set(k, a < b ? c->history : reversed(c->history));
+    }
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
         for (std::uint32_t i = 0; i < particles.size(); ++i) {
@@ -100,10 +113,48 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     ++builds;
 }
 
+// The box's particles within reach of each face, then every upstream-downstream pair whose image
+// distance is within reach: the strips hold a few hundred particles, so pairing them directly
+// costs less than a grid.
+void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& domain) {
+    oneWayPairs.clear();
+    const OneWayPeriodicBox& box = domain.oneWay;
+    if (!box.active) return;
+    double largest = 0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (box.isMember(particles.species[i])) largest = std::max(largest, particles.radius[i]);
+    const double cut = 2 * largest + reach;
+    // Two listings of one pair (directly and through the image) would count its force twice.
+    if (box.length() < 2 * cut) {
+        std::ostringstream m;
+        m << "maser box of length " << box.length() << " is too short for particles of diameter " << 2 * largest
+          << " and list reach " << reach << ": it must be at least " << 2 * cut
+          << " long (twice the largest diameter plus the reach)";
+        throw Error(m.str());
+    }
+    std::vector<std::uint32_t> upstream, downstream;
+    for (std::uint32_t i = 0; i < particles.size(); ++i) {
+        if (!box.isMember(particles.species[i])) continue;
+        const double x = particles.position[i].x();
+        if (!particles.fixed[i] && x - box.lo < cut) upstream.push_back(i);
+        if (box.hi - x < cut) downstream.push_back(i);
+    }
+    const PeriodicImage image(domain);
+    for (std::uint32_t i : upstream)
+        for (std::uint32_t j : downstream) {
+            Vec3 d = particles.position[i] - particles.position[j];
+            d.x() += box.length();
+            d = image.nearest(d);
+            const double limit = particles.radius[i] + particles.radius[j] + reach;
+            if (d.squaredNorm() < limit * limit) oneWayPairs.push_back({i, j});
+        }
+}
+
 void PairList::followPermutation(const std::vector<std::size_t>& order) {
     std::vector<std::uint32_t> newSlot(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) newSlot[order[k]] = static_cast<std::uint32_t>(k);
     for (ParticlePair& pair : pairs) pair = {newSlot[pair.i], newSlot[pair.j]};
+    for (ParticlePair& pair : oneWayPairs) pair = {newSlot[pair.i], newSlot[pair.j]};
     for (WallCandidate& candidate : wallPairs) candidate.particle = newSlot[candidate.particle];
     referencePosition.clear();
     valid = false;

@@ -32,6 +32,12 @@ public:
     ContactHistories history;  // history.get(k) belongs to pairs[k]
     std::vector<WallCandidate> wallPairs;
     ContactHistories wallHistory;
+    // Pairs across the downstream face of an active one-way periodic box (Domain::oneWay): i, a
+    // mobile particle near the upstream face, feels j's image at xj - length along x; j feels
+    // nothing. Carried across rebuilds by ids like the other pairs, so a contact keeps its spring
+    // when j passes the face and the pair becomes an ordinary one.
+    std::vector<ParticlePair> oneWayPairs;
+    ContactHistories oneWayHistory;
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
     double reach = 0;  // skin + 2 vmax dt at the last build
@@ -57,6 +63,9 @@ public:
     // the listed pairs and wall candidates follow their particles, so that a rebuild still finds
     // their histories. The reference positions are dropped, which forces that rebuild.
     void followPermutation(const std::vector<std::size_t>& order);
+
+private:
+    void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
 };
 
 }  // namespace talus

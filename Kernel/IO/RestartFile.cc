@@ -13,7 +13,9 @@ namespace talus {
 
 namespace {
 
-constexpr int formatVersion = 3;  // 2: the run line ends with the reorder flag; 3: kept values
+// 2: the run line ends with the reorder flag; 3: kept values; 4: the one-way periodic box
+// (maser) and its pairs
+constexpr int formatVersion = 4;
 
 class Writer {
 public:
@@ -187,6 +189,10 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("gravity") << s.gravity; w.end();
         w.key("domain") << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
                         << std::uint64_t(s.domain.periodic[1]) << std::uint64_t(s.domain.periodic[2]); w.end();
+        const OneWayPeriodicBox& box = s.domain.oneWay;
+        w.key("oneway") << std::uint64_t(box.active) << box.lo << box.hi << std::uint64_t(box.outflowSpecies.size());
+        for (std::int32_t species : box.outflowSpecies) w << std::int64_t(species);
+        w.end();
         w.key("species") << std::uint64_t(s.species.size()); w.end();
         for (std::size_t k = 0; k < s.species.size(); ++k) {
             w.key("  ") << s.species[k].name << s.species[k].density;
@@ -226,6 +232,11 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             writeHistory(w, l.wallHistory.get(k));
         }
         for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
+        w.key("onewaypairs") << std::uint64_t(l.oneWayPairs.size()); w.end();
+        for (std::size_t k = 0; k < l.oneWayPairs.size(); ++k) {
+            w.key("  ") << std::uint64_t(l.oneWayPairs[k].i) << std::uint64_t(l.oneWayPairs[k].j);
+            writeHistory(w, l.oneWayHistory.get(k));
+        }
         std::ostringstream random;
         random << s.random;
         w.key("random") << random.str(); w.end();
@@ -279,6 +290,16 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     t.domain.lo = r.vec("domain lower corner");
     t.domain.hi = r.vec("domain upper corner");
     for (int a = 0; a < 3; ++a) t.domain.periodic[a] = r.flag("periodic flag");
+    r.expect("oneway");
+    t.domain.oneWay.active = r.flag("one-way box flag");
+    t.domain.oneWay.lo = r.real("one-way box lower end");
+    t.domain.oneWay.hi = r.real("one-way box upper end");
+    const auto outflowCount = r.count("one-way box species count", 1u << 16);
+    for (std::uint64_t k = 0; k < outflowCount; ++k) {
+        const auto species = r.integer("one-way box outflow species");
+        if (species < -1 || species >= (1 << 16)) r.fail("one-way box outflow species out of range");
+        t.domain.oneWay.outflowSpecies.push_back(static_cast<std::int32_t>(species));
+    }
     r.expect("species");
     const auto speciesCount = r.count("species count", 1u << 16);
     for (std::uint64_t k = 0; k < speciesCount; ++k) {
@@ -368,6 +389,13 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         l.wallHistory.push_back(readHistory(r));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
+    r.expect("onewaypairs");
+    const auto oneWayPairs = r.count("one-way pair count", 1ull << 40);
+    for (std::uint64_t k = 0; k < oneWayPairs; ++k) {
+        const auto i = r.count("one-way pair particle", n - 1), j = r.count("one-way pair particle", n - 1);
+        l.oneWayPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        l.oneWayHistory.push_back(readHistory(r));
+    }
     r.expect("random");
     {
         std::istringstream engine;
@@ -390,6 +418,9 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         std::string name = r.token("value name");
         t.keptValues.emplace_back(std::move(name), r.real("kept value"));
     }
+    for (std::int32_t species : t.domain.oneWay.outflowSpecies)
+        if (species >= static_cast<std::int32_t>(t.species.size()) || t.domain.oneWay.outflowSpecies.size() > t.species.size())
+            r.fail("one-way box: outflow species " + std::to_string(species) + " does not exist");
     r.expect("end");
     if (!r.atEnd()) r.fail("unexpected text after 'end'");
     s = std::move(t);

@@ -12,6 +12,17 @@ std::size_t SpeciesTable::add(std::string name, double density, ContactLaw law) 
     return species_.size() - 1;
 }
 
+std::size_t SpeciesTable::addCopy(std::size_t source, std::string name) {
+    checkIndex(source);
+    const std::size_t present = size();
+    const std::size_t copy = add(std::move(name), species_[source].density, species_[source].law);
+    // A copy of a copy still pairs with the first copy as its source does: pairLaw(source, x)
+    // for every x present already covers it.
+    for (std::size_t x = 0; x < present; ++x) setPair(copy, x, pairLaw(source, x));
+    setPair(copy, copy, pairLaw(source, source));
+    return copy;
+}
+
 void SpeciesTable::checkIndex(std::size_t i) const {
     require(i < species_.size(), "species index " + std::to_string(i) + " does not exist (there are " +
                                      std::to_string(species_.size()) + " species)");

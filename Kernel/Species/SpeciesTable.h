@@ -40,6 +40,11 @@ struct PairTable {
 class SpeciesTable {
 public:
     std::size_t add(std::string name, double density, ContactLaw law);
+    // A new species that behaves exactly like `source` with every species, itself and the other
+    // copies included (explicit pair laws with everything present now); returns its index. Copies
+    // tell groups of particles apart without changing their physics (the maser's particles,
+    // Boundaries/MaserBoundary.h), so add them after the source's pair laws are final.
+    std::size_t addCopy(std::size_t source, std::string name);
 
     std::size_t size() const { return species_.size(); }
     const Species& operator[](std::size_t i) const { return species_.at(i); }

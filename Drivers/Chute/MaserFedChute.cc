@@ -1,0 +1,227 @@
+// A long bidisperse chute fed by a maser: the chapter-4 setup of SPEC.md 2 and 3.
+//
+// Methods. Spheres of mean diameter 1 and size ratio S = dL/dS (--size-ratio, default 1.5; dL =
+// 2S/(1+S), dS = 2/(1+S)), equal volumes of each size, density 6/pi, flow down a chute inclined
+// at 23 degrees, periodic across (width 6), with a disordered rough base of fixed spheres of
+// diameter 1. Contacts are linear spring-dashpots with e = 0.88 and tc = 0.005 for every pair
+// type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
+// 0.375 between them (a sphere on the base: its own). dt = 1e-4.
+// Phase 1: the maser, a periodic box [0, 20] (--maser-length), holds the spheres for an inflow
+// height h (--inflow-height, default 6: a solids volume of 0.6 h 20 6) and develops a flow. It
+// is sampled every time unit; once its kinetic energy and mass flux have been on a plateau for
+// --window samples (trend below --tolerance of the mean) and t >= --earliest-activation, or at
+// --latest-activation at the latest, the maser is activated. Phase 2: the base is copied
+// downstream to x = 20 + L (--chute-length, default 100; the thesis's full scale is 2000), every
+// sphere leaving the box is copied into the chute, and spheres past the end are deleted.
+// NAME.series records, every sample, the maser's state, the inflow (crossings and mass per
+// size), the chute's contents, what left it, and the front. At the end the run checks mass
+// conservation to the particle (created = in the chute + deleted) and compares the inflow's
+// composition with the maser's.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <tuple>
+
+#include "Boundaries/DeletionBoundary.h"
+#include "Boundaries/InsertionBoundary.h"
+#include "Boundaries/MaserBoundary.h"
+#include "Chute/Chute.h"
+#include "Chute/ChuteStatistics.h"
+
+using namespace talus;
+
+class MaserFedChute : public Chute {
+public:
+    double angle = 23, sizeRatio = 1.5, inflowHeight = 6, maserLength = 20, chuteLength = 100, width = 6;
+    double sampleInterval = 1, tolerance = 0.02, earliestActivation = 50, latestActivation = 200;
+    int seed = 1, window = 50;
+    enum ChuteSpecies : std::size_t { large, small, base, chuteSpeciesCount };
+
+    MaserFedChute() {
+        addFlag("angle", "inclination in degrees", angle);
+        addFlag("size-ratio", "dL / dS at mean diameter 1", sizeRatio);
+        addFlag("inflow-height", "height of the flow in the maser (sets the number of spheres)", inflowHeight);
+        addFlag("maser-length", "length of the maser box along x", maserLength);
+        addFlag("chute-length", "length of the open chute downstream of the maser", chuteLength);
+        addFlag("width", "periodic width along y", width);
+        addFlag("seed", "seed of the base and of the start positions", seed);
+        addFlag("sample-interval", "time between samples", sampleInterval);
+        addFlag("window", "samples on a plateau that make the maser's flow steady", window);
+        addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
+        addFlag("earliest-activation", "the maser is not activated before this time", earliestActivation);
+        addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
+        keepInRestart("run.activatedAt", activatedAt_);
+        keepInRestart("run.boxParticles", boxParticles_);
+        for (std::size_t s = 0; s < 2; ++s) keepInRestart("run.boxMassDisplacement." + std::to_string(s), boxMassDisplacement_[s]);
+    }
+
+    void setupInitialConditions() override {
+        require(sizeRatio >= 1, "--size-ratio must be at least 1, got " + str(sizeRatio));
+        require(inflowHeight > 0, "--inflow-height must be positive, got " + str(inflowHeight));
+        require(chuteLength > 0, "--chute-length must be positive, got " + str(chuteLength));
+        setChuteAngle(angle);
+        setChuteGeometry({.length = maserLength, .width = width, .height = 40, .periodicEnds = true});
+        maser.setBox(0, maserLength);
+        outlet.setPlane(Vec3::UnitX(), Vec3(maserLength + chuteLength, 0, 0));
+        // SPEC.md 2, chapter 4: e and tc the same for every pair type, so each pair's stiffness
+        // and damping follow from its reduced mass; a fixed base sphere has infinite mass.
+        const double dL = 2 * sizeRatio / (1 + sizeRatio), dS = 2 / (1 + sizeRatio), density = 6 / pi;
+        const double mL = density * pi / 6 * dL * dL * dL, mS = density * pi / 6 * dS * dS * dS;
+        auto law = [](double reducedMass, double friction) {
+            return LinearSpringDashpot::fromCollision(0.005, 0.88, reducedMass).withFriction(friction);
+        };
+        addSpecies("large", density, law(mL / 2, 0.5));
+        addSpecies("small", density, law(mS / 2, 0.25));
+        addSpecies("base", density, law(mL, 0.5));
+        species().setPair(large, small, law(mL * mS / (mL + mS), 0.375));
+        species().setPair(base, large, law(mL, 0.5));
+        species().setPair(base, small, law(mS, 0.25));
+        maserLarge_ = maser.maserSpecies(*this, large);
+        maserSmall_ = maser.maserSpecies(*this, small);
+        maserBase_ = maser.maserSpecies(*this, base);
+        addBase(ChuteBase::disordered, 1, maserBase_, static_cast<std::uint64_t>(seed));
+        // The maser's spheres, at rest at random places in a loose layer (packing fraction 0.2).
+        random().seed(static_cast<std::uint64_t>(seed));
+        const double solids = 0.6 * inflowHeight * maserLength * width;
+        const auto largeCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dL * dL * dL)));
+        const auto smallCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dS * dS * dS)));
+        const double top = 1 + solids / (0.2 * maserLength * width);
+        for (auto [count, s, d] : {std::tuple{largeCount, maserLarge_, dL}, {smallCount, maserSmall_, dS}}) {
+            InsertionBoundary box(Vec3(0, 0, 1), Vec3(maserLength, width, top), SizeDistribution::byNumber().add(s, d / 2));
+            const InsertionReport report = box.insertCount(*this, count);
+            std::printf("%s\n", report.describe().c_str());
+            require(report.complete, "could not place the maser's spheres: " + report.describe());
+        }
+        boxParticles_ = static_cast<double>(largeCount + smallCount);
+        plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
+    }
+
+    void actionsAfterTimeStep() override {
+        outlet.apply(*this);
+        if (activatedAt_ >= 0) accumulateBoxFlux();
+        if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
+        const ChuteSnapshot box = measureChute(particles(), maserLength, width, maserSmall_, time(), 0, maserLength);
+        sample(box);
+        if (activatedAt_ >= 0) return;
+        const bool steady = plateau_.add(time(), {box.kineticEnergy, box.massFlux});
+        if ((steady || plateau_.steady()) && time() >= earliestActivation - 0.5 * timeStep()) {
+            std::printf("%s: maser flow steady (kinetic energy %.4g, mass flux %.4g on a plateau for %d samples): "
+                        "activating it at t = %g\n", name().c_str(), box.kineticEnergy, box.massFlux, window, time());
+            activate();
+        } else if (time() >= latestActivation - 0.5 * timeStep()) {
+            std::printf("%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n",
+                        name().c_str(), time());
+            activate();
+        }
+    }
+
+    void actionsAfterSolve() override { checkConservation(); }
+
+    MaserBoundary maser{*this, 0, 20, chuteSpeciesCount};
+    DeletionBoundary outlet{*this, Vec3::UnitX(), Vec3(120, 0, 0), chuteSpeciesCount, "outlet"};
+
+private:
+    // Phase 2: the maser feeds the chute, whose base is the maser's, copied downstream.
+    void activate() {
+        const double end = maserLength + chuteLength;
+        maser.activate(*this, end);
+        activatedAt_ = time();
+        const std::size_t n = particles().size();
+        std::size_t added = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (particles().species[i] != maserBase_) continue;
+            const Vec3 x = particles().position[i];
+            const double r = particles().radius[i];
+            for (int k = 1; x.x() + k * maserLength < end; ++k, ++added)
+                addFixedParticle(x + Vec3(k * maserLength, 0, 0), r, base);
+        }
+        std::printf("%s: chute base of %zu spheres up to x = %g; the first %g of the chute seeded with a copy of the "
+                    "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
+    }
+
+    // The mass that the maser's flow carries through a section, per size, integrated over time:
+    // divided by the box length, it is what should have crossed its downstream face.
+    void accumulateBoxFlux() {
+        const ParticleStore& p = particles();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (p.species[i] == maserLarge_) boxMassDisplacement_[0] += p.mass[i] * p.velocity[i].x() * timeStep();
+            if (p.species[i] == maserSmall_) boxMassDisplacement_[1] += p.mass[i] * p.velocity[i].x() * timeStep();
+        }
+    }
+
+    struct Census {
+        std::size_t box = 0, chute = 0;
+        double chuteMass = 0, front = 0;
+    };
+    Census census() const {
+        Census c;
+        const ParticleStore& p = particles();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (p.fixed[i]) continue;
+            if (p.species[i] == maserLarge_ || p.species[i] == maserSmall_) {
+                ++c.box;
+                continue;
+            }
+            ++c.chute;
+            c.chuteMass += p.mass[i];
+            c.front = std::max(c.front, p.position[i].x());
+        }
+        return c;
+    }
+
+    void sample(const ChuteSnapshot& box) {
+        if (!series_.is_open()) {  // appended to, so that a restarted run continues it
+            series_.open(name() + ".series", std::ios::app);
+            if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
+                series_ << "# t active maserKineticEnergy maserMassFlux maserMeanVelocity maserHeight maserSmallConcentration"
+                           " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front\n";
+        }
+        const Census c = census();
+        series_ << time() << ' ' << (activatedAt_ >= 0) << ' ' << box.kineticEnergy << ' ' << box.massFlux << ' '
+                << box.meanVelocity << ' ' << box.height << ' ' << box.smallConcentration << ' ' << maser.crossings() << ' '
+                << maser.createdMass(large) << ' ' << maser.createdMass(small) << ' ' << c.chute << ' ' << c.chuteMass
+                << ' ' << outlet.count() << ' ' << outlet.mass() << ' ' << c.front << std::endl;
+    }
+
+    // Created = in the chute + deleted, to the particle; the maser keeps its spheres.
+    void checkConservation() {
+        if (activatedAt_ < 0) {
+            std::printf("%s: the maser was not activated by t = %g\n", name().c_str(), time());
+            return;
+        }
+        const Census c = census();
+        const double created = maser.seeded() + maser.crossings(), deleted = outlet.count();
+        const double createdMass = maser.seededMass() + maser.createdMass();
+        const double massError = std::abs(createdMass - (c.chuteMass + outlet.mass()));
+        const bool conserved = created == static_cast<double>(c.chute) + deleted &&
+                               c.box == static_cast<std::size_t>(boxParticles_) &&
+                               massError <= 1e-12 * std::max(1.0, createdMass);
+        std::printf("%s: created %.0f (seeded %.0f + crossed %.0f) = in the chute %zu + deleted %.0f; maser holds %zu of "
+                    "%.0f; created mass %.10g, in the chute + deleted %.10g: mass conserved: %s\n", name().c_str(), created,
+                    maser.seeded(), maser.crossings(), c.chute, deleted, c.box, boxParticles_, createdMass,
+                    c.chuteMass + outlet.mass(), conserved ? "yes" : "NO");
+        // The inflow's composition: the small spheres' share of the created mass, against the
+        // share of the mass the maser's flow carried through its face (the integral of m vx / L).
+        const double carried[2] = {boxMassDisplacement_[0] / maserLength, boxMassDisplacement_[1] / maserLength};
+        std::printf("%s: since t = %g: inflow mass large %.6g small %.6g (small share %.4f); carried by the maser's "
+                    "flow: large %.6g small %.6g (small share %.4f)\n", name().c_str(), activatedAt_,
+                    maser.createdMass(large), maser.createdMass(small),
+                    maser.createdMass(small) / std::max(1e-300, maser.createdMass()), carried[0], carried[1],
+                    carried[1] / std::max(1e-300, carried[0] + carried[1]));
+        if (!conserved) throw Error("mass is not conserved between the maser, the chute and the outlet");
+    }
+
+    std::size_t maserLarge_ = 3, maserSmall_ = 4, maserBase_ = 5;
+    double activatedAt_ = -1, boxParticles_ = 0, boxMassDisplacement_[2] = {0, 0};
+    PlateauDetector plateau_{50, 0.02};
+    std::ofstream series_;
+};
+
+int main(int argc, char** argv) {
+    MaserFedChute chute;
+    chute.setName("MaserFedChute");
+    chute.setTimeStep(1e-4);
+    chute.setEndTime(300);
+    chute.setOutputInterval(5);
+    return chute.solve(argc, argv);
+}

@@ -1,0 +1,123 @@
+#include "Boundaries/MaserBoundary.h"
+
+#include <cmath>
+
+#include "Error.h"
+#include "Simulation.h"
+
+namespace talus {
+
+MaserBoundary::MaserBoundary(Simulation& s, double lo, double hi, std::size_t species, const std::string& name)
+    : speciesCount_(species, 0), speciesMass_(species, 0) {
+    setBox(lo, hi);
+    s.addBoundary(*this);
+    s.keepInRestart(name + ".crossings", crossings_);
+    s.keepInRestart(name + ".mass", mass_);
+    s.keepInRestart(name + ".backward", backward_);
+    s.keepInRestart(name + ".seeded", seeded_);
+    s.keepInRestart(name + ".seededMass", seededMass_);
+    for (std::size_t k = 0; k < species; ++k) {
+        s.keepInRestart(name + ".crossings." + std::to_string(k), speciesCount_[k]);
+        s.keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
+    }
+}
+
+void MaserBoundary::setBox(double lo, double hi) {
+    require(std::isfinite(lo) && std::isfinite(hi) && hi > lo,
+            "maser box: the downstream end (" + str(hi) + ") must lie downstream of the upstream end (" + str(lo) + ")");
+    lo_ = lo;
+    hi_ = hi;
+}
+
+std::size_t MaserBoundary::maserSpecies(Simulation& s, std::size_t chuteSpecies) {
+    require(!active(s), "maser: add its species before activating it");
+    require(chuteSpecies < s.species().size(),
+            "maser: chute species " + std::to_string(chuteSpecies) + " does not exist");
+    const std::size_t copy = s.species().addCopy(chuteSpecies, "maser-" + s.species()[chuteSpecies].name);
+    OneWayPeriodicBox& box = s.state().domain.oneWay;
+    require(box.outflowSpecies.empty() || (box.lo == lo_ && box.hi == hi_), "maser: the box moved after its species were added");
+    box.lo = lo_;
+    box.hi = hi_;
+    box.outflowSpecies.resize(s.species().size(), -1);
+    box.outflowSpecies[copy] = static_cast<std::int32_t>(chuteSpecies);
+    return copy;
+}
+
+bool MaserBoundary::active(const Simulation& s) const { return s.domain().oneWay.active; }
+
+void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
+    require(!active(s), "maser: activated twice");
+    OneWayPeriodicBox& box = s.state().domain.oneWay;
+    require(box.lo == lo_ && box.hi == hi_, "maser: no maser species (call maserSpecies before activating)");
+    require(s.domain().lo.x() == lo_,
+            "maser: the domain must start at the box's upstream face x = " + str(lo_) + ", not " + str(s.domain().lo.x()));
+    require(std::isfinite(chuteEnd) && chuteEnd > hi_,
+            "maser: the chute must end downstream of the box (x = " + str(hi_) + "), got " + str(chuteEnd));
+    const ParticleStore& p = s.particles();
+    std::size_t mobile = 0;
+    double largest = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!box.isMember(p.species[i])) continue;
+        largest = std::max(largest, 2 * p.radius[i]);
+        mobile += !p.fixed[i];
+    }
+    require(mobile > 0, "maser: activated on a box with no particles (no mobile particle of a maser species)");
+    require(hi_ - lo_ >= 2 * largest, "maser: the box (length " + str(hi_ - lo_) +
+                                          ") must be longer than two diameters of its largest particle (" +
+                                          str(largest) + ")");
+    box.active = true;
+    if (seedChute) {
+        const std::size_t n = p.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (p.fixed[i] || !box.isMember(p.species[i])) continue;
+            const Vec3 x = p.position[i] + Vec3(hi_ - lo_, 0, 0), v = p.velocity[i], w = p.angularVelocity[i];
+            const std::size_t copy =
+                s.addParticle(x, p.radius[i], static_cast<std::size_t>(box.outflowSpecies[p.species[i]]), v, w);
+            seeded_ += 1;
+            seededMass_ += p.mass[copy];
+        }
+    }
+    Vec3 hi = s.domain().hi;
+    hi.x() = chuteEnd;
+    s.setDomain(s.domain().lo, hi);
+    s.setPeriodic(false, s.domain().periodic[1], s.domain().periodic[2]);
+}
+
+void MaserBoundary::afterDrift(Simulation& s) {
+    const OneWayPeriodicBox& box = s.domain().oneWay;
+    if (!box.active) return;
+    const double length = box.length();
+    ParticleStore& p = s.particles();
+    bool moved = false;
+    const std::size_t n = p.size();  // the copies, appended, are chute particles
+    for (std::size_t i = 0; i < n; ++i) {
+        if (p.fixed[i] || !box.isMember(p.species[i])) continue;
+        const double x = p.position[i].x();
+        if (x >= box.hi) {
+            const auto species = static_cast<std::size_t>(box.outflowSpecies[p.species[i]]);
+            const std::size_t copy =
+                s.addParticle(p.position[i], p.radius[i], species, p.velocity[i], p.angularVelocity[i]);
+            p.force[copy] = p.force[i];  // the last step's force, which the next contact forces start from
+            crossings_ += 1;
+            mass_ += p.mass[copy];
+            if (species < speciesCount_.size()) {
+                speciesCount_[species] += 1;
+                speciesMass_[species] += p.mass[copy];
+            }
+            p.position[i].x() -= length;
+            moved = true;
+        } else if (x < box.lo - 2 * p.radius[i]) {
+            // A diameter behind the upstream face, not at it: a particle just moved back from the
+            // downstream face meets the particles in front of it there and may be pushed back a
+            // little; moved forward at once it would land on its own copy.
+            p.position[i].x() += length;
+            backward_ += 1;
+            moved = true;
+        }
+    }
+    // Positions jumped by a box length: the neighbour list must be built anew (addParticle
+    // already asks for it when a copy was made).
+    if (moved) s.state().pairList.valid = false;
+}
+
+}  // namespace talus
