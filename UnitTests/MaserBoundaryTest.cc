@@ -41,12 +41,12 @@ void computeInitialForces(MaserScene& s) {
 
 }  // namespace
 
-// A at the downstream face and B at the upstream face overlap by 0.1 through the face. In the
+// A at the downstream face and B at the upstream face overlap by 0.02 through the face. In the
 // first phase (a periodic box) they push each other apart; once the maser is active only B
 // feels A (through A's image), with the same force as before, while A feels only the chute
 // particle C in front of it, which feels A in return.
 TEST(MaserBoundary, ForcesAcrossTheDownstreamFaceAreOneWay) {
-    const Vec3 a(-0.45, 2, 0), b(-9.55, 2, 0), c(0.4, 2, 0);
+    const Vec3 a(-0.48, 2, 0), b(-9.5, 2, 0), c(0.4, 2, 0);
     MaserScene periodic;
     periodic.arrange = [&](MaserScene& s) {
         s.addParticle(a, 0.5, 1);
@@ -73,6 +73,22 @@ TEST(MaserBoundary, ForcesAcrossTheDownstreamFaceAreOneWay) {
     EXPECT_LT(onA.x(), 0);
     EXPECT_EQ(onA, -onC) << "A feels C and nothing from B";
     EXPECT_EQ(active.pairList().oneWayPairs.size(), 1u);
+}
+
+// Past a tenth of the radius the pair stops being purely one way: at an overlap of 0.15 (30% of
+// the radius 0.5) A feels (0.15 - 0.05) / 0.15 of the force on B, in the opposite direction.
+TEST(MaserBoundary, DeepOverlapsAcrossTheFacePushBack) {
+    MaserScene active;
+    active.arrange = [](MaserScene& s) {
+        s.addParticle(Vec3(-0.4, 2, 0), 0.5, 1);
+        s.addParticle(Vec3(-9.55, 2, 0), 0.5, 1);
+        s.maser.activate(s, 10, /*seedChute*/ false);
+    };
+    computeInitialForces(active);
+    const Vec3 onA = active.particles().force[active.slotOf(0)], onB = active.particles().force[active.slotOf(1)];
+    EXPECT_GT(onB.x(), 0);
+    EXPECT_NEAR(onA.x(), -onB.x() * (0.15 - 0.05) / 0.15, 1e-9 * onB.x());
+    EXPECT_EQ(active.contactSummary().oneWayReactions, 1u);
 }
 
 // Three maser spheres in separate lanes move downstream at constant speeds without touching

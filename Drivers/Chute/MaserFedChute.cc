@@ -52,6 +52,7 @@ public:
         addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
         keepInRestart("run.activatedAt", activatedAt_);
         keepInRestart("run.boxParticles", boxParticles_);
+        keepInRestart("run.oneWayReactions", oneWayReactions_);
         for (std::size_t s = 0; s < 2; ++s) keepInRestart("run.boxMassDisplacement." + std::to_string(s), boxMassDisplacement_[s]);
     }
 
@@ -99,6 +100,7 @@ public:
     void actionsAfterTimeStep() override {
         outlet.apply(*this);
         if (activatedAt_ >= 0) accumulateBoxFlux();
+        oneWayReactions_ += static_cast<double>(contactSummary().oneWayReactions);
         if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
         const ChuteSnapshot box = measureChute(particles(), maserLength, width, maserSmall_, time(), 0, maserLength);
         sample(box);
@@ -208,11 +210,14 @@ private:
                     maser.createdMass(large), maser.createdMass(small),
                     maser.createdMass(small) / std::max(1e-300, maser.createdMass()), carried[0], carried[1],
                     carried[1] / std::max(1e-300, carried[0] + carried[1]));
+        std::printf("%s: pairs across the maser's face beyond the one-way overlap limit (%g of the radius): %.0f pair-steps\n",
+                    name().c_str(), OneWayPeriodicBox::reactionOverlap, oneWayReactions_);
         if (!conserved) throw Error("mass is not conserved between the maser, the chute and the outlet");
     }
 
     std::size_t maserLarge_ = 3, maserSmall_ = 4, maserBase_ = 5;
     double activatedAt_ = -1, boxParticles_ = 0, boxMassDisplacement_[2] = {0, 0};
+    double oneWayReactions_ = 0;  // pair-steps across the maser's face past the reaction overlap
     PlateauDetector plateau_{50, 0.02};
     std::ofstream series_;
 };

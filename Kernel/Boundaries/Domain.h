@@ -24,6 +24,13 @@ struct OneWayPeriodicBox {
     // (MaserBoundary::maserSpecies), so that the restart file keeps it in both phases.
     std::vector<std::int32_t> outflowSpecies;
 
+    // Past this overlap (a fraction of the smaller radius) a pair across the face stops being
+    // purely one way: the downstream particle feels the part of the normal force that the
+    // overlap beyond it makes (continuous, zero at the threshold). Normal overlaps are a few
+    // thousandths of a radius; the valve only keeps a slow flow from pressing a downstream
+    // particle through an upstream one that sits against the base (ContactForceLoop::oneWayPairs).
+    static constexpr double reactionOverlap = 0.1;
+
     double length() const { return hi - lo; }
     bool isMember(std::uint32_t species) const {
         return species < outflowSpecies.size() && outflowSpecies[species] >= 0;

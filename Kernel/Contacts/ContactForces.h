@@ -38,6 +38,7 @@ struct ContactSummary {
     double maxOverlapFraction = 0;  // largest dn / min(ri, rj) (walls: dn / ri)
     std::uint64_t worstA = 0, worstB = 0;  // global ids (worstB = -1 for a wall)
     bool worstIsWall = false;
+    std::size_t oneWayReactions = 0;  // one-way pairs past OneWayPeriodicBox::reactionOverlap
 };
 
 // Kinematics of particle i against a partner at distance rij along the unit normal n (SPEC.md 1);
@@ -241,10 +242,21 @@ public:
                                   history.lastNormalForce * c.inverseReducedMass;
             if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
             const Law& law = laws_(p_.species[i], p_.species[j]);
-            if (distance < sumR)
-                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
-            else
+            const double smallerRadius = std::min(p_.radius[i], p_.radius[j]);
+            if (distance < sumR) {
+                touch(i, j, c, arms, history, law, smallerRadius);
+                // Beyond a tenth of the radius j feels the share of the normal force that the
+                // excess overlap makes: in a slow flow, j may be pushed on from behind while i,
+                // in front of j's image, sits against the base, and the overlap would grow
+                // without bound (OneWayPeriodicBox::reactionOverlap).
+                const double excess = c.overlap - OneWayPeriodicBox::reactionOverlap * smallerRadius;
+                if (excess > 0 && history.lastNormalForce > 0) {
+                    p_.force[j] -= (history.lastNormalForce * excess / c.overlap) * n;
+                    ++summary_.oneWayReactions;
+                }
+            } else {
                 history = apart(i, j, c, arms, history, law);
+            }
             list.oneWayHistory.set(k, history);
         }
         oneWay_ = false;

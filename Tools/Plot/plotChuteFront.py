@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""Side view of a long chute at one saved frame of NAME.data, with its height and composition
+along x: spheres drawn in the x-z plane (large red, small blue, base grey), the flow height
+and the large spheres' volume share, both per 5-wide window. The height is the solids volume
+per unit base area divided by 0.6 (the height of a layer of packing fraction 0.6 with the same
+solids), which single spheres bouncing ahead of the flow hardly change. The front is the end of
+the last window, counted from the inflow, whose height is at least 1. The script prints the
+inflow height (the mean over the first box length of the chute), the front, the highest window
+within 30 behind the front and the large share there: a bulbous head is a front higher than
+the inflow, made mostly of large spheres.
+
+    /usr/bin/python3 Tools/Plot/plotChuteFront.py NAME.data out.png [time]
+        [--large S,S] [--small S,S] [--box LENGTH]
+
+time: the frame closest to it (default: the last). --large/--small: the species indices of the
+large and small spheres (default 0,3 and 1,4: MaserFedChute's chute and maser species);
+--box: the maser box length (default 20): the chute starts there.
+"""
+import argparse
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.collections import PatchCollection
+from matplotlib.patches import Circle
+import numpy as np
+
+
+def read_frame(path, wanted):
+    """The frame of a .data file closest to time `wanted` (None: the last): time, particle rows,
+    width along y (from the frame header)."""
+    best = None
+    with open(path) as f:
+        line_number = 0
+        while True:
+            header = f.readline()
+            line_number += 1
+            if not header:
+                break
+            fields = header.split()
+            if len(fields) != 8:
+                sys.exit(f"plotChuteFront: {path} line {line_number}: expected a frame header of 8 fields")
+            count, time = int(fields[0]), float(fields[1])
+            width = float(fields[6]) - float(fields[3])
+            lines = [f.readline() for _ in range(count)]
+            if count and not lines[-1]:
+                sys.exit(f"plotChuteFront: {path}: the frame at t = {time} is truncated")
+            line_number += count
+            if wanted is None or best is None or abs(time - wanted) <= abs(best[0] - wanted):
+                best = (time, lines, width)
+    if best is None:
+        sys.exit(f"plotChuteFront: {path} holds no frame")
+    return best[0], np.loadtxt(best[1], ndmin=2), best[2]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("data")
+    parser.add_argument("out")
+    parser.add_argument("time", nargs="?", type=float)
+    parser.add_argument("--large", default="0,3")
+    parser.add_argument("--small", default="1,4")
+    parser.add_argument("--box", type=float, default=20)
+    args = parser.parse_args()
+    time, p, width = read_frame(args.data, args.time)
+    x, z, r, species = p[:, 0], p[:, 2], p[:, 6], p[:, 13].astype(int)
+    large = np.isin(species, [int(s) for s in args.large.split(",")])
+    small = np.isin(species, [int(s) for s in args.small.split(",")])
+    mobile = large | small
+    if not (mobile & (x >= args.box)).any():
+        sys.exit("plotChuteFront: no sphere in the chute at this frame")
+
+    window = 5.0
+    edges = np.arange(0, np.ceil(x[mobile].max()) + window, window)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    volume = 4 / 3 * np.pi * r**3
+    index = np.clip(np.floor(x / window).astype(int), 0, len(centres) - 1)
+    solids = np.bincount(index[mobile], weights=volume[mobile], minlength=len(centres))
+    solidsLarge = np.bincount(index[large], weights=volume[large], minlength=len(centres))
+    height = solids / (window * width * 0.6)
+    share = np.where(solids > 0, solidsLarge / np.maximum(solids, 1e-300), np.nan)
+    inChute = centres > args.box
+    inflowWindows = inChute & (centres < 2 * args.box)
+    inflow = height[inflowWindows].mean()
+    # The front: the end of the flow's connected part, from the inflow on.
+    k = np.flatnonzero(inChute)[0]
+    while k + 1 < len(centres) and height[k + 1] >= 1:
+        k += 1
+    front = edges[k + 1]
+    head = (centres > front - 30) & (centres < front)
+    k_head = np.flatnonzero(head)[np.argmax(height[head])]
+    print(f"plotChuteFront: t = {time:g}: front at x = {front:.0f}; inflow height {inflow:.2f}; "
+          f"highest behind the front {height[k_head]:.2f} at x = {centres[k_head]:.1f} "
+          f"({height[k_head] / inflow:.2f} x the inflow); large share {share[k_head]:.2f} there, "
+          f"{np.nanmean(share[inflowWindows]):.2f} at the inflow; "
+          f"{np.count_nonzero(mobile & (x > front))} spheres ahead of the front")
+
+    figure, axes = plt.subplots(3, 1, figsize=(12, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1, 1]})
+    colours = np.where(large, "tab:red", "tab:blue")
+    colours = np.where(mobile, colours, "0.6")
+    circles = [Circle((xi, zi), ri) for xi, zi, ri in zip(x, z, r)]
+    axes[0].add_collection(PatchCollection(circles, facecolors=colours, edgecolors="none", alpha=0.5))
+    axes[0].axvline(args.box, color="k", lw=0.8, ls="--")
+    axes[0].axvline(front, color="tab:green", lw=0.8, ls=":")
+    axes[0].set_xlim(0, x[mobile].max() + 5)
+    axes[0].set_ylim(-1, max(np.nanmax(height) + 4, 8))
+    axes[0].set_ylabel("z")
+    axes[0].set_title(f"t = {time:g}: large (red) and small (blue) spheres, base (grey); maser box left of the "
+                      "dashed line, front at the dotted one")
+    axes[1].plot(centres, height, "k.-")
+    axes[1].axhline(inflow, color="tab:green", lw=0.8, label=f"inflow height {inflow:.2f}")
+    axes[1].set_ylabel("flow height")
+    axes[1].legend(loc="upper right")
+    axes[2].plot(centres, share, "r.-")
+    axes[2].set_ylim(0, 1)
+    axes[2].set_ylabel("large share (volume)")
+    axes[2].set_xlabel("x (downslope)")
+    figure.tight_layout()
+    figure.savefig(args.out, dpi=110)
+
+
+if __name__ == "__main__":
+    main()
