@@ -263,6 +263,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     progress.start(name(), state_.time, state_.settings.endTime, steps, mobile);
     const std::uint64_t every = saveEvery();
     std::size_t counted = state_.particles.size();
+    const std::uint64_t buildsAtStart = state_.pairList.builds;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         const bool saving = (state_.step + 1) % every == 0 || k == steps;
         actionsBeforeTimeStep();
@@ -278,6 +279,14 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         progress.update(state_.time, k, mobile);
     }
     progress.finish(state_.time, steps);
+    if (steps > 0) {
+        // Rebuilds cost a full neighbour search; boundaries that add, delete or move particles
+        // each force one.
+        const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
+        std::cout << name() << ": neighbour list built " << builds << " times, every "
+                  << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0)
+                  << " steps on average" << std::endl;
+    }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
 }
