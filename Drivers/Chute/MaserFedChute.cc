@@ -60,6 +60,10 @@ public:
         require(sizeRatio >= 1, "--size-ratio must be at least 1, got " + str(sizeRatio));
         require(inflowHeight > 0, "--inflow-height must be positive, got " + str(inflowHeight));
         require(chuteLength > 0, "--chute-length must be positive, got " + str(chuteLength));
+        const double largeDiameter = 2 * sizeRatio / (1 + sizeRatio);
+        require(maserLength >= 2 * largeDiameter, "--maser-length " + str(maserLength) +
+                                                      " is shorter than two large-sphere diameters (" +
+                                                      str(2 * largeDiameter) + ")");
         setChuteAngle(angle);
         setChuteGeometry({.length = maserLength, .width = width, .height = 40, .periodicEnds = true});
         maser.setBox(0, maserLength);
