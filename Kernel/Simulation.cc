@@ -196,8 +196,9 @@ std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, st
 
 void Simulation::removeParticle(std::size_t slot) {
     require(slot < state_.particles.size(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
+    const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);
     state_.particles.removeBySwap(slot);
-    state_.pairList.valid = false;
+    state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);
 }
 
 std::size_t Simulation::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {

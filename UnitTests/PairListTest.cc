@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "ContactTestScenes.h"
@@ -55,4 +56,60 @@ TEST(PairList, SkinChangesNoPhysics) {
     std::printf("[ measured ] skin 0.2 vs 0 after 1000 steps: position %.2e, velocity %.2e\n", position, velocity);
     EXPECT_LT(position, 1e-10);
     EXPECT_LT(velocity, 1e-8);
+}
+
+// Removing a particle (ParticleStore::removeBySwap moves the last one into its slot) keeps every
+// other pair's history under the same two ids, drops the removed particle's pairs, and the next
+// rebuild carries the springs over: without following the removal, a rebuild read the ids of
+// stale slots and gave springs to the wrong pairs (or read past the end).
+TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
+    using Key = std::pair<std::uint64_t, std::uint64_t>;
+    auto histories = [](const Scene& s) {
+        std::map<Key, ContactHistory> byIds;
+        const PairList& l = s.pairList();
+        const ParticleStore& p = s.particles();
+        for (std::size_t k = 0; k < l.pairs.size(); ++k) {
+            const std::uint64_t a = p.id[l.pairs[k].i], b = p.id[l.pairs[k].j];
+            ContactHistory h = l.history.get(k);
+            if (a > b && h.isTouching()) h.spring = -h.spring;  // as seen from the smaller id
+            byIds[{std::min(a, b), std::max(a, b)}] = h;
+        }
+        return byIds;
+    };
+    std::map<Key, ContactHistory> before;
+    std::size_t kept = 0, touching = 0, carried = 0;
+    Scene s;
+    s.setup = chuteScene;
+    s.afterStep = [&](Scene& s) {
+        if (s.step() == 300) {
+            before = histories(s);
+            // A mobile particle in a middle slot.
+            std::size_t slot = s.particles().size() / 2;
+            while (s.particles().fixed[slot]) ++slot;
+            const std::uint64_t removedId = s.particles().id[slot];
+            s.removeParticle(slot);
+            const auto after = histories(s);
+            for (const auto& [key, h] : before) {
+                if (key.first == removedId || key.second == removedId) {
+                    EXPECT_EQ(after.count(key), 0u);
+                    continue;
+                }
+                ASSERT_EQ(after.count(key), 1u);
+                EXPECT_EQ(after.at(key), h);
+                ++kept;
+                touching += h.isTouching() && !h.spring.isZero(0);
+            }
+            EXPECT_EQ(after.size(), kept);
+        }
+        if (s.step() == 301) {  // the list was built anew: springs of pairs that still touch carried over
+            for (const auto& [key, h] : histories(s))
+                if (h.isTouching() && before.count(key) && before.at(key).isTouching()) {
+                    EXPECT_LT((h.spring - before.at(key).spring).norm(), 1e-3) << key.first << "-" << key.second;
+                    ++carried;
+                }
+        }
+    };
+    s.run(1e-4, 302 * 1e-4);
+    EXPECT_GT(touching, 20u);
+    EXPECT_GT(carried, 20u);
 }

@@ -160,4 +160,40 @@ void PairList::followPermutation(const std::vector<std::size_t>& order) {
     valid = false;
 }
 
+void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
+    auto follow = [&](std::uint32_t& slot) {
+        if (slot == last) slot = removed;
+    };
+    auto filter = [&](std::vector<ParticlePair>& list, ContactHistories& histories) {
+        std::vector<ParticlePair> kept;
+        ContactHistories keptHistories;
+        kept.reserve(list.size());
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            ParticlePair pair = list[k];
+            if (pair.i == removed || pair.j == removed) continue;
+            follow(pair.i);
+            follow(pair.j);
+            kept.push_back(pair);
+            keptHistories.push_back(histories.get(k));
+        }
+        list.swap(kept);
+        histories = std::move(keptHistories);
+    };
+    filter(pairs, history);
+    filter(oneWayPairs, oneWayHistory);
+    std::vector<WallCandidate> keptWalls;
+    ContactHistories keptWallHistory;
+    for (std::size_t k = 0; k < wallPairs.size(); ++k) {
+        WallCandidate candidate = wallPairs[k];
+        if (candidate.particle == removed) continue;
+        follow(candidate.particle);
+        keptWalls.push_back(candidate);
+        keptWallHistory.push_back(wallHistory.get(k));
+    }
+    wallPairs.swap(keptWalls);
+    wallHistory = std::move(keptWallHistory);
+    referencePosition.clear();
+    valid = false;
+}
+
 }  // namespace talus

@@ -64,6 +64,12 @@ public:
     // their histories. The reference positions are dropped, which forces that rebuild.
     void followPermutation(const std::vector<std::size_t>& order);
 
+    // The particle in slot `removed` is gone and the last one, `last`, took its slot
+    // (ParticleStore::removeBySwap): the removed particle's pairs are dropped and the moved
+    // one's follow it, so that a rebuild still finds every history by the right ids. Forces that
+    // rebuild.
+    void followRemoval(std::uint32_t removed, std::uint32_t last);
+
 private:
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
 };
