@@ -57,18 +57,18 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     //    particle can have).
     std::vector<CarriedHistory> carried;
     const std::uint64_t wallKey = ~std::uint64_t{0};
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const ContactHistory h = history.get(k);
-        if (!worthCarrying(h)) continue;
-        std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
-    }
-    for (std::size_t k = 0; k < oneWayPairs.size(); ++k) {
-        const ContactHistory h = oneWayHistory.get(k);
-        if (!worthCarrying(h)) continue;
-        std::uint64_t a = particles.id[oneWayPairs[k].i], b = particles.id[oneWayPairs[k].j];
-        carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
-    }
+    // Direct and one-way pairs share the keys: a pair keeps its spring when one of its particles
+    // passes the one-way box's face and the pair changes list.
+    auto remember = [&](const std::vector<ParticlePair>& list, const ContactHistories& histories) {
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const ContactHistory h = histories.get(k);
+            if (!worthCarrying(h)) continue;
+            std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
+            carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
+        }
+    };
+    remember(pairs, history);
+    remember(oneWayPairs, oneWayHistory);
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
         if (worthCarrying(wallHistory.get(k)))
             carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory.get(k)});
@@ -82,19 +82,17 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     pairs.clear();
     reach = skin + 2 * maxSpeed * dt;
     grid.findPairs(particles, domain, reach, pairs);
-    history.assign(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        std::uint64_t a = particles.id[pairs[k].i], b = particles.id[pairs[k].j];
-        if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
-            history.set(k, a < b ? c->history : reversed(c->history));
-    }
+    auto restore = [&](const std::vector<ParticlePair>& list, ContactHistories& histories) {
+        histories.assign(list.size());
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
+            if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
+                histories.set(k, a < b ? c->history : reversed(c->history));
+        }
+    };
+    restore(pairs, history);
     listOneWayPairs(particles, domain);
-    oneWayHistory.assign(oneWayPairs.size());
-    for (std::size_t k = 0; k < oneWayPairs.size(); ++k) {
-        std::uint64_t a = particles.id[oneWayPairs[k].i], b = particles.id[oneWayPairs[k].j];
-        if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
-            oneWayHistory.set(k, a < b ? c->history : reversed(c->history));
-    }
+    restore(oneWayPairs, oneWayHistory);
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
         for (std::uint32_t i = 0; i < particles.size(); ++i) {
@@ -160,38 +158,43 @@ void PairList::followPermutation(const std::vector<std::size_t>& order) {
     valid = false;
 }
 
+namespace {
+
+// Keeps the entries (and their histories) for which `keep` returns true; `keep` may change them.
+template <class Entry, class Keep>
+void keepIf(std::vector<Entry>& list, ContactHistories& histories, Keep keep) {
+    std::vector<Entry> kept;
+    ContactHistories keptHistories;
+    kept.reserve(list.size());
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        Entry entry = list[k];
+        if (!keep(entry)) continue;
+        kept.push_back(entry);
+        keptHistories.push_back(histories.get(k));
+    }
+    list.swap(kept);
+    histories = std::move(keptHistories);
+}
+
+}  // namespace
+
 void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
     auto follow = [&](std::uint32_t& slot) {
         if (slot == last) slot = removed;
     };
-    auto filter = [&](std::vector<ParticlePair>& list, ContactHistories& histories) {
-        std::vector<ParticlePair> kept;
-        ContactHistories keptHistories;
-        kept.reserve(list.size());
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            ParticlePair pair = list[k];
-            if (pair.i == removed || pair.j == removed) continue;
-            follow(pair.i);
-            follow(pair.j);
-            kept.push_back(pair);
-            keptHistories.push_back(histories.get(k));
-        }
-        list.swap(kept);
-        histories = std::move(keptHistories);
+    auto keepPair = [&](ParticlePair& pair) {
+        if (pair.i == removed || pair.j == removed) return false;
+        follow(pair.i);
+        follow(pair.j);
+        return true;
     };
-    filter(pairs, history);
-    filter(oneWayPairs, oneWayHistory);
-    std::vector<WallCandidate> keptWalls;
-    ContactHistories keptWallHistory;
-    for (std::size_t k = 0; k < wallPairs.size(); ++k) {
-        WallCandidate candidate = wallPairs[k];
-        if (candidate.particle == removed) continue;
+    keepIf(pairs, history, keepPair);
+    keepIf(oneWayPairs, oneWayHistory, keepPair);
+    keepIf(wallPairs, wallHistory, [&](WallCandidate& candidate) {
+        if (candidate.particle == removed) return false;
         follow(candidate.particle);
-        keptWalls.push_back(candidate);
-        keptWallHistory.push_back(wallHistory.get(k));
-    }
-    wallPairs.swap(keptWalls);
-    wallHistory = std::move(keptWallHistory);
+        return true;
+    });
     referencePosition.clear();
     valid = false;
 }
