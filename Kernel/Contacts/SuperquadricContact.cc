@@ -1,0 +1,186 @@
+#include "Contacts/SuperquadricContact.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace talus {
+
+ShapeValue PlacedSuperquadric::at(const Vec3& x) const {
+    ShapeValue v = shape->evaluate(rotation.transpose() * (x - centre));
+    v.gradient = rotation * v.gradient;
+    v.hessian = rotation * v.hessian * rotation.transpose();
+    return v;
+}
+
+namespace {
+
+using Vec4 = Eigen::Matrix<double, 4, 1>;
+using Mat4 = Eigen::Matrix<double, 4, 4>;
+
+struct NewtonResult {
+    bool converged = false;
+    SuperquadricContactPoint point;
+    int iterations = 0;
+};
+
+// Phi of the header, its gradient rows scaled by a length so that all four components are
+// dimensionless and comparable.
+struct Residual {
+    Vec4 phi;
+    ShapeValue i, j;
+};
+Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const Vec3& x, double mu, double scale) {
+    Residual r{Vec4::Zero(), i.at(x), j.at(x)};
+    r.phi.head<3>() = scale * (r.i.gradient + mu * mu * r.j.gradient);
+    r.phi[3] = r.i.value - r.j.value;
+    return r;
+}
+
+// The damped Newton solve of SPEC.md 4 from `start`.
+NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
+                   const SuperquadricContactSettings& settings, double scale) {
+    NewtonResult result;
+    Vec3 x = start.point;
+    double mu = start.multiplier;
+    Residual r = residual(i, j, x, mu, scale);
+    for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
+        result.iterations = iteration;
+        Mat4 jacobian;
+        jacobian.topLeftCorner<3, 3>() = scale * (r.i.hessian + mu * mu * r.j.hessian);
+        jacobian.topRightCorner<3, 1>() = scale * 2 * mu * r.j.gradient;
+        jacobian.bottomLeftCorner<1, 3>() = (r.i.gradient - r.j.gradient).transpose();
+        jacobian(3, 3) = 0;
+        const Eigen::PartialPivLU<Mat4> lu(jacobian);
+        const Vec4 step = lu.solve(-r.phi);
+        if (!step.allFinite()) return result;
+        // Halve the step while the residual does not decrease.
+        double t = 1;
+        Residual next = residual(i, j, x + step.head<3>(), mu + step[3], scale);
+        while (!(next.phi.norm() < r.phi.norm()) && t > 1e-10) {
+            t *= 0.5;
+            next = residual(i, j, x + t * step.head<3>(), mu + t * step[3], scale);
+        }
+        if (!(next.phi.norm() < r.phi.norm())) {
+            // No decrease along the Newton direction: at the solution to round-off, or stuck.
+            result.converged = r.phi.norm() <= settings.tolerance * 10;
+            break;
+        }
+        x += t * step.head<3>();
+        mu += t * step[3];
+        r = next;
+        if (t * step.head<3>().norm() <= settings.tolerance * scale && std::abs(r.phi[3]) <= settings.tolerance &&
+            r.phi.head<3>().norm() <= settings.tolerance * (1 + scale * r.i.gradient.norm())) {
+            result.converged = true;
+            break;
+        }
+    }
+    result.point = {x, std::abs(mu)};
+    return result;
+}
+
+// The distance d >= 0 from a point inside the body along the unit direction u to its surface:
+// F(x + d u) = 0, by Newton's method kept inside a bracket [inside, outside] (bisection when a
+// Newton step leaves it), since F of a blocky shape is very flat inside and steep outside.
+double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u) {
+    if (body.shape->isEllipsoid()) {
+        // F(x + d u) = |s + d v|^2 - 1 with s, v the body-frame point and direction scaled by
+        // the semi-axes: the positive root of a quadratic (s.s < 1 inside), in the form that
+        // does not cancel.
+        const Vec3 inverseAxes = body.shape->semiAxes().cwiseInverse();
+        const Vec3 s = (body.rotation.transpose() * (x - body.centre)).cwiseProduct(inverseAxes);
+        const Vec3 v = (body.rotation.transpose() * u).cwiseProduct(inverseAxes);
+        const double a = v.squaredNorm(), b = s.dot(v), c = s.squaredNorm() - 1;
+        const double root = std::sqrt(b * b - a * c);
+        return b > 0 ? -c / (b + root) : (root - b) / a;
+    }
+    double inside = 0, outside = 2 * body.shape->boundingRadius() + (x - body.centre).norm();
+    double d = 0;
+    for (int k = 0; k < 200; ++k) {
+        const ShapeValue v = body.at(x + d * u);
+        if (v.value < 0) inside = d;
+        else outside = d;
+        const double slope = v.gradient.dot(u);
+        double next = slope > 0 ? d - v.value / slope : 0.5 * (inside + outside);
+        if (!(next > inside && next < outside)) next = 0.5 * (inside + outside);
+        if (std::abs(next - d) <= 1e-15 * (1 + d) || outside - inside <= 1e-15 * outside) return next;
+        d = next;
+    }
+    return d;
+}
+
+Superquadric morphed(const Superquadric& shape, double s) {
+    const double R = shape.boundingRadius();
+    auto lerp = [s](double from, double to) { return from + s * (to - from); };
+    return {lerp(R, shape.a()), lerp(R, shape.b()), lerp(R, shape.c()), lerp(1, shape.e1()), lerp(1, shape.e2())};
+}
+
+}  // namespace
+
+SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                            const SuperquadricContactPoint* start,
+                                            const SuperquadricContactSettings& settings) {
+    SuperquadricContact contact;
+    const double Ri = i.shape->boundingRadius(), Rj = j.shape->boundingRadius();
+    const Vec3 between = j.centre - i.centre;
+    const double distance = between.norm();
+    if (distance >= Ri + Rj) {  // the bounding spheres are apart: so are the bodies
+        contact.converged = true;
+        return contact;
+    }
+    if (i.shape->isSphere() && j.shape->isSphere()) {
+        // Closed form: Fi = Fj on the line of centres where it divides them as ri : rj, and
+        // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (SPEC.md 1).
+        contact.converged = true;
+        contact.touching = true;
+        const Vec3 iToJ = between / distance;
+        contact.solution = {i.centre + Ri / (Ri + Rj) * between, std::sqrt(Rj / Ri)};
+        contact.normal = -iToJ;
+        contact.overlap = Ri + Rj - distance;
+        contact.contactPoint = i.centre + (Ri - 0.5 * contact.overlap) * iToJ;
+        return contact;
+    }
+    const double scale = std::min(Ri, Rj);
+    // The bounding spheres' contact point: the middle of their overlap on the line of centres.
+    const Vec3 iToJ = distance > 0 ? Vec3(between / distance) : Vec3::UnitZ();
+    const SuperquadricContactPoint sphereStart{i.centre + (Ri - 0.5 * (Ri + Rj - distance)) * iToJ, 1};
+
+    NewtonResult found = solve(i, j, start ? *start : sphereStart, settings, scale);
+    contact.iterations = found.iterations;
+    if (!found.converged && start) {
+        found = solve(i, j, sphereStart, settings, scale);
+        contact.iterations += found.iterations;
+    }
+    // Plan B: from the bounding spheres to the true shapes in stages.
+    for (int stages = 4; !found.converged && stages <= 16; stages *= 2) {
+        SuperquadricContactPoint point = sphereStart;
+        bool ok = true;
+        for (int k = 1; k <= stages && ok; ++k) {
+            const double s = static_cast<double>(k) / stages;
+            const Superquadric shapeI = morphed(*i.shape, s), shapeJ = morphed(*j.shape, s);
+            const NewtonResult stage = solve({&shapeI, i.centre, i.rotation}, {&shapeJ, j.centre, j.rotation}, point,
+                                             settings, scale);
+            contact.iterations += stage.iterations;
+            ok = stage.converged;
+            point = stage.point;
+        }
+        contact.morphStages = stages;
+        if (ok) found = {true, point, 0};
+    }
+    if (!found.converged) return contact;
+
+    contact.converged = true;
+    contact.solution = found.point;
+    const Vec3& x = found.point.point;
+    const ShapeValue atI = i.at(x);
+    contact.touching = atI.value < 0;
+    const Vec3 outOfI = atI.gradient.normalized();
+    contact.normal = -outOfI;
+    if (!contact.touching) return contact;
+    const double di = distanceToSurface(i, x, outOfI), dj = distanceToSurface(j, x, -outOfI);
+    contact.overlap = di + dj;
+    contact.contactPoint = x + 0.5 * (di - dj) * outOfI;
+    return contact;
+}
+
+}  // namespace talus

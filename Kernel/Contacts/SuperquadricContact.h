@@ -1,0 +1,60 @@
+// Contact detection between two convex superquadrics, the exact stage of SPEC.md 4 (after the
+// neighbour grid and the bounding spheres).
+//
+// The contact point Xc minimises Fi + Fj subject to Fi = Fj (F the lab-frame shape functions),
+// found by a damped Newton solve of
+//   Phi(X, mu) = [grad Fi + mu^2 grad Fj ; Fi - Fj] = 0
+// with the Jacobian [[Hi + mu^2 Hj, 2 mu grad Fj], [(grad Fi - grad Fj)^T, 0]], the step halved
+// while |Phi| does not decrease. The bodies touch iff Fi(Xc) = Fj(Xc) < 0. A lasting contact
+// warm-starts from its last Xc and mu; a new one from the bounding spheres' contact point with
+// mu = 1. If Newton fails, the shapes are morphed from their bounding spheres to the true
+// shapes in 4, then 8, then 16 stages, each stage's solution starting the next (the thesis's
+// "plan B", seed:8125-8215).
+#pragma once
+
+#include "Math/Vector.h"
+#include "Shapes/Superquadric.h"
+
+namespace talus {
+
+// A superquadric placed in the lab frame: x_lab = centre + rotation x_body.
+struct PlacedSuperquadric {
+    const Superquadric* shape;
+    Vec3 centre;
+    Mat3 rotation;
+
+    // F, grad F and the Hessian in the lab frame (SPEC.md 4: A grad f, A H A^T).
+    ShapeValue at(const Vec3& x) const;
+    double valueAt(const Vec3& x) const { return shape->shapeFunction(rotation.transpose() * (x - centre)); }
+};
+
+// The point and multiplier a contact remembers from step to step (the warm start).
+struct SuperquadricContactPoint {
+    Vec3 point = Vec3::Zero();
+    double multiplier = 1;
+};
+
+struct SuperquadricContactSettings {
+    double tolerance = 1e-12;   // relative: |dX| / (bounding radius) and |Fi - Fj|
+    int maxIterations = 50;     // per Newton solve
+};
+
+struct SuperquadricContact {
+    bool converged = false;     // the answer is certain: apart bounding spheres, or Newton (or plan B) found the point
+    bool touching = false;      // Fi(Xc) = Fj(Xc) < 0
+    SuperquadricContactPoint solution;
+    Vec3 normal = Vec3::Zero();        // unit, from j to i (the kernel's convention, SPEC.md 1): -grad Fi/|grad Fi|
+    double overlap = 0;                // di + dj with Fi(Xc - di normal) = 0, Fj(Xc + dj normal) = 0
+    Vec3 contactPoint = Vec3::Zero();  // middle of the overlap along the normal (the sphere path's point)
+    int iterations = 0;                // Newton iterations in all, plan B included
+    int morphStages = 0;               // 0: plain Newton sufficed; else the stages plan B needed
+};
+
+// Exact contact of i and j, warm-started from `start` if given (a lasting contact), else from
+// the bounding spheres. Pairs whose bounding spheres do not overlap are not touching (and not
+// solved).
+SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                            const SuperquadricContactPoint* start = nullptr,
+                                            const SuperquadricContactSettings& settings = {});
+
+}  // namespace talus

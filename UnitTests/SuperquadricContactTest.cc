@@ -1,0 +1,92 @@
+// Superquadric contact detection (Contacts/SuperquadricContact.h) against the sphere path and
+// against the independent reference of SuperquadricReference.h. The full sweep (10^5
+// configurations, a table per class) is Drivers/Validation/SuperquadricContactSweep; here a
+// few hundred per class.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "SuperquadricReference.h"
+
+using namespace talus;
+
+TEST(SuperquadricContact, SpheresGiveTheSpherePathsGeometry) {
+    const Superquadric a = Superquadric::sphere(0.5), b = Superquadric::sphere(0.3);
+    std::mt19937_64 random(3);
+    for (int trial = 0; trial < 100; ++trial) {
+        const Mat3 Ri = reference::randomRotation(random), Rj = reference::randomRotation(random);
+        const Vec3 xi(0.1, -0.2, 0.3), direction = reference::randomRotation(random) * Vec3::UnitX();
+        const double distance = 0.8 - 0.08 * (trial + 0.5) / 100;  // overlaps up to 10% of the smaller radius
+        const Vec3 xj = xi + distance * direction;
+        const SuperquadricContact c = findSuperquadricContact({&a, xi, Ri}, {&b, xj, Rj});
+        ASSERT_TRUE(c.converged && c.touching);
+        // SPEC.md 1: dn = ri + rj - rij, n from j to i, contact point at the middle of the overlap.
+        const double overlap = 0.8 - distance;
+        EXPECT_NEAR(c.overlap, overlap, 1e-12);
+        EXPECT_LT((c.normal + direction).norm(), 1e-12);
+        EXPECT_LT((c.contactPoint - (xi + (0.5 - overlap / 2) * direction)).norm(), 1e-12);
+    }
+}
+
+TEST(SuperquadricContact, ApartWhenTheBoundingSpheresAreApart) {
+    const Superquadric a = Superquadric::ellipsoid(1, 0.5, 0.5);
+    const SuperquadricContact c =
+        findSuperquadricContact({&a, Vec3::Zero(), Mat3::Identity()}, {&a, Vec3(2.01, 0, 0), Mat3::Identity()});
+    EXPECT_FALSE(c.touching);
+    EXPECT_EQ(c.iterations, 0);
+}
+
+TEST(SuperquadricContact, AgreesWithTheIndependentReferenceOnEveryClass) {
+    std::mt19937_64 random(2026);
+    for (reference::Case kind : {reference::Case::spheres, reference::Case::ellipsoids, reference::Case::blocky,
+                                 reference::Case::parallelFaces, reference::Case::edgeOnFace, reference::Case::needles}) {
+        int failures = 0, wrongSide = 0;
+        double worst = 0;
+        for (int trial = 0; trial < 60; ++trial) {
+            const reference::Configuration c = reference::randomConfiguration(kind, random);
+            const SuperquadricContact found = findSuperquadricContact(c.i, c.j);
+            const reference::Contact expected = reference::contact(c.i, c.j);
+            if (!found.converged) {
+                ++failures;
+                continue;
+            }
+            const bool expectTouching = expected.value < 0;
+            if (found.touching != expectTouching) {
+                // Only at grazing contact may the two disagree (|F| at round-off).
+                if (std::abs(expected.value) > 1e-12) ++wrongSide;
+                continue;
+            }
+            const double size = std::min(c.shapeI.semiAxes().minCoeff(), c.shapeJ.semiAxes().minCoeff());
+            worst = std::max(worst, std::abs(found.overlap - expected.overlap) / size);
+            if (found.touching) {
+                EXPECT_LT((found.normal - expected.normal).norm(), 1e-6) << name(kind);
+            }
+        }
+        EXPECT_EQ(failures, 0) << name(kind);
+        EXPECT_EQ(wrongSide, 0) << name(kind);
+        EXPECT_LT(worst, 1e-6) << name(kind);
+        std::printf("%s: worst overlap error %.2g of the smaller semi-axis\n", name(kind), worst);
+    }
+}
+
+TEST(SuperquadricContact, WarmStartFollowsALastingContactInFewIterations) {
+    std::mt19937_64 random(5);
+    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::blocky}) {
+        reference::Configuration c = reference::randomConfiguration(kind, random);
+        c.j.centre += 0.06 * (c.i.centre - c.j.centre).normalized() * c.shapeJ.semiAxes().minCoeff();
+        SuperquadricContact last = findSuperquadricContact(c.i, c.j);
+        ASSERT_TRUE(last.converged && last.touching) << name(kind);
+        // The particles move and turn a little per step, as in a simulation.
+        const Mat3 turn = Eigen::AngleAxisd(1e-3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+        for (int step = 0; step < 50; ++step) {
+            c.j.centre += Vec3(1e-4, -2e-4, 1e-4);
+            c.j.rotation = turn * c.j.rotation;
+            const SuperquadricContact warm = findSuperquadricContact(c.i, c.j, &last.solution);
+            const SuperquadricContact cold = findSuperquadricContact(c.i, c.j);
+            ASSERT_TRUE(warm.converged) << name(kind);
+            EXPECT_LE(warm.iterations, 4) << name(kind);
+            EXPECT_NEAR(warm.overlap, cold.overlap, 1e-12);
+            last = warm;
+        }
+    }
+}
