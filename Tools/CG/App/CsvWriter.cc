@@ -1,0 +1,49 @@
+#include "App/CsvWriter.h"
+
+#include "IO/InputError.h"
+
+namespace talus::cg {
+
+CsvWriter::CsvWriter(const std::string& path, const Coordinates& coordinates, bool withTime,
+                     const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments)
+    : path_(path), file_(std::fopen(path.c_str(), "w")), axes_(coordinates.kernelAxes()), withTime_(withTime) {
+    if (file_ == nullptr) throw InputError("-o: cannot write " + path);
+    for (const std::string& line : comments) std::fprintf(file_, "# %s\n", line.c_str());
+    std::string units = "# units (M mass, L length, T time):";
+    std::string names;
+    auto add = [&](const std::string& name, const std::string& unit) {
+        units += " " + name + " [" + unit + "]";
+        if (!names.empty()) names += ',';
+        names += name;
+    };
+    if (withTime) add("t", "T");
+    for (int k : axes_) add(std::string(1, axisLetter(k)), "L");
+    for (const OutputColumn& c : fields) add(c.name, c.unit);
+    std::fprintf(file_, "%s\n%s\n", units.c_str(), names.c_str());
+}
+
+CsvWriter::~CsvWriter() {
+    if (file_ != nullptr) std::fclose(file_);
+}
+
+void CsvWriter::writeRow(double time, const Vec3& point, const std::vector<double>& values) {
+    bool first = true;
+    auto put = [&](double v) {
+        std::fprintf(file_, first ? "%.12g" : ",%.12g", v);
+        first = false;
+    };
+    if (withTime_) put(time);
+    for (int k : axes_) put(point[k]);
+    for (double v : values) put(v);
+    std::fputc('\n', file_);
+}
+
+void CsvWriter::close() {
+    if (file_ == nullptr) return;
+    const bool failed = std::ferror(file_) != 0;
+    const bool closeFailed = std::fclose(file_) != 0;
+    file_ = nullptr;
+    if (failed || closeFailed) throw InputError("-o: writing " + path_ + " failed (disk full?)");
+}
+
+}  // namespace talus::cg

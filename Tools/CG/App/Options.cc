@@ -1,0 +1,219 @@
+#include "App/Options.h"
+
+#include <cctype>
+#include <cmath>
+
+#include "IO/InputError.h"
+#include "IO/TextFile.h"
+
+namespace talus::cg {
+
+namespace {
+
+class Arguments {
+public:
+    Arguments(int argc, const char* const* argv) : args_(argv + 1, argv + argc) {}
+    bool done() const { return at_ >= args_.size(); }
+    std::string next() { return args_[at_++]; }
+    bool hasValue() const { return at_ < args_.size(); }
+    const std::string& peek() const { return args_[at_]; }
+
+    std::string text(const std::string& option) {
+        if (!hasValue()) throw InputError(option + ": missing value");
+        return next();
+    }
+    double real(const std::string& option) {
+        const std::string token = text(option);
+        double value = 0;
+        if (!toReal(token, value) || !std::isfinite(value)) throw InputError(option + ": '" + token + "' is not a number");
+        return value;
+    }
+    long integer(const std::string& option) {
+        const std::string token = text(option);
+        long value = 0;
+        if (!toInteger(token, value)) throw InputError(option + ": '" + token + "' is not an integer");
+        return value;
+    }
+    bool onOff(const std::string& option) {
+        const std::string token = text(option);
+        if (token == "on") return true;
+        if (token == "off") return false;
+        throw InputError(option + ": expected on or off, found '" + token + "'");
+    }
+
+private:
+    std::vector<std::string> args_;
+    std::size_t at_ = 0;
+};
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::string item;
+    for (char c : text) {
+        if (c == ',') {
+            items.push_back(item);
+            item.clear();
+        } else {
+            item += c;
+        }
+    }
+    items.push_back(item);
+    return items;
+}
+
+// MercuryCG writes options with one dash (-coordinates, -function, -timeaverage): accept those
+// spellings as well as ours.
+std::string canonical(const std::string& option) {
+    if (option.size() > 2 && option[0] == '-' && option[1] != '-') {
+        const std::string word = option.substr(1);
+        if (word == "timeaverage") return "--time-average";
+        if (word == "tmin") return "--time-min";
+        if (word == "tmax") return "--time-max";
+        if (word == "help" || word == "coordinates" || word == "function" || word == "width" || word == "points" ||
+            word == "periodic" || word == "density" || word == "stress" || word == "output") {
+            return "--" + word;
+        }
+    }
+    return option;
+}
+
+}  // namespace
+
+ProgramOptions parseOptions(int argc, const char* const* argv) {
+    ProgramOptions o;
+    Arguments args(argc, argv);
+    while (!args.done()) {
+        const std::string given = args.next();
+        const std::string option = canonical(given);
+        if (option == "--help" || option == "-h") {
+            o.help = true;
+        } else if (option == "--data") {
+            o.dataPath = args.text(given);
+        } else if (option == "--fstat") {
+            o.fstatPath = args.text(given);
+        } else if (option == "--restart") {
+            o.restartPath = args.text(given);
+        } else if (option == "--stress") {
+            o.stress = args.onOff(given);
+        } else if (option == "-o" || option == "--output") {
+            o.outputPath = args.text(given);
+        } else if (option == "--function") {
+            o.shape = kernelShapeFromName(args.text(given));
+        } else if (option == "-w" || option == "--width") {
+            o.width = args.real(given);
+        } else if (option == "--widths") {
+            o.widths = Vec3{args.real(given), args.real(given), args.real(given)};
+        } else if (option == "--width-matrix") {
+            double b[6];
+            for (double& value : b) value = args.real(given);
+            o.widthMatrix = std::array<double, 9>{b[0], b[1], b[2], b[1], b[3], b[4], b[2], b[4], b[5]};
+        } else if (option == "--coordinates") {
+            o.coordinates = args.text(given);
+        } else if (option == "-n") {
+            o.counts.clear();
+            o.counts.push_back(args.integer(given));
+            long value = 0;
+            while (o.counts.size() < 3 && args.hasValue() && toInteger(args.peek(), value)) {
+                args.next();
+                o.counts.push_back(value);
+            }
+        } else if (option == "-x" || option == "-y" || option == "-z") {
+            const int axis = option[1] - 'x';
+            const double lo = args.real(given), hi = args.real(given);
+            if (!(hi > lo)) throw InputError(given + ": the range must have max > min, found " + str(lo) + " " + str(hi));
+            o.range[axis] = std::array<double, 2>{lo, hi};
+        } else if (option == "--points") {
+            o.pointsPath = args.text(given);
+        } else if (option == "--periodic") {
+            const std::string list = args.text(given);
+            std::array<bool, 3> periodic{false, false, false};
+            if (list != "none") {
+                for (const std::string& item : splitList(list)) {
+                    if (item != "x" && item != "y" && item != "z" && item != "X" && item != "Y" && item != "Z") {
+                        throw InputError(given + ": expected a list of x, y, z (e.g. x,y) or none, found '" + list + "'");
+                    }
+                    periodic[std::tolower(static_cast<unsigned char>(item[0])) - 'x'] = true;
+                }
+            }
+            o.periodic = periodic;
+        } else if (option == "--density") {
+            std::vector<double> densities;
+            for (const std::string& item : splitList(args.text(given))) {
+                double value = 0;
+                if (!toReal(item, value) || !(value > 0)) throw InputError(given + ": '" + item + "' is not a positive density");
+                densities.push_back(value);
+            }
+            o.densities = densities;
+        } else if (option == "--fixed") {
+            const std::string mode = args.text(given);
+            if (mode != "include" && mode != "exclude") throw InputError(given + ": expected include or exclude, found '" + mode + "'");
+            o.excludeFixed = mode == "exclude";
+        } else if (option == "--time-min") {
+            o.timeMin = args.real(given);
+        } else if (option == "--time-max") {
+            o.timeMax = args.real(given);
+        } else if (option == "--time-average") {
+            o.timeAverage = true;
+        } else if (option == "--progress-interval") {
+            o.progressInterval = args.real(given);
+        } else if (!given.empty() && given[0] == '-') {
+            throw InputError("unknown option '" + given + "' (see --help)");
+        } else if (o.name.empty()) {
+            o.name = given;
+            if (o.name.ends_with(".data")) o.name.resize(o.name.size() - 5);
+        } else {
+            throw InputError("unexpected argument '" + given + "': only one run NAME is taken (see --help)");
+        }
+    }
+    if (o.help) return o;
+    if (o.name.empty() && o.dataPath.empty()) throw InputError("no input: give a run NAME (reads NAME.data) or --data FILE (see --help)");
+    if (int(o.width.has_value()) + int(o.widths.has_value()) + int(o.widthMatrix.has_value()) > 1) {
+        throw InputError("--width, --widths and --width-matrix exclude each other: give one");
+    }
+    if (!o.pointsPath.empty() && !o.counts.empty()) throw InputError("-n and --points exclude each other: give one");
+    if (o.timeMax < o.timeMin) throw InputError("--time-max " + str(o.timeMax) + " is below --time-min " + str(o.timeMin));
+    return o;
+}
+
+std::string usage() {
+    return R"(usage: talus-cg NAME [options]     (reads NAME.data, and NAME.fstat, NAME.restart when present)
+
+Coarse-grains DEM output (.data/.fstat of Talus or MercuryDPM) into continuum fields
+(SPEC.md 6; Documentation/CoarseGraining.md): density, volume fraction, momentum, velocity,
+kinetic stress, contact stress, per-species density and concentration.
+
+input:
+  --data FILE             particle file (default NAME.data)
+  --fstat FILE            contact file for the contact stress (default NAME.fstat when present)
+  --stress on|off         contact stress (default: on when a .fstat file is found)
+  --restart FILE|none     densities, periodic directions, fixed particles (default NAME.restart when present)
+  --density d0,d1,...     density of each species (default from the restart file, else 6/pi)
+  --periodic x,y|none     periodic directions (default from the restart file, else none)
+  --fixed include|exclude fixed particles (from the restart file) in the particle fields (default include)
+
+coarse-graining function:
+  --function NAME         Lucy (default), Gauss or Heaviside
+  -w, --width W           isotropic width (default 1): Lucy and Heaviside cut-off radius, Gauss standard deviation
+  --widths WX WY WZ       a width per direction (diagonal anisotropic kernel)
+  --width-matrix BXX BXY BXZ BYY BYZ BZZ
+                          a symmetric positive definite width matrix B = A^-1 (rotated anisotropic kernel)
+  --coordinates C         XYZ (default), XY, XZ, YZ, X, Y or Z: the resolved directions; the others
+                          are averaged over the domain box of the .data header
+
+where:
+  -n N [N [N]]            grid points per resolved direction (default 100 in 1-D, 50 in 2-D, 20 in 3-D)
+  -x MIN MAX, -y .., -z ..  grid range (default the domain box); points at the cell centres
+  --points FILE           evaluate at the points of FILE instead (x y z, or the resolved coordinates, per line)
+
+when:
+  --time-min T, --time-max T   frames with T_min <= t <= T_max (default all)
+  --time-average          average the fields over the selected frames (default: write every frame)
+
+output:
+  -o, --output FILE       CSV file (default NAME.cg.csv)
+  --progress-interval S   wall seconds between progress lines on stderr (default 5)
+  --help                  this text
+)";
+}
+
+}  // namespace talus::cg

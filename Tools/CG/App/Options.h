@@ -1,0 +1,46 @@
+// The options of talus-cg (Documentation/CoarseGraining.md lists them with examples).
+// Parsing errors throw InputError naming the offending option.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "IO/ParticleFrame.h"
+#include "Kernels/KernelProfile.h"
+
+namespace talus::cg {
+
+struct ProgramOptions {
+    bool help = false;
+    std::string name;          // NAME: NAME.data, NAME.fstat, NAME.restart
+    std::string dataPath;      // --data (default NAME.data)
+    std::string fstatPath;     // --fstat (default NAME.fstat when it exists)
+    std::string restartPath;   // --restart (default NAME.restart when it exists; "none": no)
+    std::optional<bool> stress;          // --stress on|off (default: on when a .fstat is found)
+    std::string outputPath;    // -o (default NAME.cg.csv)
+
+    KernelShape shape = KernelShape::Lucy;  // --function
+    std::optional<double> width;            // -w / --width
+    std::optional<Vec3> widths;             // --widths wx wy wz
+    std::optional<std::array<double, 9>> widthMatrix;  // --width-matrix bxx bxy bxz byy byz bzz
+    std::string coordinates = "XYZ";        // --coordinates
+
+    std::vector<long> counts;               // -n
+    std::array<std::optional<std::array<double, 2>>, 3> range;  // -x -y -z
+    std::string pointsPath;                 // --points
+
+    std::optional<std::array<bool, 3>> periodic;  // --periodic x,y | none
+    std::optional<std::vector<double>> densities; // --density d0,d1,...
+    bool excludeFixed = false;                    // --fixed include|exclude
+
+    double timeMin = -1e300, timeMax = 1e300;     // --time-min, --time-max
+    bool timeAverage = false;                     // --time-average
+    double progressInterval = 5;                  // --progress-interval (wall seconds)
+};
+
+ProgramOptions parseOptions(int argc, const char* const* argv);
+std::string usage();
+
+}  // namespace talus::cg

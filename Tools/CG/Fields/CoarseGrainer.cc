@@ -1,0 +1,306 @@
+#include "Fields/CoarseGrainer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <unordered_map>
+
+#include "IO/InputError.h"
+
+namespace talus::cg {
+
+namespace {
+
+// The radial shapes of KernelProfile.h as small functors, so that the particle loop is compiled
+// once per shape (no switch per particle). They return f(q^2) without the normalisation.
+struct LucyShape {
+    static constexpr double cutoffSquared = 1.0;
+    double operator()(double q2) const {
+        const double q = std::sqrt(q2);
+        return 1 + q2 * (-6 + q * (8 - 3 * q));
+    }
+};
+struct GaussShape {
+    static constexpr double cutoffSquared = 9.0;
+    double operator()(double q2) const { return std::exp(-0.5 * q2); }
+};
+struct HeavisideShape {
+    static constexpr double cutoffSquared = 1.0;
+    double operator()(double) const { return 1.0; }
+};
+
+std::string lineOf(const std::string& path, long line) { return path + " line " + std::to_string(line); }
+
+}  // namespace
+
+CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
+    : setup_(std::move(setup)), profile_(setup_.shape, setup_.coordinates.dimension()) {
+    setup_.width.restrictTo(setup_.coordinates);
+    if (setup_.speciesDensity.empty()) throw InputError("--density: at least one species density is needed");
+    for (double rho : setup_.speciesDensity) {
+        if (!(rho > 0) || !std::isfinite(rho)) throw InputError("--density: densities must be positive, found " + str(rho));
+    }
+    layout_.species = static_cast<int>(setup_.speciesDensity.size());
+    layout_.contactStress = setup_.contactStress;
+    for (int k = 0; k < 3; ++k) {
+        halfExtent_[k] = setup_.coordinates.resolves(k) ? setup_.width.supportHalfExtent(k, profile_.cutoff()) : 0.0;
+    }
+}
+
+void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox& box,
+                                std::vector<Vec3>& shifts) const {
+    shifts.assign(1, Vec3{0, 0, 0});
+    for (int k = 0; k < 3; ++k) {
+        const double length = box.length(k);
+        if (!setup_.periodic[k] || !setup_.coordinates.resolves(k) || !(length > 0)) continue;
+        // Every image whose support overlaps the periodic box (a kernel wider than the box
+        // needs several).
+        const long reach = static_cast<long>(std::ceil(halfExtent_[k] / length)) + 1;
+        std::vector<Vec3> next;
+        for (const Vec3& shift : shifts) {
+            for (long n = -reach; n <= reach; ++n) {
+                const double s = double(n) * length;
+                if (lo[k] + s < box.hi[k] && hi[k] + s > box.lo[k]) {
+                    Vec3 image = shift;
+                    image[k] = s;
+                    next.push_back(image);
+                }
+            }
+        }
+        if (!next.empty()) shifts = std::move(next);
+    }
+}
+
+void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
+                             const std::string& dataPath, const std::string& fstatPath) {
+    const std::size_t n = frame.size();
+    scale_ = setup_.width.determinant() / setup_.coordinates.averagedLength(frame.box);
+    if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
+        throw InputError(lineOf(dataPath, frame.headerLine) + ": the frame at t = " + str(frame.time) + " has " +
+                         std::to_string(n) + " particles, but the restart file describes " +
+                         std::to_string(setup_.excluded.size()) +
+                         ": its fixed particles cannot be matched (drop --fixed exclude)");
+    }
+    position_.clear();
+    velocity_.clear();
+    mass_.clear();
+    volume_.clear();
+    species_.clear();
+    std::vector<Vec3> boxLo, boxHi, shifts;
+    for (std::size_t p = 0; p < n; ++p) {
+        const int s = frame.species[p];
+        if (s >= layout_.species) {
+            throw InputError(lineOf(dataPath, frame.headerLine + 1 + static_cast<long>(p)) + ": a particle of species " +
+                             std::to_string(s) + ", but densities are known for " + std::to_string(layout_.species) +
+                             " species only (--density d0,d1,... or --restart)");
+        }
+        if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
+        const double r = frame.radius[p];
+        const double volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        Vec3 lo, hi;
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = frame.position[p][k] - halfExtent_[k];
+            hi[k] = frame.position[p][k] + halfExtent_[k];
+        }
+        imageShifts(lo, hi, frame.box, shifts);
+        for (const Vec3& shift : shifts) {
+            Vec3 x = frame.position[p];
+            for (int k = 0; k < 3; ++k) {
+                x[k] += shift[k];
+                lo[k] = x[k] - halfExtent_[k];
+                hi[k] = x[k] + halfExtent_[k];
+            }
+            position_.push_back(x);
+            velocity_.push_back(frame.velocity[p]);
+            mass_.push_back(setup_.speciesDensity[s] * volume);
+            volume_.push_back(volume);
+            species_.push_back(s);
+            boxLo.push_back(lo);
+            boxHi.push_back(hi);
+        }
+    }
+    Vec3 cellSize;
+    for (int k = 0; k < 3; ++k) cellSize[k] = std::max(2 * halfExtent_[k], 1e-12);
+    particleBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
+    boxLo.clear();
+    boxHi.clear();
+
+    contactStart_.clear();
+    contactSegment_.clear();
+    contactTensor_.clear();
+    if (!setup_.contactStress || contacts == nullptr) {
+        contactBins_.build({}, {}, setup_.coordinates.resolvesAxes(), cellSize);
+        return;
+    }
+    // A pair may be written once (Talus and MercuryDPM skip the side of a fixed particle) or
+    // once from each side (fstat.md): each line counts 1/(lines of its pair), so every contact
+    // counts once whichever convention the file follows.
+    std::unordered_map<std::uint64_t, int> linesOfPair;
+    auto key = [](long i, long j) {
+        const auto a = static_cast<std::uint64_t>(std::min(i, j)), b = static_cast<std::uint64_t>(std::max(i, j));
+        return (a << 32) | b;
+    };
+    for (const ContactLine& c : contacts->contacts) {
+        if (c.i >= static_cast<long>(n) || c.j >= static_cast<long>(n)) {
+            throw InputError(lineOf(fstatPath, c.line) + ": particle " + std::to_string(std::max(c.i, c.j)) +
+                             " is not in the .data frame at t = " + str(frame.time) + " (" + std::to_string(n) +
+                             " particles; files of runs that deleted particles are not supported yet)");
+        }
+        if (!c.isWall()) ++linesOfPair[key(c.i, c.j)];
+    }
+    auto minimumImage = [&](Vec3 d) {
+        for (int k = 0; k < 3; ++k) {
+            const double length = frame.box.length(k);
+            if (length > 0) d[k] -= length * std::round(d[k] / length);
+        }
+        return d;
+    };
+    for (const ContactLine& c : contacts->contacts) {
+        const Vec3& xi = frame.position[c.i];
+        const double ri = frame.radius[c.i];
+        // The contact point lies r_i - dn/2 from the centre of i (fstat.md): a cheap check that
+        // the two files describe the same particles.
+        const Vec3 toCentre = minimumImage({xi[0] - c.point[0], xi[1] - c.point[1], xi[2] - c.point[2]});
+        const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
+        const double expected = ri - 0.5 * c.overlap;
+        const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
+        if (std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
+            throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
+                             " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
+                             " (frame t = " + str(frame.time) + "), but r - dn/2 = " + str(expected) +
+                             ": the .fstat and .data files do not describe the same particles");
+        }
+        // Branch b from the far end to x_i: the partner's centre (its image next to i: the
+        // normal points from j to i) for pairs, the contact point for walls (SPEC.md 6).
+        Vec3 b;
+        double weight = 1;
+        if (c.isWall()) {
+            b = toCentre;
+        } else {
+            const double length = ri + frame.radius[c.j] - c.overlap;
+            for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
+            weight = 1.0 / linesOfPair[key(c.i, c.j)];
+        }
+        std::array<double, 9> tensor;
+        for (int r = 0; r < 3; ++r) {
+            for (int col = 0; col < 3; ++col) tensor[3 * r + col] = weight * c.force[r] * b[col];
+        }
+        Vec3 lo, hi;
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(xi[k], xi[k] - b[k]) - halfExtent_[k];
+            hi[k] = std::max(xi[k], xi[k] - b[k]) + halfExtent_[k];
+        }
+        imageShifts(lo, hi, frame.box, shifts);
+        for (const Vec3& shift : shifts) {
+            Vec3 start = xi, l = lo, h = hi;
+            for (int k = 0; k < 3; ++k) {
+                start[k] += shift[k];
+                l[k] += shift[k];
+                h[k] += shift[k];
+            }
+            contactStart_.push_back(start);
+            contactSegment_.push_back({-b[0], -b[1], -b[2]});
+            contactTensor_.push_back(tensor);
+            boxLo.push_back(l);
+            boxHi.push_back(h);
+        }
+    }
+    contactBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
+}
+
+template <class Profile, bool Diagonal>
+void CoarseGrainer::evaluateParticles(const std::vector<Vec3>& points, std::vector<double>& sums) const {
+    const Profile shape;
+    const int fields = layout_.count();
+    const auto& a = setup_.width.a();
+    const double weightScale = scale_ * profile_.normalisation();
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        double* row = sums.data() + p * fields;
+        const Vec3& r = points[p];
+        double rho = 0, nu = 0, m[3] = {0, 0, 0}, k[6] = {0, 0, 0, 0, 0, 0};
+        const auto range = particleBins_.sourcesNear(r);
+        for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
+            const std::uint32_t i = *it;
+            const double d0 = r[0] - position_[i][0], d1 = r[1] - position_[i][1], d2 = r[2] - position_[i][2];
+            double q2;
+            if constexpr (Diagonal) {
+                // A = diag(1/w): three products, not a matrix-vector product.
+                const double u0 = a[0] * d0, u1 = a[4] * d1, u2 = a[8] * d2;
+                q2 = u0 * u0 + u1 * u1 + u2 * u2;
+            } else {
+                const double u0 = a[0] * d0 + a[1] * d1 + a[2] * d2;
+                const double u1 = a[3] * d0 + a[4] * d1 + a[5] * d2;
+                const double u2 = a[6] * d0 + a[7] * d1 + a[8] * d2;
+                q2 = u0 * u0 + u1 * u1 + u2 * u2;
+            }
+            if (q2 >= Profile::cutoffSquared) continue;
+            const double w = weightScale * shape(q2);
+            const double mw = mass_[i] * w;
+            const Vec3& v = velocity_[i];
+            rho += mw;
+            nu += volume_[i] * w;
+            m[0] += mw * v[0];
+            m[1] += mw * v[1];
+            m[2] += mw * v[2];
+            k[0] += mw * v[0] * v[0];
+            k[1] += mw * v[0] * v[1];
+            k[2] += mw * v[0] * v[2];
+            k[3] += mw * v[1] * v[1];
+            k[4] += mw * v[1] * v[2];
+            k[5] += mw * v[2] * v[2];
+            row[FieldSums::speciesDensity + species_[i]] += mw;
+        }
+        row[FieldSums::density] = rho;
+        row[FieldSums::volumeFraction] = nu;
+        for (int c = 0; c < 3; ++c) row[FieldSums::momentum + c] = m[c];
+        for (int c = 0; c < 6; ++c) row[FieldSums::momentumFlux + c] = k[c];
+    }
+}
+
+void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vector<double>& sums) const {
+    const int fields = layout_.count();
+    const int first = layout_.contactStressIndex();
+    const auto& a = setup_.width.a();
+    auto apply = [&](const double d[3], double u[3]) {
+        for (int r = 0; r < 3; ++r) u[r] = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
+    };
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        double* row = sums.data() + p * fields + first;
+        const auto range = contactBins_.sourcesNear(points[p]);
+        for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
+            const std::uint32_t c = *it;
+            // u(s) = A (r - x_i - s segment) = u0 + s e
+            const double d[3] = {points[p][0] - contactStart_[c][0], points[p][1] - contactStart_[c][1],
+                                 points[p][2] - contactStart_[c][2]};
+            const double g[3] = {-contactSegment_[c][0], -contactSegment_[c][1], -contactSegment_[c][2]};
+            double u0[3], e[3];
+            apply(d, u0);
+            apply(g, e);
+            const double line = profile_.lineIntegral(u0, e);
+            if (line == 0) continue;
+            const double w = scale_ * line;
+            for (int k = 0; k < 9; ++k) row[k] += w * contactTensor_[c][k];
+        }
+    }
+}
+
+void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const {
+    sums.assign(points.size() * layout_.count(), 0.0);
+    const bool diagonal = setup_.width.isDiagonal();
+    switch (setup_.shape) {
+        case KernelShape::Lucy:
+            diagonal ? evaluateParticles<LucyShape, true>(points, sums) : evaluateParticles<LucyShape, false>(points, sums);
+            break;
+        case KernelShape::Gauss:
+            diagonal ? evaluateParticles<GaussShape, true>(points, sums) : evaluateParticles<GaussShape, false>(points, sums);
+            break;
+        case KernelShape::Heaviside:
+            diagonal ? evaluateParticles<HeavisideShape, true>(points, sums)
+                     : evaluateParticles<HeavisideShape, false>(points, sums);
+            break;
+    }
+    if (setup_.contactStress) evaluateContacts(points, sums);
+}
+
+}  // namespace talus::cg

@@ -1,0 +1,60 @@
+#include "Fields/DerivedFields.h"
+
+#include <algorithm>
+
+namespace talus::cg {
+
+namespace {
+const char* const vectorSuffix[3] = {"X", "Y", "Z"};
+const char* const symmetricSuffix[6] = {"XX", "XY", "XZ", "YY", "YZ", "ZZ"};
+const char* const tensorSuffix[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+constexpr int symmetricRow[6] = {0, 0, 0, 1, 1, 2};
+constexpr int symmetricCol[6] = {0, 1, 2, 1, 2, 2};
+}  // namespace
+
+std::vector<OutputColumn> derivedColumns(const FieldSums& layout) {
+    std::vector<OutputColumn> columns;
+    columns.push_back({"Density", "M/L^3"});
+    columns.push_back({"VolumeFraction", "1"});
+    for (auto s : vectorSuffix) columns.push_back({std::string("Momentum") + s, "M/(L^2 T)"});
+    for (auto s : vectorSuffix) columns.push_back({std::string("Velocity") + s, "L/T"});
+    for (auto s : symmetricSuffix) columns.push_back({std::string("KineticStress") + s, "M/(L T^2)"});
+    if (layout.contactStress) {
+        for (auto s : tensorSuffix) columns.push_back({std::string("ContactStress") + s, "M/(L T^2)"});
+        for (auto s : tensorSuffix) columns.push_back({std::string("Stress") + s, "M/(L T^2)"});
+    }
+    for (int s = 0; s < layout.species; ++s) columns.push_back({"Density_s" + std::to_string(s), "M/L^3"});
+    for (int s = 0; s < layout.species; ++s) columns.push_back({"Concentration_s" + std::to_string(s), "1"});
+    return columns;
+}
+
+void appendDerivedFields(const FieldSums& layout, const double* sums, std::vector<double>& values) {
+    const double rho = sums[FieldSums::density];
+    const double* p = sums + FieldSums::momentum;
+    const double* k = sums + FieldSums::momentumFlux;
+    values.push_back(rho);
+    values.push_back(sums[FieldSums::volumeFraction]);
+    for (int c = 0; c < 3; ++c) values.push_back(p[c]);
+    for (int c = 0; c < 3; ++c) values.push_back(rho > 0 ? p[c] / rho : 0.0);
+    double kinetic[9] = {};
+    for (int c = 0; c < 6; ++c) {
+        const int r = symmetricRow[c], q = symmetricCol[c];
+        const double value = rho > 0 ? k[c] - p[r] * p[q] / rho : 0.0;
+        kinetic[3 * r + q] = kinetic[3 * q + r] = value;
+        values.push_back(value);
+    }
+    if (layout.contactStress) {
+        const double* contact = sums + layout.contactStressIndex();
+        for (int c = 0; c < 9; ++c) values.push_back(contact[c]);
+        for (int c = 0; c < 9; ++c) values.push_back(kinetic[c] + contact[c]);
+    }
+    for (int s = 0; s < layout.species; ++s) values.push_back(sums[layout.speciesDensityIndex(s)]);
+    for (int s = 0; s < layout.species; ++s) {
+        // A partial sum can exceed the full one by rounding (different summation order):
+        // clamp into [0, 1].
+        const double phi = rho > 0 ? sums[layout.speciesDensityIndex(s)] / rho : 0.0;
+        values.push_back(std::clamp(phi, 0.0, 1.0));
+    }
+}
+
+}  // namespace talus::cg

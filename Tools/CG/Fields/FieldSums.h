@@ -1,0 +1,32 @@
+// The additive coarse-grained sums evaluated at each point (SPEC.md 6; Goldhirsch 2010;
+// Weinhart et al. 2012), stored as one row of doubles per point:
+//
+//   Density            rho      = sum_i m_i W(r - r_i)
+//   VolumeFraction     nu       = sum_i V_i W(r - r_i)           (V_i particle volume)
+//   Momentum (3)       p        = sum_i m_i v_i W(r - r_i)
+//   MomentumFlux (6)   K        = sum_i m_i v_i v_i W(r - r_i)   (xx xy xz yy yz zz)
+//   Density of species s (S)    = sum over particles of species s of m_i W(r - r_i)
+//   ContactStress (9, optional) = sum_contacts w_c f_c (x) b_c int_0^1 W(r - r_c + s b_c) ds
+//
+// Sums are what time averaging averages; velocity, kinetic stress and concentration are
+// derived from them afterwards (DerivedFields.h).
+#pragma once
+
+namespace talus::cg {
+
+struct FieldSums {
+    static constexpr int density = 0;
+    static constexpr int volumeFraction = 1;
+    static constexpr int momentum = 2;      // 3 components
+    static constexpr int momentumFlux = 5;  // 6 components: xx xy xz yy yz zz
+    static constexpr int speciesDensity = 11;
+
+    int species = 1;
+    bool contactStress = false;
+
+    int speciesDensityIndex(int s) const { return speciesDensity + s; }
+    int contactStressIndex() const { return speciesDensity + species; }  // 9 components, row-major
+    int count() const { return speciesDensity + species + (contactStress ? 9 : 0); }
+};
+
+}  // namespace talus::cg

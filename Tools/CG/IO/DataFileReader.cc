@@ -1,0 +1,109 @@
+#include "IO/DataFileReader.h"
+
+#include <cmath>
+
+#include "IO/InputError.h"
+
+namespace talus::cg {
+
+namespace {
+constexpr int particleColumns = 14;  // data.md: x y z vx vy vz r th(3) w(3) info
+}
+
+DataFileReader::DataFileReader(const std::string& path) : file_(path) {}
+
+bool DataFileReader::readHeader(ParticleFrame& frame, long& count) {
+    // Blank lines between frames are tolerated; a file may end with one.
+    do {
+        if (!file_.nextLine(line_)) return false;
+        splitFields(line_, fields_);
+    } while (fields_.empty());
+    if (fields_.size() == 6) {
+        file_.fail("a 2-D .data header (6 fields: N t xmin ymin xmax ymax); only the 3-D layout "
+                   "(8 fields) is supported");
+    }
+    if (fields_.size() != 8) {
+        file_.fail("expected a frame header of 8 fields (N t xmin ymin zmin xmax ymax zmax), found " +
+                   std::to_string(fields_.size()));
+    }
+    count = parseInteger(fields_[0], file_, "the particle count N");
+    if (count < 0) file_.fail("negative particle count " + std::to_string(count));
+    frame.time = parseReal(fields_[1], file_, "the time t");
+    for (int k = 0; k < 3; ++k) {
+        frame.box.lo[k] = parseReal(fields_[2 + k], file_, "the domain minimum");
+        frame.box.hi[k] = parseReal(fields_[5 + k], file_, "the domain maximum");
+    }
+    frame.headerLine = file_.lineNumber();
+    return true;
+}
+
+bool DataFileReader::readFrame(ParticleFrame& frame) {
+    long count = 0;
+    if (!readHeader(frame, count)) return false;
+    frame.clear();
+    frame.position.reserve(count);
+    frame.velocity.reserve(count);
+    frame.radius.reserve(count);
+    frame.species.reserve(count);
+    for (long p = 0; p < count; ++p) {
+        if (!file_.nextLine(line_)) {
+            file_.failAtLine(file_.lineNumber() + 1,
+                             "file ends after " + std::to_string(p) + " of the " +
+                                 std::to_string(count) + " particle lines of the frame at t = " +
+                                 str(frame.time) + " (header line " +
+                                 std::to_string(frame.headerLine) + "): truncated file?");
+        }
+        splitFields(line_, fields_);
+        if (fields_.size() != particleColumns) {
+            file_.fail("expected " + std::to_string(particleColumns) + " columns, found " +
+                       std::to_string(fields_.size()));
+        }
+        Vec3 x, v;
+        for (int k = 0; k < 3; ++k) {
+            x[k] = parseReal(fields_[k], file_, "the position");
+            v[k] = parseReal(fields_[3 + k], file_, "the velocity");
+        }
+        const double r = parseReal(fields_[6], file_, "the radius");
+        if (!(r > 0)) file_.fail("radius must be positive, found " + std::string(fields_[6]));
+        // The info column is a floating-point value in general (data.md); here it must be the
+        // species index, since masses come from per-species densities.
+        const double info = parseReal(fields_[13], file_, "the info column (species)");
+        if (!(info >= 0) || info != std::floor(info) || info > 1e6) {
+            file_.fail("info column is " + std::string(fields_[13]) +
+                       ", not a species index (0, 1, ...)");
+        }
+        frame.position.push_back(x);
+        frame.velocity.push_back(v);
+        frame.radius.push_back(r);
+        frame.species.push_back(static_cast<int>(info));
+    }
+    return true;
+}
+
+bool DataFileReader::skipFrame(double& time) {
+    ParticleFrame header;
+    long count = 0;
+    if (!readHeader(header, count)) return false;
+    for (long p = 0; p < count; ++p) {
+        if (!file_.nextLine(line_)) {
+            file_.failAtLine(file_.lineNumber() + 1,
+                             "file ends after " + std::to_string(p) + " of the " +
+                                 std::to_string(count) + " particle lines of the frame at t = " +
+                                 str(header.time) + " (header line " +
+                                 std::to_string(header.headerLine) + "): truncated file?");
+        }
+    }
+    time = header.time;
+    return true;
+}
+
+std::vector<ParticleFrame> readAllDataFrames(const std::string& path) {
+    DataFileReader reader(path);
+    std::vector<ParticleFrame> frames;
+    ParticleFrame frame;
+    while (reader.readFrame(frame)) frames.push_back(frame);
+    if (frames.empty()) throw InputError(path + ": no frames (empty .data file)");
+    return frames;
+}
+
+}  // namespace talus::cg

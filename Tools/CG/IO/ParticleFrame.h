@@ -1,0 +1,38 @@
+// One saved step of a .data file: the particles as MercuryDPM's 3-D layout describes them
+// (Documentation/FileFormats/data.md). Structure of arrays, as in the kernel (DESIGN.md "Data layout").
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace talus::cg {
+
+using Vec3 = std::array<double, 3>;
+
+// The nominal domain of the frame header (the periodic box in periodic directions).
+struct DomainBox {
+    Vec3 lo{0, 0, 0};
+    Vec3 hi{0, 0, 0};
+    double length(int axis) const { return hi[axis] - lo[axis]; }
+};
+
+struct ParticleFrame {
+    double time = 0;
+    DomainBox box;
+    long headerLine = 0;  // line of the frame header in the .data file, for messages
+    // One entry per particle line, in file order (Talus: ascending global id; MercuryDPM: index).
+    std::vector<Vec3> position;
+    std::vector<Vec3> velocity;
+    std::vector<double> radius;
+    std::vector<int> species;  // the info column, which both codes fill with the species index
+
+    std::size_t size() const { return radius.size(); }
+    void clear() {
+        position.clear();
+        velocity.clear();
+        radius.clear();
+        species.clear();
+    }
+};
+
+}  // namespace talus::cg

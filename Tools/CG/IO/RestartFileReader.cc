@@ -1,0 +1,147 @@
+#include "IO/RestartFileReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <utility>
+
+#include "IO/InputError.h"
+#include "IO/TextFile.h"
+
+namespace talus::cg {
+
+namespace {
+
+// Talus restart format 4 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
+// `name density law...`, `particles N nextId` + N lines of 23 fields with id first, the species
+// at field 20 and the fixed flag at field 21.
+RestartInfo readTalusRestart(TextFile& file) {
+    RestartInfo info;
+    info.writer = "Talus";
+    std::string line;
+    std::vector<std::string_view> fields;
+    bool sawDomain = false, sawSpecies = false, sawParticles = false;
+    while (file.nextLine(line)) {
+        splitFields(line, fields);
+        if (fields.empty()) continue;
+        if (fields[0] == "time" && fields.size() >= 2) {
+            info.time = parseReal(fields[1], file, "the time");
+        } else if (fields[0] == "domain") {
+            if (fields.size() != 10) file.fail("expected 'domain' with 9 values, found " + std::to_string(fields.size() - 1));
+            for (int k = 0; k < 3; ++k) info.periodic[k] = parseInteger(fields[7 + k], file, "a periodic flag") != 0;
+            sawDomain = true;
+        } else if (fields[0] == "species") {
+            if (fields.size() != 2) file.fail("expected 'species COUNT'");
+            const long count = parseInteger(fields[1], file, "the species count");
+            for (long s = 0; s < count; ++s) {
+                if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the species list (truncated file?)");
+                splitFields(line, fields);
+                if (fields.size() < 3) file.fail("expected 'name density law ...' for species " + std::to_string(s));
+                const double density = parseReal(fields[1], file, "the density of species " + std::to_string(s));
+                if (!(density > 0)) file.fail("density of species " + std::to_string(s) + " must be positive");
+                info.speciesDensity.push_back(density);
+            }
+            sawSpecies = true;
+        } else if (fields[0] == "particles") {
+            if (fields.size() != 3) file.fail("expected 'particles COUNT NEXTID'");
+            const long count = parseInteger(fields[1], file, "the particle count");
+            std::vector<std::pair<long, bool>> idFixed;
+            idFixed.reserve(count);
+            for (long p = 0; p < count; ++p) {
+                if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
+                splitFields(line, fields);
+                if (fields.size() != 23) file.fail("expected 23 fields for a particle, found " + std::to_string(fields.size()));
+                idFixed.emplace_back(parseInteger(fields[0], file, "the particle id"),
+                                     parseInteger(fields[21], file, "the fixed flag") != 0);
+            }
+            // .data lines are in ascending id (data.md).
+            std::sort(idFixed.begin(), idFixed.end());
+            for (const auto& [id, fixed] : idFixed) info.fixed.push_back(fixed);
+            sawParticles = true;
+        }
+    }
+    if (!sawDomain || !sawSpecies || !sawParticles) {
+        throw InputError(file.path() + ": not a complete Talus restart file (missing " +
+                         std::string(!sawDomain ? "'domain'" : !sawSpecies ? "'species'" : "'particles'") +
+                         " section)");
+    }
+    return info;
+}
+
+// The value after `key` on a MercuryDPM line of `key value` pairs.
+bool valueAfter(const std::vector<std::string_view>& fields, std::string_view key, std::string_view& value) {
+    for (std::size_t k = 0; k + 1 < fields.size(); ++k) {
+        if (fields[k] == key) {
+            value = fields[k + 1];
+            return true;
+        }
+    }
+    return false;
+}
+
+// MercuryDPM restart: `Species S` then species lines with `id K density D` (mixed species have
+// idA/idB and no density), `PeriodicBoundary ... normal nx ny nz`, `Particles N` then lines
+// `BaseParticle id K ... invMass X` (X = 0 for fixed particles).
+RestartInfo readMercuryRestart(TextFile& file) {
+    RestartInfo info;
+    info.writer = "MercuryDPM";
+    std::string line;
+    std::vector<std::string_view> fields;
+    std::string_view value;
+    bool sawParticles = false;
+    while (file.nextLine(line)) {
+        splitFields(line, fields);
+        if (fields.empty()) continue;
+        if (fields[0] == "timeStep" && valueAfter(fields, "time", value)) {
+            info.time = parseReal(value, file, "the time");
+        } else if (fields[0].ends_with("Species") && !fields[0].ends_with("MixedSpecies") &&
+                   valueAfter(fields, "density", value)) {
+            std::string_view id;
+            if (!valueAfter(fields, "id", id)) file.fail("species line without 'id'");
+            const long s = parseInteger(id, file, "the species id");
+            if (s < 0 || s > 100000) file.fail("species id " + std::to_string(s) + " out of range");
+            if (static_cast<long>(info.speciesDensity.size()) <= s) info.speciesDensity.resize(s + 1, 0.0);
+            info.speciesDensity[s] = parseReal(value, file, "the density of species " + std::to_string(s));
+        } else if (fields[0] == "PeriodicBoundary") {
+            if (!valueAfter(fields, "normal", value)) file.fail("PeriodicBoundary without 'normal'");
+            const auto at = std::find(fields.begin(), fields.end(), std::string_view("normal")) - fields.begin();
+            if (at + 3 >= static_cast<long>(fields.size())) file.fail("PeriodicBoundary normal needs 3 values");
+            int axis = -1;
+            for (int k = 0; k < 3; ++k) {
+                const double n = parseReal(fields[at + 1 + k], file, "the periodic normal");
+                if (std::abs(n) > 1e-12) axis = (axis == -1) ? k : 3;
+            }
+            if (axis < 0 || axis > 2) file.fail("periodic boundary normal is not along x, y or z");
+            info.periodic[axis] = true;
+        } else if (fields[0] == "Particles" && fields.size() == 2) {
+            const long count = parseInteger(fields[1], file, "the particle count");
+            for (long p = 0; p < count; ++p) {
+                if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
+                splitFields(line, fields);
+                if (!valueAfter(fields, "invMass", value)) file.fail("particle line without 'invMass'");
+                info.fixed.push_back(parseReal(value, file, "the inverse mass") == 0.0);
+            }
+            sawParticles = true;
+        }
+    }
+    if (info.speciesDensity.empty() || !sawParticles) {
+        throw InputError(file.path() + ": not a complete MercuryDPM restart file (no species densities or no particles)");
+    }
+    for (std::size_t s = 0; s < info.speciesDensity.size(); ++s) {
+        if (!(info.speciesDensity[s] > 0)) throw InputError(file.path() + ": species " + std::to_string(s) + " has no positive density");
+    }
+    return info;
+}
+
+}  // namespace
+
+RestartInfo readRestartFile(const std::string& path) {
+    TextFile file(path);
+    std::string first;
+    if (!file.nextLine(first)) throw InputError(path + ": empty restart file");
+    if (first.starts_with("Talus restart")) return readTalusRestart(file);
+    if (first.starts_with("MercuryDPM")) return readMercuryRestart(file);
+    file.fail("not a restart file of Talus ('Talus restart ...') or MercuryDPM ('MercuryDPM ...')");
+}
+
+}  // namespace talus::cg
