@@ -105,40 +105,45 @@ double KernelProfile::lineIntegral(const double u0[3], const double e[3]) const 
     const double c = u0[0] * u0[0] + u0[1] * u0[1] + u0[2] * u0[2];
     const double R2 = cutoffSquared();
     if (a == 0) return value(c);  // a segment of zero length: a point
+    const double sqrtA = std::sqrt(a);
+    // tau = sqrt(a) (s - s*) with s* = -b/a the closest point: q^2 = tau^2 + m^2, ds = dtau/sqrt(a).
+    // tau at s = 0 and s = 1 are computed as projections, (a s + b)/sqrt(a), not from s*, which
+    // is huge for short segments far from the point and would cost digits.
     const double sStar = -b / a;
-    // m^2 evaluated at the closest point itself (not c - b^2/a, which cancels).
+    // m^2 at the closest point itself (not c - b^2/a, which cancels).
     double m2 = 0;
     for (int k = 0; k < 3; ++k) {
         const double uk = u0[k] + sStar * e[k];
         m2 += uk * uk;
     }
     if (m2 >= R2) return 0.0;
-    const double half = std::sqrt((R2 - m2) / a);
-    const double s0 = std::max(0.0, sStar - half);
-    const double s1 = std::min(1.0, sStar + half);
-    if (s1 <= s0) return 0.0;
-    const double sqrtA = std::sqrt(a);
-    // tau = sqrt(a) (s - s*): q^2 = tau^2 + m^2, ds = dtau / sqrt(a).
-    const double tau0 = sqrtA * (s0 - sStar);
-    const double tau1 = sqrtA * (s1 - sStar);
-    if (shape_ == KernelShape::Heaviside) return normalisation_ * (s1 - s0);
+    const double edge = std::sqrt(R2 - m2);
+    const double tau0 = std::max(b / sqrtA, -edge);
+    const double tau1 = std::min((a + b) / sqrtA, edge);
+    if (tau1 <= tau0) return 0.0;
     if (tau1 - tau0 < 1e-3) {
-        // Short interval: 8-point Gauss-Legendre in tau, split at the closest point, where
-        // Lucy's q^3 has its only non-smooth point.
+        // Short interval: the closed forms would lose digits (a difference of two nearly equal
+        // antiderivatives), and so would its length in tau. Integrate in s instead, with q^2
+        // from u0 + s e directly, by 8-point Gauss-Legendre split at the closest point (where
+        // Lucy's q^3 has its only non-smooth point).
+        const double s0 = b / sqrtA >= -edge ? 0.0 : sStar - edge / sqrtA;
+        const double s1 = (a + b) / sqrtA <= edge ? 1.0 : sStar + edge / sqrtA;
         auto gauss = [&](double lo, double hi) {
             const double mid = 0.5 * (lo + hi), rad = 0.5 * (hi - lo);
             double sum = 0;
             for (int k = 0; k < 4; ++k) {
                 for (double sign : {-1.0, 1.0}) {
-                    const double tau = mid + sign * rad * glNode[k];
-                    sum += glWeight[k] * value(std::min(tau * tau + m2, R2));
+                    const double s = mid + sign * rad * glNode[k];
+                    double q2 = 0;
+                    for (int c = 0; c < 3; ++c) q2 += (u0[c] + s * e[c]) * (u0[c] + s * e[c]);
+                    sum += glWeight[k] * value(q2);
                 }
             }
             return sum * rad;
         };
-        const double integral = (tau0 < 0 && tau1 > 0) ? gauss(tau0, 0) + gauss(0, tau1) : gauss(tau0, tau1);
-        return integral / sqrtA;
+        return (s0 < sStar && sStar < s1) ? gauss(s0, sStar) + gauss(sStar, s1) : gauss(s0, s1);
     }
+    if (shape_ == KernelShape::Heaviside) return normalisation_ * (tau1 - tau0) / sqrtA;
     if (shape_ == KernelShape::Gauss) {
         // int exp(-(tau^2 + m^2)/2) dtau = e^{-m^2/2} sqrt(pi/2) [erf(tau/sqrt 2)]
         const double r = std::numbers::sqrt2 / 2;

@@ -1,0 +1,171 @@
+// The contact stress (SPEC.md 6; Weinhart et al. 2012): each contact force spread along the
+// branch between the two centres (centre and contact point for walls) by the line integral of
+// the kernel, compressive positive.
+//
+// 1. The exact line integrals of KernelProfile (polynomial + asinh for Lucy, erf for Gauss)
+//    against Gauss-Legendre quadrature along the segment split where the integrand is not smooth.
+// 2. A pair pressed together along z with force f, depth profile: where the kernel lies wholly
+//    within the branch the stress is f per unit area (the force transmitted through every
+//    horizontal plane between the centres), the same whether the file lists the pair once or
+//    from both sides; its integral over z is the virial f b / area.
+// 3. A particle resting on a wall: the same between its centre and the contact point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "CGTestHelpers.h"
+#include "Fields/CoarseGrainer.h"
+#include "IO/InputError.h"
+
+using namespace talus::cg;
+using namespace talus::cg::test;
+
+TEST(ContactStress, ExactLineIntegralsAgreeWithQuadrature) {
+    std::mt19937_64 random(1);
+    std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+    const GaussLegendre gl(40);
+    for (KernelShape shape : {KernelShape::Lucy, KernelShape::Gauss, KernelShape::Heaviside}) {
+        for (int d = 1; d <= 3; ++d) {
+            const KernelProfile profile(shape, d);
+            const double scale = shape == KernelShape::Gauss ? 3.0 : 1.0;
+            for (int trial = 0; trial < 400; ++trial) {
+                double u0[3] = {0, 0, 0}, e[3] = {0, 0, 0};
+                for (int k = 0; k < d; ++k) {
+                    u0[k] = scale * coordinate(random);
+                    e[k] = scale * coordinate(random);
+                }
+                if (trial % 4 == 1) {  // a line through the evaluation point (m = 0)
+                    for (int k = 0; k < 3; ++k) u0[k] = -0.37 * e[k];
+                }
+                if (trial % 4 == 2) {  // a very short segment (the quadrature branch of the code)
+                    for (double& c : e) c *= 1e-5;
+                }
+                // Reference: panels split at the closest point and at the support's edges.
+                const double a = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+                const double b = u0[0] * e[0] + u0[1] * e[1] + u0[2] * e[2];
+                const double c = u0[0] * u0[0] + u0[1] * u0[1] + u0[2] * u0[2];
+                const double sStar = -b / a;
+                std::vector<double> breaks{sStar};
+                const double R2 = profile.cutoffSquared();
+                const double m2 = c - b * b / a;
+                if (m2 < R2) {
+                    breaks.push_back(sStar - std::sqrt((R2 - m2) / a));
+                    breaks.push_back(sStar + std::sqrt((R2 - m2) / a));
+                }
+                std::vector<double> s, w;
+                gl.panels(0, 1, breaks, s, w);
+                double reference = 0;
+                for (std::size_t k = 0; k < s.size(); ++k) reference += w[k] * profile.value(a * s[k] * s[k] + 2 * b * s[k] + c);
+                const double exact = profile.lineIntegral(u0, e);
+                ASSERT_NEAR(exact, reference, 1e-11 * std::max(1.0, std::abs(reference)))
+                    << kernelShapeName(shape) << " " << d << "-D trial " << trial << " u0 " << u0[0] << " e " << e[0];
+            }
+        }
+    }
+}
+
+namespace {
+
+struct Profile {
+    std::vector<double> z, stressZZ, stressXZ;
+};
+
+Profile depthProfile(KernelShape shape, const ParticleFrame& frame, const ContactFrame& contacts, double width,
+                     const std::vector<double>& z) {
+    CoarseGrainingSetup setup;
+    setup.shape = shape;
+    setup.coordinates = Coordinates::fromName("Z");
+    setup.width = WidthMatrix::isotropic(width);
+    setup.contactStress = true;
+    CoarseGrainer grainer(setup);
+    grainer.setFrame(frame, &contacts);
+    std::vector<Vec3> points;
+    for (double h : z) points.push_back({0, 0, h});
+    std::vector<double> sums;
+    grainer.evaluate(points, sums);
+    Profile p;
+    p.z = z;
+    const int fields = grainer.layout().count(), first = grainer.layout().contactStressIndex();
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        p.stressZZ.push_back(sums[i * fields + first + 8]);
+        p.stressXZ.push_back(sums[i * fields + first + 2]);
+    }
+    return p;
+}
+
+ContactLine pairLine(long i, long j, Vec3 point, Vec3 normal, double overlap, Vec3 force) {
+    ContactLine c;
+    c.i = i;
+    c.j = j;
+    c.point = point;
+    c.normal = normal;
+    c.overlap = overlap;
+    c.force = force;
+    return c;
+}
+
+}  // namespace
+
+TEST(ContactStress, PairTransmitsItsForceBetweenTheCentres) {
+    // Particle 0 at z = 2, particle 1 at z = 2.9 (radii 0.5, overlap 0.1), box 4 x 2.5 in x, y.
+    const DomainBox box{{0, 0, 0}, {4, 2.5, 6}};
+    const ParticleFrame frame = makeFrame({{1, 1, 2}, {1, 1, 2.9}}, {0.5, 0.5}, box);
+    const double f = 3.0, area = 4 * 2.5;
+    // Force on particle 1 from 0 is +f z (repulsive); normal from partner to particle.
+    ContactFrame once, twice;
+    once.contacts.push_back(pairLine(1, 0, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0.4, 0, f}));
+    twice = once;
+    twice.contacts.push_back(pairLine(0, 1, {1, 1, 2.45}, {0, 0, -1}, 0.1, {-0.4, 0, -f}));
+    const GaussLegendre gl(20);
+    for (KernelShape shape : {KernelShape::Lucy, KernelShape::Gauss, KernelShape::Heaviside}) {
+        const double width = shape == KernelShape::Gauss ? 0.05 : 0.15;
+        const double reach = shape == KernelShape::Gauss ? 3 * width : width;
+        const Profile middle = depthProfile(shape, frame, once, width, {2.45});
+        EXPECT_NEAR(middle.stressZZ[0], f / area, 1e-13) << kernelShapeName(shape);
+        EXPECT_NEAR(middle.stressXZ[0], 0.4 / area, 1e-13) << kernelShapeName(shape);
+        EXPECT_NEAR(depthProfile(shape, frame, twice, width, {2.45}).stressZZ[0], middle.stressZZ[0], 1e-14);
+        // Virial: int sigma_zz dz = f b_z / area, b_z = 0.9 (quadrature split at the kinks).
+        std::vector<double> z, w;
+        gl.panels(1.5, 3.5, {2 - reach, 2, 2 + reach, 2.9 - reach, 2.9, 2.9 + reach}, z, w);
+        const Profile profile = depthProfile(shape, frame, twice, width, z);
+        double integral = 0;
+        for (std::size_t k = 0; k < z.size(); ++k) integral += w[k] * profile.stressZZ[k];
+        EXPECT_NEAR(integral, f * 0.9 / area, 1e-11) << kernelShapeName(shape);
+        // Outside the branch and its kernels: no stress.
+        EXPECT_EQ(depthProfile(shape, frame, once, width, {2 - 1.01 * reach}).stressZZ[0], 0.0);
+    }
+}
+
+TEST(ContactStress, WallContactTransmitsItsForceBetweenCentreAndContactPoint) {
+    // A particle at z = 0.45 on the wall z = 0 (overlap 0.05); the .fstat wall line has the
+    // normal into the wall and the force on the particle is -(fn n) = +fn z.
+    const DomainBox box{{0, 0, -1}, {2, 2, 3}};
+    const ParticleFrame frame = makeFrame({{1, 1, 0.45}}, {0.5}, box);
+    ContactFrame contacts;
+    const double fn = 2.0, area = 4;
+    contacts.contacts.push_back(pairLine(0, -1, {1, 1, -0.025}, {0, 0, -1}, 0.05, {0, 0, fn}));
+    const Profile p = depthProfile(KernelShape::Lucy, frame, contacts, 0.1, {0.2, 0.7});
+    EXPECT_NEAR(p.stressZZ[0], fn / area, 1e-13);
+    EXPECT_EQ(p.stressZZ[1], 0.0);
+}
+
+TEST(ContactStress, MismatchedFilesAreRejected) {
+    const DomainBox box{{0, 0, 0}, {4, 2.5, 6}};
+    const ParticleFrame frame = makeFrame({{1, 1, 2}, {1, 1, 2.9}}, {0.5, 0.5}, box);
+    ContactFrame contacts;
+    contacts.contacts.push_back(pairLine(1, 0, {1, 1, 2.2}, {0, 0, 1}, 0.1, {0, 0, 1}));
+    contacts.contacts.back().line = 12;
+    CoarseGrainingSetup setup;
+    setup.contactStress = true;
+    CoarseGrainer grainer(setup);
+    try {
+        grainer.setFrame(frame, &contacts, "a.data", "a.fstat");
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("a.fstat line 12: the contact point is"), std::string::npos) << error.what();
+    }
+    contacts.contacts.back() = pairLine(1, 7, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0, 0, 1});
+    contacts.contacts.back().line = 13;
+    EXPECT_THROW(grainer.setFrame(frame, &contacts, "a.data", "a.fstat"), InputError);
+}
