@@ -1,0 +1,184 @@
+// The readers on MercuryDPM's own files (shared/reference/mercury/chute, README there) and on
+// broken files: counts, times and values checked against the file text read independently
+// here; a depth profile that integrates to mass per unit area; errors that name file and line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "CGTestHelpers.h"
+#include "Fields/CoarseGrainer.h"
+#include "IO/DataFileReader.h"
+#include "IO/FstatFileReader.h"
+#include "IO/InputError.h"
+#include "IO/RestartFileReader.h"
+
+using namespace talus::cg;
+using namespace talus::cg::test;
+
+namespace {
+
+const std::string chute = std::string(TALUS_SHARED_DIR) + "/reference/mercury/chute/Bidi_on";
+
+std::vector<std::string> fileLines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+std::vector<double> numbersOf(const std::string& line) {
+    std::istringstream in(line);
+    std::vector<double> values;
+    for (std::string word; in >> word;) values.push_back(std::strtod(word.c_str(), nullptr));
+    return values;
+}
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST(MercuryFiles, DataFramesMatchTheFileText) {
+    const auto frames = readAllDataFrames(chute + ".data");
+    const auto text = fileLines(chute + ".data");
+    ASSERT_EQ(frames.size(), 3u);
+    const double times[] = {9.9, 9.95, 10.0};
+    std::size_t header = 0;
+    for (int f = 0; f < 3; ++f) {
+        const auto h = numbersOf(text[header]);
+        EXPECT_EQ(frames[f].size(), std::size_t(h[0]));
+        EXPECT_EQ(frames[f].size(), 3114u);  // README: 1000 + 2000 + 114 base particles
+        EXPECT_DOUBLE_EQ(frames[f].time, times[f]);
+        EXPECT_DOUBLE_EQ(frames[f].box.hi[0], 20);
+        EXPECT_DOUBLE_EQ(frames[f].box.hi[1], 10);
+        // A few particle lines, column by column.
+        for (std::size_t p : {std::size_t(0), std::size_t(1), std::size_t(1500), std::size_t(3113)}) {
+            const auto row = numbersOf(text[header + 1 + p]);
+            ASSERT_EQ(row.size(), 14u);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_EQ(frames[f].position[p][k], row[k]);
+                EXPECT_EQ(frames[f].velocity[p][k], row[3 + k]);
+            }
+            EXPECT_EQ(frames[f].radius[p], row[6]);
+            EXPECT_EQ(frames[f].species[p], int(row[13]));
+        }
+        header += 1 + frames[f].size();
+    }
+}
+
+TEST(MercuryFiles, FstatFramesMatchTheFileText) {
+    const auto frames = readAllFstatFrames(chute + ".fstat");
+    const auto text = fileLines(chute + ".fstat");
+    ASSERT_EQ(frames.size(), 3u);
+    // Contact lines of the first frame: those between the first and the second block of '#'.
+    std::size_t first = 3, count = 0;
+    while (first + count < text.size() && text[first + count][0] != '#') ++count;
+    EXPECT_EQ(frames[0].contacts.size(), count);
+    EXPECT_DOUBLE_EQ(frames[0].time, 9.9);
+    EXPECT_DOUBLE_EQ(frames[2].time, 10.0);
+    // Force on i: fn n + ft t (pairs), -(fn n + ft t) (walls, fstat.md).
+    bool sawWall = false;
+    for (std::size_t c = 0; c < count; ++c) {
+        const auto row = numbersOf(text[first + c]);
+        const ContactLine& line = frames[0].contacts[c];
+        ASSERT_EQ(line.i, long(row[1]));
+        ASSERT_EQ(line.j, long(row[2]));
+        const double sign = row[2] < 0 ? -1 : 1;
+        sawWall |= row[2] < 0;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(line.force[k], sign * (row[8] * row[10 + k] + row[9] * row[13 + k]), 1e-12);
+    }
+    EXPECT_TRUE(sawWall);
+}
+
+TEST(MercuryFiles, RestartGivesDensitiesPeriodicityAndFixedParticles) {
+    const RestartInfo info = readRestartFile(chute + ".restart");
+    EXPECT_EQ(info.writer, "MercuryDPM");
+    ASSERT_EQ(info.speciesDensity.size(), 2u);
+    EXPECT_NEAR(info.speciesDensity[0], 6 / std::numbers::pi, 1e-13);
+    EXPECT_TRUE(info.periodic[0]);
+    EXPECT_TRUE(info.periodic[1]);
+    EXPECT_FALSE(info.periodic[2]);
+    ASSERT_EQ(info.fixed.size(), 3114u);
+    EXPECT_EQ(std::count(info.fixed.begin(), info.fixed.end(), true), 114);
+}
+
+// The depth profile of density of the flowing particles (fixed base excluded), integrated over
+// z by quadrature split at the supports' edges, is their mass per unit area,
+// (1000 + 2000 x 0.79^3) / (20 x 10) (README: 1000 of d = 1 and 2000 of d = 0.79, density 6/pi).
+TEST(MercuryFiles, DepthProfileIntegratesToMassPerArea) {
+    const auto frames = readAllDataFrames(chute + ".data");
+    const RestartInfo info = readRestartFile(chute + ".restart");
+    CoarseGrainingSetup setup;
+    setup.coordinates = Coordinates::fromName("Z");
+    setup.width = WidthMatrix::isotropic(0.5);
+    setup.speciesDensity = info.speciesDensity;
+    setup.periodic = info.periodic;
+    setup.excluded = info.fixed;
+    CoarseGrainer grainer(setup);
+    const ParticleFrame& frame = frames[2];
+    grainer.setFrame(frame, nullptr);
+    double mass = 0, zMin = 1e9, zMax = -1e9;
+    std::vector<double> breaks;
+    for (std::size_t p = 0; p < frame.size(); ++p) {
+        if (info.fixed[p]) continue;
+        mass += 6 / std::numbers::pi * sphereVolume(frame.radius[p]);
+        const double z = frame.position[p][2];
+        breaks.insert(breaks.end(), {z - 0.5, z, z + 0.5});
+        zMin = std::min(zMin, z);
+        zMax = std::max(zMax, z);
+    }
+    EXPECT_NEAR(mass, 1000 + 2000 * std::pow(0.79, 3), 1e-9);
+    const GaussLegendre gl(8);
+    std::vector<double> z, w;
+    gl.panels(zMin - 1, zMax + 1, breaks, z, w);
+    std::vector<Vec3> points;
+    for (double h : z) points.push_back({0, 0, h});
+    std::vector<double> sums;
+    grainer.evaluate(points, sums);
+    double integral = 0;
+    for (std::size_t k = 0; k < z.size(); ++k) integral += w[k] * sums[k * grainer.layout().count()];
+    EXPECT_NEAR(integral / (mass / 200), 1.0, 1e-10);
+    std::printf("[ mercury ] depth profile integral %.12g, mass per area %.12g\n", integral, mass / 200);
+}
+
+TEST(BadFiles, ErrorsNameFileAndLine) {
+    write("short.data", "2 0.5 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    EXPECT_EQ(errorOf([] { readAllDataFrames("short.data"); }),
+              "short.data line 3: file ends after 1 of the 2 particle lines of the frame at t = 0.5 (header line 1): truncated file?");
+    write("columns.data", "1 0 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0\n");
+    EXPECT_EQ(errorOf([] { readAllDataFrames("columns.data"); }), "columns.data line 2: expected 14 columns, found 9");
+    write("number.data", "1 0 0 0 0 1 1 1\n0.5 0.5 x 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    EXPECT_EQ(errorOf([] { readAllDataFrames("number.data"); }), "number.data line 2: bad number 'x' for the position");
+    write("species.data", "1 0 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 1.5\n");
+    EXPECT_EQ(errorOf([] { readAllDataFrames("species.data"); }),
+              "species.data line 2: info column is 1.5, not a species index (0, 1, ...)");
+    write("header.data", "1 0 0 0 1 1\n");
+    EXPECT_NE(errorOf([] { readAllDataFrames("header.data"); }).find("header.data line 1: a 2-D .data header"), std::string::npos);
+    EXPECT_EQ(errorOf([] { readAllDataFrames("missing.data"); }), "cannot open missing.data");
+    write("columns.fstat", "# 0 1\n# 0 0 0 1 1 1\n# 0.5 0.5 0 0 0 0\n0 1 0 0.5 0.5 0.5 0.01 0 1 0\n");
+    EXPECT_EQ(errorOf([] { readAllFstatFrames("columns.fstat"); }), "columns.fstat line 4: expected 16 columns, found 10");
+    write("truncated.fstat", "# 0 1\n# 0 0 0 1 1 1\n");
+    EXPECT_EQ(errorOf([] { readAllFstatFrames("truncated.fstat"); }),
+              "truncated.fstat line 3: file ends inside the header of the frame at t = 0: truncated file?");
+    write("bad.restart", "Talus restart 4\nname x\ndomain 0 0 0 1 1 1 1 0\n");
+    EXPECT_EQ(errorOf([] { readRestartFile("bad.restart"); }), "bad.restart line 3: expected 'domain' with 9 values, found 8");
+    // Species without a density.
+    CoarseGrainingSetup setup;
+    setup.speciesDensity = {1.0};
+    CoarseGrainer grainer(setup);
+    write("two.data", "1 0 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 1\n");
+    const auto frames = readAllDataFrames("two.data");
+    EXPECT_EQ(errorOf([&] { grainer.setFrame(frames[0], nullptr, "two.data"); }),
+              "two.data line 2: a particle of species 1, but densities are known for 1 species only (--density d0,d1,... or --restart)");
+}
