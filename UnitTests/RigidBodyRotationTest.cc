@@ -7,6 +7,7 @@
 // M = A^T L its body components, omega_body = M / I componentwise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>

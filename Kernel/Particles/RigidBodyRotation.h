@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "Error.h"
 #include "Math/Vector.h"
