@@ -174,8 +174,43 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     p.id.push_back(state_.nextId++);
     p.fixed.push_back(0);
     p.motion.push_back(-1);
+    if (p.hasShapes()) {
+        p.orientation.push_back(Quat::Identity());
+        p.angularMomentum.push_back(Vec3::Zero());
+        p.principalInertia.push_back(Vec3::Zero());
+        p.shape.push_back(-1);
+    }
     state_.pairList.valid = false;
     return p.size() - 1;
+}
+
+std::size_t Simulation::addShape(const Superquadric& shape) {
+    state_.shapes.push_back(shape);
+    return state_.shapes.size() - 1;
+}
+
+std::size_t Simulation::addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                        const Quat& orientation, const Vec3& velocity, const Vec3& angularVelocity) {
+    const std::string which = "particle " + std::to_string(state_.nextId);
+    require(shape < state_.shapes.size(), which + ": shape " + std::to_string(shape) + " does not exist (addShape first)");
+    requireValidOrientation(orientation, which);
+    require(species < state_.species.size(), which + ": species " + std::to_string(species) + " does not exist");
+    ParticleStore& p = state_.particles;
+    if (!p.hasShapes()) {
+        p.enableShapes();
+        state_.pairList.enableWarmStarts();
+    }
+    const Superquadric& s = state_.shapes[shape];
+    const std::size_t i = addParticle(position, s.boundingRadius(), species, velocity, angularVelocity);
+    const double density = state_.species[species].density;
+    p.mass[i] = density * s.volume();
+    p.invMass[i] = 1 / p.mass[i];
+    p.invInertia[i] = 0;  // unused: shaped particles turn by their angular momentum
+    p.orientation[i] = orientation.normalized();
+    p.principalInertia[i] = s.principalInertia(density);
+    p.angularMomentum[i] = angularMomentumFromVelocity(p.orientation[i], angularVelocity, p.principalInertia[i]);
+    p.shape[i] = static_cast<std::int32_t>(shape);
+    return i;
 }
 
 std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion) {
@@ -418,7 +453,8 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
-                             state_.settings.timeStep, state_.pairList.maxSpeed, previousForce_, summary_, records);
+                             state_.settings.timeStep, state_.pairList.maxSpeed, previousForce_, summary_, records,
+                             &state_.shapes);
         },
         laws_);
     if (records) {
@@ -480,6 +516,10 @@ void Simulation::moveWithPrescribedMotion() {
         w.point = state_.motions[w.motion].moved(w.point, rotation[w.motion], dt);
         w.normal = (rotation[w.motion] * w.normal).normalized();
     }
+    if (p.hasShapes())
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (p.motion[i] >= 0 && p.shape[i] >= 0)
+                p.orientation[i] = Quat(rotation[p.motion[i]] * p.orientation[i].toRotationMatrix()).normalized();
     for (PrescribedMotion& m : state_.motions) m.advanceCentre(dt);
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.motion[i] < 0) continue;
@@ -500,6 +540,7 @@ void Simulation::integrate(bool recordContacts) {
         p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
         p.position[i] += dt * p.velocity[i];
     }
+    if (p.hasShapes()) turnShapedParticles(half, dt);
     moveWithPrescribedMotion();
     if (state_.domain.anyPeriodic())
         for (Vec3& x : p.position) state_.domain.wrap(x);
@@ -511,6 +552,20 @@ void Simulation::integrate(bool recordContacts) {
         if (p.fixed[i]) continue;
         p.velocity[i] += half * p.invMass[i] * p.force[i];
         p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
+    }
+    if (p.hasShapes()) turnShapedParticles(half, 0);
+}
+
+// The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half
+// kick of the angular momentum by the torque, then (drift > 0) the torque-free turn of the
+// orientation over the step; the angular velocity the contacts see follows from both.
+void Simulation::turnShapedParticles(double kick, double drift) {
+    ParticleStore& p = state_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i] || p.shape[i] < 0) continue;
+        kickAngularMomentum(p.angularMomentum[i], p.torque[i], kick);
+        if (drift > 0) driftOrientation(p.orientation[i], p.angularMomentum[i], p.principalInertia[i], drift);
+        p.angularVelocity[i] = angularVelocity(p.orientation[i], p.angularMomentum[i], p.principalInertia[i]);
     }
 }
 

@@ -17,6 +17,7 @@
 #include "Contacts/HGrid.h"
 #include "Error.h"
 #include "Particles/Energies.h"
+#include "Particles/RigidBodyRotation.h"
 #include "SimulationState.h"
 
 namespace talus {
@@ -75,6 +76,14 @@ public:
                             const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
     // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
     std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
+    // Superquadric particles (SPEC.md 4): a shape added once, then particles of it. The particle's
+    // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
+    // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
+    std::size_t addShape(const Superquadric& shape);
+    std::size_t addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                const Quat& orientation = Quat::Identity(), const Vec3& velocity = Vec3::Zero(),
+                                const Vec3& angularVelocity = Vec3::Zero());
+    const std::vector<Superquadric>& shapes() const { return state_.shapes; }
     void removeParticle(std::size_t slot);
 
     // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
@@ -133,6 +142,7 @@ private:
     void computeForces(std::vector<ContactRecord>* records, bool checkOverlaps = true);
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
+    void turnShapedParticles(double kick, double drift);
     void reorderParticles();
     std::uint64_t saveEvery() const;
 

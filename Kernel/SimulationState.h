@@ -11,6 +11,7 @@
 #include "Boundaries/Domain.h"
 #include "Contacts/PairList.h"
 #include "Particles/ParticleStore.h"
+#include "Shapes/Superquadric.h"
 #include "Species/SpeciesTable.h"
 #include "Walls/PlaneWall.h"
 #include "Walls/PrescribedMotion.h"
@@ -46,6 +47,7 @@ struct SimulationState {
     Vec3 gravity = Vec3(0, 0, -1);
     Domain domain;
     SpeciesTable species;
+    std::vector<Superquadric> shapes;  // of the non-spherical particles (ParticleStore::shape)
     ParticleStore particles;
     std::vector<PlaneWall> walls;
     std::vector<PrescribedMotion> motions;

@@ -85,13 +85,15 @@ inline bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a
 inline bool sameBits(const Vec3& a, const Vec3& b) {
     return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()) && sameBits(a.z(), b.z());
 }
+inline bool sameBits(const Quat& a, const Quat& b) { return sameBits(a.w(), b.w()) && sameBits(a.vec(), b.vec()); }
 template <class Integer>
     requires std::is_integral_v<Integer>
 bool sameBits(Integer a, Integer b) {
     return a == b;
 }
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
-    return sameBits(a.spring, b.spring) && sameBits(a.lastNormalForce, b.lastNormalForce) && a.state == b.state;
+    return sameBits(a.spring, b.spring) && sameBits(a.lastNormalForce, b.lastNormalForce) && a.state == b.state &&
+           sameBits(a.warmPoint, b.warmPoint) && sameBits(a.warmMultiplier, b.warmMultiplier);
 }
 inline bool sameBits(const ContactHistories& a, const ContactHistories& b) {
     if (a.size() != b.size()) return false;

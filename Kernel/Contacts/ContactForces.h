@@ -5,12 +5,15 @@
 #pragma once
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "Boundaries/Domain.h"
 #include "Contacts/PairList.h"
+#include "Contacts/ShapedContactGeometry.h"
+#include "Error.h"
 #include "Particles/ParticleStore.h"
 #include "Species/SpeciesTable.h"
 #include "Walls/PlaneWall.h"
@@ -144,9 +147,9 @@ class ContactForceLoop {
 public:
     ContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt, double maxSpeed,
                      const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                     std::vector<ContactRecord>* records)
+                     std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr)
         : p_(p), laws_(laws), dt_(dt), closing_(2 * maxSpeed * dt), previousForce_(previousForce), summary_(summary),
-          records_(records) {}
+          records_(records), shapes_(p.hasShapes() ? shapes : nullptr) {}
 
     void particlePairs(PairList& list, const Domain& domain) {
         const PeriodicImage image(domain);
@@ -167,6 +170,10 @@ public:
             const std::size_t k = active[a];
             const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
             const Vec3 d = image.nearest(p_.position[i] - p_.position[j]);
+            if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
+                shapedPair(list, k, i, j, d);
+                continue;
+            }
             const double sumR = p_.radius[i] + p_.radius[j];
             const double r2 = d.squaredNorm();
             const bool touching = r2 < sumR * sumR;
@@ -266,6 +273,10 @@ public:
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
             const std::uint32_t i = list.wallPairs[k].particle;
             const PlaneWall& wall = walls[list.wallPairs[k].wall];
+            if (shapes_ && p_.isShaped(i)) [[unlikely]] {
+                shapedWall(list, k, i, wall, motions);
+                continue;
+            }
             const double distance = wall.signedDistance(p_.position[i]);
             const bool touching = distance < p_.radius[i];
             // (A moving wall may close in faster than the particles: no shortcut for it.)
@@ -295,6 +306,101 @@ public:
     }
 
 private:
+    // --- non-spherical particles (SPEC.md 4) ---
+    // A pair with a superquadric: the exact contact (warm-started), then the law on the
+    // kinematics of the contact point, with the branch vectors from the centres to it. The ends
+    // of a contact are not treated (the law's plain step), and the tangential spring is turned
+    // into the new tangent plane with its length kept (seed:8339-8449).
+    [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& d) {
+        const Vec3 xj = p_.position[i] - d;  // j's image next to i
+        ContactHistory history = list.history.get(k);
+        const ShapedContactGeometry g = shapedPairGeometry(p_, *shapes_, i, j, xj, history);
+        if (!g.converged) detectionFailed(i, j);
+        history.warmPoint = g.solution.point;
+        history.warmMultiplier = g.solution.multiplier;
+        const Law& law = laws_(p_.species[i], p_.species[j]);
+        shapedContact(history, g, i, j, xj, p_.velocity[j], p_.angularVelocity[j], p_.invMass[j], law,
+                      std::min(sizeOf(i), sizeOf(j)));
+        list.history.set(k, history);
+    }
+
+    [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const PlaneWall& wall,
+                                      const std::vector<PrescribedMotion>& motions) {
+        ContactHistory history = list.wallHistory.get(k);
+        const ShapedContactGeometry g = shapedWallGeometry(p_, *shapes_, i, wall);
+        const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(g.contactPoint) : Vec3::Zero();
+        const Vec3 wallSpin = wall.motion >= 0 ? motions[wall.motion].angularVelocity : Vec3::Zero();
+        // A wall as a partner of infinite mass whose "centre" is the contact point itself.
+        const Law& law = laws_(p_.species[i], wall.species);
+        shapedContact(history, g, i, -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1, g.contactPoint,
+                      wallVelocity, wallSpin, 0, law, sizeOf(i));
+        list.wallHistory.set(k, history);
+    }
+
+    void shapedContact(ContactHistory& history, const ShapedContactGeometry& g, std::uint32_t i, std::int64_t j,
+                       const Vec3& xj, const Vec3& vj, const Vec3& wj, double invMassJ, Law law, double size) {
+        if (!g.touching) {
+            history.spring.setZero();
+            history.lastNormalForce = 0;
+            history.state = ContactHistory::apart;
+            return;
+        }
+        const Vec3& n = g.normal;
+        const Vec3 bi = g.contactPoint - p_.position[i], bj = g.contactPoint - xj;
+        ContactKinematics c;
+        c.normal = n;
+        c.overlap = g.overlap;
+        c.relativeVelocity = p_.velocity[i] + p_.angularVelocity[i].cross(bi) - vj - wj.cross(bj);
+        c.normalVelocity = c.relativeVelocity.dot(n);
+        c.tangentialVelocity = c.relativeVelocity - c.normalVelocity * n;
+        c.inverseReducedMass = p_.invMass[i] + invMassJ;
+        c.otherAcceleration = 0;  // (only the treatment of contact ends uses it)
+        c.effectiveRadius = g.effectiveRadius;
+        c.inverseDistance = 0;  // the spring is projected (below), not rotated as for spheres
+        if constexpr (requires { law.treatContactEnds; }) law.treatContactEnds = false;
+        if (history.isTouching()) {
+            const double length = history.spring.norm();
+            history.spring -= history.spring.dot(n) * n;
+            const double projected = history.spring.norm();
+            if (projected > 0) history.spring *= length / projected;
+        } else {
+            history.spring.setZero();
+        }
+        const ContactForce f = law.force(c, history, dt_);
+        history.state = ContactHistory::touching;
+        history.lastNormalForce = f.normalForce;
+        const Vec3 force = f.normalForce * n + f.tangentialForce;
+        p_.force[i] += force;
+        p_.torque[i] += bi.cross(force);
+        if (j >= 0) {
+            p_.force[j] -= force;
+            p_.torque[j] -= bj.cross(force);
+        }
+        ++summary_.contacts;
+        if (g.overlap > summary_.maxOverlapFraction * size) [[unlikely]] {
+            summary_.maxOverlapFraction = g.overlap / size;
+            summary_.worstA = p_.id[i];
+            summary_.worstB = j >= 0 ? p_.id[j] : static_cast<std::uint64_t>(-j - 1);
+            summary_.worstIsWall = j < 0;
+        }
+        if (records_) [[unlikely]]
+            records_->push_back({i, j, g.contactPoint, g.overlap, history.spring.norm(), f.normalForce, n,
+                                 f.tangentialForce, law.elasticEnergy(c, history.spring)});
+    }
+
+    // The smallest semi-axis (spheres: the radius): what overlaps are measured against.
+    double sizeOf(std::uint32_t i) const {
+        return p_.isShaped(i) ? (*shapes_)[static_cast<std::size_t>(p_.shape[i])].semiAxes().minCoeff() : p_.radius[i];
+    }
+
+    [[noreturn]] void detectionFailed(std::uint32_t i, std::uint32_t j) const {
+        std::ostringstream m;
+        m << "superquadric contact detection failed between particle id " << p_.id[i] << " at ("
+          << p_.position[i].transpose() << ") and particle id " << p_.id[j] << " at (" << p_.position[j].transpose()
+          << "): Newton's method and its fallback (morphing from the bounding spheres) did not converge";
+        throw Error(m.str());
+    }
+
     // Force and torque on i (and j, unless it is a wall, j < 0) of one contact, or of the
     // separation impulse of a pair that stopped touching during the last step. The torques are
     // bij x f = -armI n x f and -bji x f = -armJ n x f.
@@ -393,14 +499,15 @@ private:
     const std::vector<Vec3>& previousForce_;
     ContactSummary& summary_;
     std::vector<ContactRecord>* records_;
+    const std::vector<Superquadric>* shapes_;  // null in scenes of spheres only
 };
 
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                      std::vector<ContactRecord>* records) {
-    ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records);
+                      std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr) {
+    ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes);
     loop.particlePairs(list, domain);
     loop.oneWayPairs(list, domain);
     loop.wallPairs(list, walls, motions);

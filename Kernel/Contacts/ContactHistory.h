@@ -19,6 +19,11 @@ struct ContactHistory {
     Vec3 spring = Vec3::Zero();
     double lastNormalForce = 0;  // the normal force the pair applied at the last step
     State state = apart;
+    // Pairs with a superquadric (Contacts/SuperquadricContact.h): the contact point relative to
+    // particle i (or the particle of a wall pair) and the multiplier of the last solve, where the
+    // next solve starts; multiplier 0: no solve yet. Stored only in scenes with shapes.
+    Vec3 warmPoint = Vec3::Zero();
+    double warmMultiplier = 0;
 
     bool isTouching() const { return state == touching; }
     bool isApproaching() const { return state == approaching; }
@@ -35,12 +40,26 @@ class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }
     ContactHistory::State state(std::size_t k) const { return states_[k]; }
-    ContactHistory get(std::size_t k) const { return {springs_[k], lastNormalForces_[k], states_[k]}; }
+    ContactHistory get(std::size_t k) const {
+        ContactHistory h{springs_[k], lastNormalForces_[k], states_[k]};
+        if (withWarmStarts_) [[unlikely]]
+            h.warmPoint = warmPoints_[k], h.warmMultiplier = warmMultipliers_[k];
+        return h;
+    }
     void set(std::size_t k, const ContactHistory& h) {
         springs_[k] = h.spring;
         lastNormalForces_[k] = h.lastNormalForce;
         states_[k] = h.state;
+        if (withWarmStarts_) [[unlikely]]
+            warmPoints_[k] = h.warmPoint, warmMultipliers_[k] = h.warmMultiplier;
     }
+    // Keep the superquadric warm starts too (scenes with shapes; ParticleStore::enableShapes).
+    void enableWarmStarts() {
+        withWarmStarts_ = true;
+        warmPoints_.resize(size(), Vec3::Zero());
+        warmMultipliers_.resize(size(), 0);
+    }
+    bool hasWarmStarts() const { return withWarmStarts_; }
     void clearLastNormalForce(std::size_t k) { lastNormalForces_[k] = 0; }
     double lastNormalForceOf(std::size_t k) const { return lastNormalForces_[k]; }
     const Vec3& springOf(std::size_t k) const { return springs_[k]; }
@@ -48,14 +67,25 @@ public:
         springs_.assign(n, Vec3::Zero());
         lastNormalForces_.assign(n, 0);
         states_.assign(n, ContactHistory::apart);
+        if (withWarmStarts_) warmPoints_.assign(n, Vec3::Zero()), warmMultipliers_.assign(n, 0);
     }
     void push_back(const ContactHistory& h) {
         springs_.push_back(h.spring);
         lastNormalForces_.push_back(h.lastNormalForce);
         states_.push_back(h.state);
+        if (withWarmStarts_) warmPoints_.push_back(h.warmPoint), warmMultipliers_.push_back(h.warmMultiplier);
+    }
+    // An empty list of the same kind (with warm starts if this one has them).
+    ContactHistories emptyLike() const {
+        ContactHistories h;
+        if (withWarmStarts_) h.enableWarmStarts();
+        return h;
     }
 
 private:
+    bool withWarmStarts_ = false;
+    std::vector<Vec3> warmPoints_;
+    std::vector<double> warmMultipliers_;
     std::vector<Vec3> springs_;
     std::vector<double> lastNormalForces_;
     std::vector<ContactHistory::State> states_;

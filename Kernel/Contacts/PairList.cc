@@ -42,12 +42,18 @@ struct CarriedHistory {
 };
 
 // The same history seen from the other particle: the spring turns round, an approach does not.
+// A superquadric warm start is kept relative to particle i and does not turn round: the pair
+// starts its next solve cold (from the bounding spheres), which costs iterations, not accuracy.
 ContactHistory reversed(ContactHistory h) {
     if (h.isTouching()) h.spring = -h.spring;
+    h.warmPoint.setZero();
+    h.warmMultiplier = 0;
     return h;
 }
 
-bool worthCarrying(const ContactHistory& h) { return h.state != ContactHistory::apart || !h.spring.isZero(0); }
+bool worthCarrying(const ContactHistory& h) {
+    return h.state != ContactHistory::apart || !h.spring.isZero(0) || h.warmMultiplier != 0;
+}
 
 }  // namespace
 
@@ -164,7 +170,7 @@ namespace {
 template <class Entry, class Keep>
 void keepIf(std::vector<Entry>& list, ContactHistories& histories, Keep keep) {
     std::vector<Entry> kept;
-    ContactHistories keptHistories;
+    ContactHistories keptHistories = histories.emptyLike();
     kept.reserve(list.size());
     for (std::size_t k = 0; k < list.size(); ++k) {
         Entry entry = list[k];

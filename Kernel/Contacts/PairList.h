@@ -70,6 +70,13 @@ public:
     // rebuild.
     void followRemoval(std::uint32_t removed, std::uint32_t last);
 
+    // Scenes with superquadrics: every history keeps its contact's warm start.
+    void enableWarmStarts() {
+        history.enableWarmStarts();
+        wallHistory.enableWarmStarts();
+        oneWayHistory.enableWarmStarts();
+    }
+
 private:
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
 };

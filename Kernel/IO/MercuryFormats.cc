@@ -27,7 +27,9 @@ std::vector<std::uint32_t> slotsById(const ParticleStore& particles) {
 
 // .data: header "N t xmin ymin zmin xmax ymax zmax " then per particle
 // "x y z vx vy vz r thx thy thz wx wy wz species" (positions 15 digits, the rest 10, as MercuryDPM).
-// Sphere orientation is not tracked, so the three angle columns are 0.
+// Sphere orientation is not tracked, so their three angle columns are 0; a non-spherical
+// particle's are its orientation as a rotation vector (axis times angle, |th| <= pi), and r is its
+// bounding radius.
 void appendDataFrame(std::string& out, const SimulationState& state, const std::vector<std::uint32_t>& order) {
     const ParticleStore& p = state.particles;
     const Domain& d = state.domain;
@@ -35,8 +37,13 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
            d.hi.x(), d.hi.y(), d.hi.z());
     for (std::uint32_t i : order) {
         const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
-        append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g 0 0 0 %.10g %.10g %.10g %u\n", x.x(), x.y(), x.z(), v.x(),
-               v.y(), v.z(), p.radius[i], w.x(), w.y(), w.z(), p.species[i]);
+        Vec3 th = Vec3::Zero();
+        if (p.isShaped(i)) {
+            const Eigen::AngleAxisd turn(p.orientation[i]);
+            th = turn.angle() * turn.axis();
+        }
+        append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %u\n", x.x(), x.y(),
+               x.z(), v.x(), v.y(), v.z(), p.radius[i], th.x(), th.y(), th.z(), w.x(), w.y(), w.z(), p.species[i]);
     }
 }
 

@@ -69,7 +69,8 @@ void OutputFiles::writeFrame(SimulationState& state, const std::vector<ContactRe
         state.output.eneBytes = append(ene_, buffer_);
     }
     if (c.writeVtu) {
-        writeVtu(c.name + "_" + std::to_string(state.output.frameTimes.size()) + ".vtu", state.particles, order);
+        writeVtu(c.name + "_" + std::to_string(state.output.frameTimes.size()) + ".vtu", state.particles, order,
+                 state.shapes);
         state.output.frameTimes.push_back(state.time);
         writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
     }

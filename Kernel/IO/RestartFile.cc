@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "Error.h"
+#include "Particles/RigidBodyRotation.h"
 
 namespace talus {
 
@@ -15,7 +16,7 @@ namespace {
 
 // 2: the run line ends with the reorder flag; 3: kept values; 4: the one-way periodic box
 // (maser) and its pairs
-constexpr int formatVersion = 4;
+constexpr int formatVersion = 5;
 
 class Writer {
 public:
@@ -157,16 +158,22 @@ ContactLaw readLaw(Reader& r) {
     r.fail("unknown contact law '" + kind + "'");
 }
 
-void writeHistory(Writer& w, const ContactHistory& h) {
+// (Scenes with shapes add the superquadric warm start to every history.)
+void writeHistory(Writer& w, const ContactHistory& h, bool shapes) {
     w << h.spring << h.lastNormalForce << std::uint64_t(h.state);
+    if (shapes) w << h.warmPoint << h.warmMultiplier;
     w.end();
 }
 
-ContactHistory readHistory(Reader& r) {
+ContactHistory readHistory(Reader& r, bool shapes) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
     h.lastNormalForce = r.real("last normal force");
     h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::touching));
+    if (shapes) {
+        h.warmPoint = r.vec("warm-start point");
+        h.warmMultiplier = r.real("warm-start multiplier");
+    }
     return h;
 }
 
@@ -213,11 +220,19 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             w.end();
         }
         const ParticleStore& p = s.particles;
+        const bool shapes = p.hasShapes();
+        w.key("shapes") << std::uint64_t(shapes) << std::uint64_t(s.shapes.size()); w.end();
+        for (const Superquadric& q : s.shapes) { w.key("  ") << q.semiAxes() << q.e1() << q.e2(); w.end(); }
         w.key("particles") << std::uint64_t(p.size()) << s.nextId; w.end();
         for (std::size_t i = 0; i < p.size(); ++i) {
             w.key("  ") << p.id[i] << p.position[i] << p.velocity[i] << p.angularVelocity[i] << p.force[i] << p.torque[i]
                         << p.radius[i] << p.mass[i] << p.invMass[i] << p.invInertia[i] << std::uint64_t(p.species[i])
                         << std::uint64_t(p.fixed[i]) << std::int64_t(p.motion[i]);
+            if (shapes) {
+                const Quat& q = p.orientation[i];
+                w << q.w() << q.x() << q.y() << q.z() << p.angularMomentum[i] << p.principalInertia[i]
+                  << std::int64_t(p.shape[i]);
+            }
             w.end();
         }
         const PairList& l = s.pairList;
@@ -225,17 +240,17 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
-            writeHistory(w, l.history.get(k));
+            writeHistory(w, l.history.get(k), shapes);
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
-            writeHistory(w, l.wallHistory.get(k));
+            writeHistory(w, l.wallHistory.get(k), shapes);
         }
         for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
         w.key("onewaypairs") << std::uint64_t(l.oneWayPairs.size()); w.end();
         for (std::size_t k = 0; k < l.oneWayPairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.oneWayPairs[k].i) << std::uint64_t(l.oneWayPairs[k].j);
-            writeHistory(w, l.oneWayHistory.get(k));
+            writeHistory(w, l.oneWayHistory.get(k), shapes);
         }
         std::ostringstream random;
         random << s.random;
@@ -345,10 +360,27 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         w.species = static_cast<std::uint32_t>(r.count("wall species", speciesCount - 1));
         w.motion = motionIndex("wall motion");
     }
+    r.expect("shapes");
+    const bool shapes = r.flag("shapes flag");
+    t.shapes.clear();
+    const auto shapeCount = r.count("shape count", 1u << 20);
+    for (std::uint64_t k = 0; k < shapeCount; ++k) {
+        const Vec3 axes = r.vec("semi-axes");
+        const double e1 = r.real("blockiness e1"), e2 = r.real("blockiness e2");
+        try {
+            t.shapes.emplace_back(axes.x(), axes.y(), axes.z(), e1, e2);
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
+    }
     r.expect("particles");
     const auto n = r.count("particle count", 0xffffffffu);
     t.nextId = r.count("next id");
     ParticleStore& p = t.particles;
+    if (shapes) {
+        p.enableShapes();
+        t.pairList.enableWarmStarts();
+    }
     p.reserve(n);
     for (std::uint64_t i = 0; i < n; ++i) {
         p.id.push_back(r.count("particle id"));
@@ -365,6 +397,22 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         p.species.push_back(static_cast<std::uint32_t>(r.count("species", speciesCount - 1)));
         p.fixed.push_back(r.flag("fixed flag"));
         p.motion.push_back(motionIndex("particle motion"));
+        if (shapes) {
+            const double qw = r.real("orientation w"), qx = r.real("orientation x"), qy = r.real("orientation y"),
+                         qz = r.real("orientation z");
+            const Quat q(qw, qx, qy, qz);
+            try {
+                requireValidOrientation(q, "particle id " + std::to_string(p.id.back()));
+            } catch (const Error& e) {
+                r.fail(e.what());
+            }
+            p.orientation.push_back(q);
+            p.angularMomentum.push_back(r.vec("angular momentum"));
+            p.principalInertia.push_back(r.vec("principal inertia"));
+            const auto shape = r.integer("particle shape");
+            if (shape < -1 || shape >= static_cast<std::int64_t>(t.shapes.size())) r.fail("particle shape out of range");
+            p.shape.push_back(static_cast<std::int32_t>(shape));
+        }
         if (p.id.back() >= t.nextId) r.fail("particle id " + std::to_string(p.id.back()) + " is not below the next id");
     }
     r.expect("pairlist");
@@ -379,14 +427,14 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        l.history.push_back(readHistory(r));
+        l.history.push_back(readHistory(r, shapes));
     }
     for (std::uint64_t k = 0; k < wallPairs; ++k) {
         const auto i = r.count("wall pair particle", n - 1);
         const auto w = r.count("wall pair wall", t.walls.empty() ? 0 : t.walls.size() - 1);
         if (t.walls.empty()) r.fail("wall pair without walls");
         l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
-        l.wallHistory.push_back(readHistory(r));
+        l.wallHistory.push_back(readHistory(r, shapes));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
     r.expect("onewaypairs");
@@ -394,7 +442,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < oneWayPairs; ++k) {
         const auto i = r.count("one-way pair particle", n - 1), j = r.count("one-way pair particle", n - 1);
         l.oneWayPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        l.oneWayHistory.push_back(readHistory(r));
+        l.oneWayHistory.push_back(readHistory(r, shapes));
     }
     r.expect("random");
     {

@@ -20,7 +20,8 @@ void dataArray(std::ofstream& out, const char* type, const char* name, int compo
 
 }  // namespace
 
-void writeVtu(const std::string& path, const ParticleStore& p, const std::vector<std::uint32_t>& order) {
+void writeVtu(const std::string& path, const ParticleStore& p, const std::vector<std::uint32_t>& order,
+              const std::vector<Superquadric>& shapes) {
     std::ofstream out(path);
     if (!out) throw Error("cannot write " + path);
     out.precision(10);
@@ -41,6 +42,25 @@ void writeVtu(const std::string& path, const ParticleStore& p, const std::vector
     dataArray(out, "Int32", "Species", 1, n, [&](std::ofstream& o, std::size_t k) { o << p.species[order[k]] << '\n'; });
     dataArray(out, "UInt64", "Id", 1, n, [&](std::ofstream& o, std::size_t k) { o << p.id[order[k]] << '\n'; });
     dataArray(out, "UInt8", "Fixed", 1, n, [&](std::ofstream& o, std::size_t k) { o << int(p.fixed[order[k]]) << '\n'; });
+    if (p.hasShapes()) {
+        // Non-spherical particles: orientation (w x y z) and, for ParaView's Tensor Glyph filter
+        // (sphere source, "Extract eigenvalues" on), the tensor R diag(a, b, c) R^T whose
+        // eigenvectors and eigenvalues are the body axes and semi-axes; spheres: r I.
+        dataArray(out, "Float64", "Orientation", 4, n, [&](std::ofstream& o, std::size_t k) {
+            const Quat& q = p.orientation[order[k]];
+            o << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+        });
+        dataArray(out, "Float64", "ShapeTensor", 9, n, [&](std::ofstream& o, std::size_t k) {
+            const std::size_t i = order[k];
+            Mat3 t = p.radius[i] * Mat3::Identity();
+            if (p.isShaped(i)) {
+                const Mat3 R = p.orientation[i].toRotationMatrix();
+                t = R * shapes[static_cast<std::size_t>(p.shape[i])].semiAxes().asDiagonal() * R.transpose();
+            }
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) o << t(a, b) << (a == 2 && b == 2 ? '\n' : ' ');
+        });
+    }
     out << "</PointData>\n<Cells>\n"
         << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\"></DataArray>\n"
         << "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\"></DataArray>\n"

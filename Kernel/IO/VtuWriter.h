@@ -7,10 +7,12 @@
 #include <vector>
 
 #include "Particles/ParticleStore.h"
+#include "Shapes/Superquadric.h"
 
 namespace talus {
 
-void writeVtu(const std::string& path, const ParticleStore& particles, const std::vector<std::uint32_t>& order);
+void writeVtu(const std::string& path, const ParticleStore& particles, const std::vector<std::uint32_t>& order,
+              const std::vector<Superquadric>& shapes = {});
 // Writes the .pvd index of frames 0..frames-1 named <base>_<k>.vtu at the given times.
 void writePvd(const std::string& path, const std::string& base, const std::vector<double>& times);
 

@@ -23,7 +23,9 @@ inline Energies particleEnergies(const ParticleStore& p, const Vec3& gravity) {
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.fixed[i]) continue;
         e.kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-        e.rotational += 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i];
+        // T = L.omega/2 for a rigid body, which for a sphere is |omega|^2 I/2.
+        e.rotational += p.isShaped(i) ? 0.5 * p.angularMomentum[i].dot(p.angularVelocity[i])
+                                      : 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i];
         e.gravitational -= p.mass[i] * gravity.dot(p.position[i]);
         moment += p.mass[i] * p.position[i];
         e.mass += p.mass[i];

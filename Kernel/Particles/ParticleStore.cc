@@ -20,6 +20,15 @@ void ParticleStore::permute(const std::vector<std::size_t>& order) {
     });
 }
 
+void ParticleStore::enableShapes() {
+    if (hasShapes()) return;
+    shapesEnabled_ = true;
+    orientation.assign(size(), Quat::Identity());
+    angularMomentum.assign(size(), Vec3::Zero());
+    principalInertia.assign(size(), Vec3::Zero());
+    shape.assign(size(), -1);
+}
+
 void ParticleStore::reserve(std::size_t n) {
     forEachArray([n](auto& array) { array.reserve(n); });
 }

@@ -29,16 +29,33 @@ struct ParticleStore {
     std::vector<std::uint8_t> fixed;   // 1: not integrated (still collides)
     std::vector<std::int32_t> motion;  // index into Simulation's prescribed motions, or -1
 
+    // Non-spherical particles (SPEC.md 4), present only in scenes that have them: these arrays are
+    // empty otherwise, so that spheres pay nothing. shape[i] indexes SimulationState::shapes (-1: a
+    // sphere); a shaped particle's radius is its bounding radius (what the neighbour search needs),
+    // its rotation state the lab angular momentum, from which angularVelocity is derived
+    // (Particles/RigidBodyRotation.h), and invInertia is unused.
+    std::vector<Quat> orientation;       // body to lab
+    std::vector<Vec3> angularMomentum;   // lab frame
+    std::vector<Vec3> principalInertia;  // about the body axes (0 for spheres and fixed particles)
+    std::vector<std::int32_t> shape;
+
     std::size_t size() const { return position.size(); }
     bool empty() const { return position.empty(); }
+    bool hasShapes() const { return shapesEnabled_; }
+    bool isShaped(std::size_t i) const { return shapesEnabled_ && shape[i] >= 0; }
+    // Gives every particle, present and future, the arrays above (spheres: shape -1).
+    void enableShapes();
 
     // Applies f to every per-particle array; the one place that lists them all, so that
-    // append, removal, reordering and restart cannot forget a field.
+    // append, removal, reordering and restart cannot forget a field. The arrays of shapes only
+    // when the scene has them.
     template <class F>
     void forEachArray(F&& f) {
+        const bool shapes = hasShapes();
         f(position); f(velocity); f(angularVelocity); f(force); f(torque);
         f(radius); f(mass); f(invMass); f(invInertia);
         f(species); f(id); f(fixed); f(motion);
+        if (shapes) { f(orientation); f(angularMomentum); f(principalInertia); f(shape); }
     }
 
     // Removes slot i by moving the last particle into it (O(1); changes that particle's slot).
@@ -48,6 +65,9 @@ struct ParticleStore {
     void permute(const std::vector<std::size_t>& order);
 
     void reserve(std::size_t n);
+
+private:
+    bool shapesEnabled_ = false;
 };
 
 }  // namespace talus

@@ -38,6 +38,7 @@ inline constexpr double orientationNormTolerance = 1e-6;
 
 // Throws Error naming `what` unless q is finite and | |q| - 1 | <= orientationNormTolerance.
 inline void requireValidOrientation(const Quat& q, const std::string& what) {
+    if (std::isfinite(q.w()) && isFinite(q.vec()) && std::abs(q.norm() - 1) <= orientationNormTolerance) return;
     const std::string components =
         "(w, x, y, z) = (" + str(q.w()) + ", " + str(q.x()) + ", " + str(q.y()) + ", " + str(q.z()) + ")";
     require(std::isfinite(q.w()) && isFinite(q.vec()), what + ": orientation quaternion " + components + " is not finite");

@@ -24,12 +24,13 @@ double largestOfPowerSum(double A, double B, double e) {
 }  // namespace
 
 Superquadric::Superquadric(double a, double b, double c, double e1, double e2) : axes_(a, b, c), e1_(e1), e2_(e2) {
+    // (Messages built only on failure: the force loop makes sphere-shaped partners on the fly.)
     const char* names[] = {"semi-axis a", "semi-axis b", "semi-axis c"};
     for (int k = 0; k < 3; ++k)
-        require(std::isfinite(axes_[k]) && axes_[k] > 0,
-                std::string("superquadric ") + names[k] + " must be positive and finite, got " + str(axes_[k]));
-    require(e1 > 0 && e1 <= 1, "superquadric blockiness e1 must lie in (0, 1] (convex shapes), got " + str(e1));
-    require(e2 > 0 && e2 <= 1, "superquadric blockiness e2 must lie in (0, 1] (convex shapes), got " + str(e2));
+        if (!(std::isfinite(axes_[k]) && axes_[k] > 0))
+            throw Error(std::string("superquadric ") + names[k] + " must be positive and finite, got " + str(axes_[k]));
+    if (!(e1 > 0 && e1 <= 1)) throw Error("superquadric blockiness e1 must lie in (0, 1] (convex shapes), got " + str(e1));
+    if (!(e2 > 0 && e2 <= 1)) throw Error("superquadric blockiness e2 must lie in (0, 1] (convex shapes), got " + str(e2));
     // The surface in angles eta (latitude), omega (longitude): x = a cos^e1(eta) cos^e2(omega),
     // y = b cos^e1(eta) sin^e2(omega), z = c sin^e1(eta). Its squared distance from the centre is
     // cos^(2 e1)(eta) g + c^2 sin^(2 e1)(eta) with g = a^2 cos^(2 e2)(omega) + b^2 sin^(2 e2)(omega):

@@ -1,0 +1,84 @@
+// Where and how deep a non-spherical particle touches another particle or a plane wall: the
+// geometry the force loop needs (Contacts/ContactForces.h), from the exact stage of SPEC.md 4.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "Contacts/ContactHistory.h"
+#include "Contacts/SuperquadricContact.h"
+#include "Particles/ParticleStore.h"
+#include "Walls/PlaneWall.h"
+
+namespace talus {
+
+struct ShapedContactGeometry {
+    bool converged = false;
+    bool touching = false;
+    Vec3 normal = Vec3::Zero();        // from j (or the wall) to i
+    double overlap = 0;
+    Vec3 contactPoint = Vec3::Zero();  // middle of the overlap
+    double effectiveRadius = 0;        // from the mean curvatures (Hertzian laws)
+    SuperquadricContactPoint solution; // the next step's warm start (pairs)
+};
+
+// The radius of curvature 1/|K| of a body's surface at x, from the mean curvature
+// K = (g^T H g - |g|^2 tr H) / (2 |g|^3) of its shape function (SPEC.md 4), capped at ten bounding
+// radii so that a flat face does not make a Hertzian contact infinitely stiff.
+inline double curvatureRadius(const PlacedSuperquadric& body, const Vec3& x) {
+    const ShapeValue v = body.at(x);
+    const double g = v.gradient.norm();
+    const double K = std::abs(v.gradient.dot(v.hessian * v.gradient) - g * g * v.hessian.trace()) / (2 * g * g * g);
+    return std::min(1 / K, 10 * body.shape->boundingRadius());
+}
+
+inline double seriesRadius(double a, double b) { return a * b / (a + b); }
+
+// A particle as a placed superquadric; a sphere partner becomes a sphere-shaped superquadric
+// (kept in `sphere`, which must outlive the result).
+inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<Superquadric>& shapes, std::size_t i,
+                                 const Vec3& centre, Superquadric& sphere) {
+    if (p.shape[i] >= 0) return {&shapes[static_cast<std::size_t>(p.shape[i])], centre, p.orientation[i].toRotationMatrix()};
+    sphere = Superquadric::sphere(p.radius[i]);
+    return {&sphere, centre, Mat3::Identity()};
+}
+
+// Particles i and j, j at xj (its periodic image next to i); `history` holds the warm start.
+inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const std::vector<Superquadric>& shapes,
+                                                std::size_t i, std::size_t j, const Vec3& xj,
+                                                const ContactHistory& history) {
+    Superquadric sphereI = Superquadric::sphere(1), sphereJ = sphereI;
+    const PlacedSuperquadric a = placed(p, shapes, i, p.position[i], sphereI), b = placed(p, shapes, j, xj, sphereJ);
+    SuperquadricContactPoint start{p.position[i] + history.warmPoint, history.warmMultiplier};
+    const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr);
+    ShapedContactGeometry g;
+    g.converged = c.converged;
+    g.touching = c.touching;
+    g.normal = c.normal;
+    g.overlap = c.overlap;
+    g.contactPoint = c.contactPoint;
+    g.solution = {c.solution.point - p.position[i], c.solution.multiplier};
+    if (c.touching)
+        g.effectiveRadius = seriesRadius(curvatureRadius(a, c.contactPoint), curvatureRadius(b, c.contactPoint));
+    return g;
+}
+
+// Particle i against a plane wall: its point deepest into the wall is the one furthest along the
+// wall's outward direction -N (Superquadric::furthestPointAlong, in the body frame).
+inline ShapedContactGeometry shapedWallGeometry(const ParticleStore& p, const std::vector<Superquadric>& shapes,
+                                                std::size_t i, const PlaneWall& wall) {
+    const Superquadric& shape = shapes[static_cast<std::size_t>(p.shape[i])];
+    const Mat3 R = p.orientation[i].toRotationMatrix();
+    const Vec3 deepest = p.position[i] + R * shape.furthestPointAlong(R.transpose() * -wall.normal);
+    ShapedContactGeometry g;
+    g.converged = true;
+    g.overlap = -wall.signedDistance(deepest);
+    g.touching = g.overlap > 0;
+    g.normal = wall.normal;
+    g.contactPoint = deepest + 0.5 * g.overlap * wall.normal;
+    if (g.touching) g.effectiveRadius = curvatureRadius({&shape, p.position[i], R}, deepest);
+    return g;
+}
+
+}  // namespace talus
