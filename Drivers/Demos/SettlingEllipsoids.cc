@@ -10,6 +10,8 @@
 // (Particles/RigidBodyRotation.h). With --blockiness e < 1 the particles are superquadric blocks
 // of the same semi-axes (e1 = e2 = e). The .ene file shows the kinetic energy decaying to rest;
 // ParaView shows the .pvd file with the ShapeTensor glyphs (Documentation/FileFormats/vtu.md).
+// --spheres 1 runs the same scene with spheres of the same volume, for the cost comparison of
+// Documentation/Superquadrics/Superquadrics.md.
 #include <cmath>
 #include <random>
 
@@ -21,12 +23,14 @@ class SettlingEllipsoids : public Simulation {
 public:
     int particleCount = 500;
     double width = 6, aspect = 2, blockiness = 1;
+    int spheres = 0;  // 1: spheres of the same volume instead (for the cost comparison)
 
     SettlingEllipsoids() {
         addFlag("particles", "number of particles", particleCount);
         addFlag("width", "width of the square box", width);
         addFlag("aspect", "ratio of the long semi-axis to the two short ones", aspect);
         addFlag("blockiness", "e1 = e2 of the superquadric (1: ellipsoids)", blockiness);
+        addFlag("spheres", "1: spheres of the same volume instead, on the sphere path (cost comparison)", spheres);
     }
 
     void setupInitialConditions() override {
@@ -58,7 +62,10 @@ public:
             const Vec3 position = Vec3(ix + 0.5, iy + 0.5, iz + 0.5) * spacing;
             const Quat orientation = Quat(gauss(random()), gauss(random()), gauss(random()), gauss(random())).normalized();
             const Vec3 velocity(jiggle(random()), jiggle(random()), jiggle(random()));
-            addSuperquadric(position, particleShape, grains, orientation, velocity);
+            if (spheres)
+                addParticle(position, std::cbrt(shape.volume() * 3 / (4 * pi)), grains, velocity);
+            else
+                addSuperquadric(position, particleShape, grains, orientation, velocity);
         }
     }
 };

@@ -7,6 +7,10 @@
 namespace talus {
 
 ShapeValue PlacedSuperquadric::at(const Vec3& x) const {
+    if (shape->isEllipsoid()) {
+        const Vec3 d = x - centre, qd = quadric * d;
+        return {d.dot(qd) - 1, 2 * qd, 2 * quadric};
+    }
     ShapeValue v = shape->evaluate(rotation.transpose() * (x - centre));
     v.gradient = rotation * v.gradient;
     v.hessian = rotation * v.hessian * rotation.transpose();
@@ -69,8 +73,15 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
         x += t * step.head<3>();
         mu += t * step[3];
         r = next;
-        if (t * step.head<3>().norm() <= settings.tolerance * scale && std::abs(r.phi[3]) <= settings.tolerance &&
-            r.phi.head<3>().norm() <= settings.tolerance * (1 + scale * r.i.gradient.norm())) {
+        // Converged when the step was small and the residual is, or when the residual alone is a
+        // hundred times below the tolerance (Newton's next step would be smaller still: a warm
+        // start then ends after one iteration).
+        const double gradientScale = 1 + scale * r.i.gradient.norm();
+        const bool residualSmall = std::abs(r.phi[3]) <= settings.tolerance &&
+                                   r.phi.head<3>().norm() <= settings.tolerance * gradientScale;
+        const bool residualTiny = std::abs(r.phi[3]) <= 0.01 * settings.tolerance &&
+                                  r.phi.head<3>().norm() <= 0.01 * settings.tolerance * gradientScale;
+        if ((residualSmall && t * step.head<3>().norm() <= settings.tolerance * scale) || residualTiny) {
             result.converged = true;
             break;
         }

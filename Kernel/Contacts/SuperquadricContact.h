@@ -19,13 +19,31 @@ namespace talus {
 
 // A superquadric placed in the lab frame: x_lab = centre + rotation x_body.
 struct PlacedSuperquadric {
-    const Superquadric* shape;
-    Vec3 centre;
-    Mat3 rotation;
+    const Superquadric* shape = nullptr;
+    Vec3 centre = Vec3::Zero();
+    Mat3 rotation = Mat3::Identity();
+
+    PlacedSuperquadric() = default;
+    PlacedSuperquadric(const Superquadric* s, const Vec3& c, const Mat3& r) : shape(s), centre(c), rotation(r) {
+        // An ellipsoid's lab shape function is the quadric F = d^T Q d - 1 (d = x - centre,
+        // Q = A diag(1/a^2, 1/b^2, 1/c^2) A^T): one matrix per solve, then every evaluation is a
+        // matrix-vector product (the ellipsoid fast path).
+        if (s->isEllipsoid())
+            quadric = r * s->semiAxes().cwiseProduct(s->semiAxes()).cwiseInverse().asDiagonal() * r.transpose();
+    }
 
     // F, grad F and the Hessian in the lab frame (SPEC.md 4: A grad f, A H A^T).
     ShapeValue at(const Vec3& x) const;
-    double valueAt(const Vec3& x) const { return shape->shapeFunction(rotation.transpose() * (x - centre)); }
+    double valueAt(const Vec3& x) const {
+        if (shape->isEllipsoid()) {
+            const Vec3 d = x - centre;
+            return d.dot(quadric * d) - 1;
+        }
+        return shape->shapeFunction(rotation.transpose() * (x - centre));
+    }
+
+private:
+    Mat3 quadric = Mat3::Zero();
 };
 
 // The point and multiplier a contact remembers from step to step (the warm start).
