@@ -1,6 +1,7 @@
 #include "IO/MercuryFormats.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
@@ -28,8 +29,8 @@ std::vector<std::uint32_t> slotsById(const ParticleStore& particles) {
 // .data: header "N t xmin ymin zmin xmax ymax zmax " then per particle
 // "x y z vx vy vz r thx thy thz wx wy wz species" (positions 15 digits, the rest 10, as MercuryDPM).
 // Sphere orientation is not tracked, so their three angle columns are 0; a non-spherical
-// particle's are its orientation as a rotation vector (axis times angle, |th| <= pi), and r is its
-// bounding radius.
+// particle's are the roll, pitch and yaw angles (Tait-Bryan Z-Y-X) of its orientation, as
+// MercuryDPM writes them, and r is its bounding radius.
 void appendDataFrame(std::string& out, const SimulationState& state, const std::vector<std::uint32_t>& order) {
     const ParticleStore& p = state.particles;
     const Domain& d = state.domain;
@@ -39,8 +40,10 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
         const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
         Vec3 th = Vec3::Zero();
         if (p.isShaped(i)) {
-            const Eigen::AngleAxisd turn(p.orientation[i]);
-            th = turn.angle() * turn.axis();
+            const Quat& q = p.orientation[i];
+            th.x() = std::atan2(2 * (q.w() * q.x() + q.y() * q.z()), 1 - 2 * (q.x() * q.x() + q.y() * q.y()));
+            th.y() = std::asin(std::clamp(2 * (q.w() * q.y() - q.z() * q.x()), -1.0, 1.0));
+            th.z() = std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
         }
         append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %u\n", x.x(), x.y(),
                x.z(), v.x(), v.y(), v.z(), p.radius[i], th.x(), th.y(), th.z(), w.x(), w.y(), w.z(), p.species[i]);
