@@ -229,6 +229,22 @@ std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, st
     return i;
 }
 
+std::size_t Simulation::addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                             const Quat& orientation, int motion) {
+    require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
+            "fixed superquadric: motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
+    const std::size_t i = addSuperquadric(position, shape, species, orientation);
+    ParticleStore& p = state_.particles;
+    p.fixed[i] = 1;
+    p.invMass[i] = 0;
+    p.motion[i] = motion;
+    if (motion >= 0) {
+        p.velocity[i] = state_.motions[motion].pointVelocity(position);
+        p.angularVelocity[i] = state_.motions[motion].angularVelocity;
+    }
+    return i;
+}
+
 void Simulation::removeParticle(std::size_t slot) {
     require(slot < state_.particles.size(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
     const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);

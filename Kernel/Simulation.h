@@ -83,6 +83,10 @@ public:
     std::size_t addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                 const Quat& orientation = Quat::Identity(), const Vec3& velocity = Vec3::Zero(),
                                 const Vec3& angularVelocity = Vec3::Zero());
+    // A fixed superquadric: never integrated, still collides; follows motion if motion >= 0 (its
+    // orientation turns with the motion).
+    std::size_t addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                     const Quat& orientation = Quat::Identity(), int motion = -1);
     const std::vector<Superquadric>& shapes() const { return state_.shapes; }
     void removeParticle(std::size_t slot);
 

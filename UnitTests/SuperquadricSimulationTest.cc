@@ -148,3 +148,66 @@ TEST(SuperquadricSimulation, UnnormalisedOrientationInARestartIsRefused) {
     expectError([&] { readRestartFile("unnormalised.restart", read); },
                 {"unnormalised.restart line", "particle id 0", "not normalised"});
 }
+
+TEST(SuperquadricSimulation, HertzianTipToTipCollisionUsesTheTipsCurvature) {
+    // Two prolate spheroids (a = 0.5, b = c = 0.25) meet tip to tip along their long axes. Both
+    // principal curvatures at a tip are a/b^2, so each tip is a sphere of radius b^2/a = 0.125
+    // there and R* = 0.0625: the elastic Hertz duration tc = 2 (2/5) B(2/5, 1/2) dmax / v with
+    // dmax = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5) (Hertz theory, as HeadOnCollision checks for spheres).
+    // Slow enough that dmax is 1.6% of the tip radius, where the tip is still the paraboloid Hertz assumes.
+    const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.25);
+    const double mass = 6 / pi * shape.volume(), reducedMass = mass / 2, speed = 0.2;  // approach speed
+    HertzMindlin law;
+    law.effectiveYoungsModulus = 1e5;
+    law.restitution = 1;
+    law.characteristicVelocity = speed;
+    const double effectiveRadius = 0.125 / 2;
+    const double maxOverlap = std::pow(15 * reducedMass * speed * speed / (16 * law.effectiveYoungsModulus * std::sqrt(effectiveRadius)), 0.4);
+    const double expected = 2 * 0.4 * std::beta(0.4, 0.5) * maxOverlap / speed;
+    SceneSimulation s;
+    int contactSteps = 0;
+    const double dt = expected / 2000;
+    s.setup = [&](SceneSimulation& sim) {
+        sim.setGravity(Vec3::Zero());
+        sim.setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
+        const auto species = sim.addSpecies("grains", 6 / pi, law);
+        const std::size_t sq = sim.addShape(shape);
+        sim.addSuperquadric(Vec3(-0.501, 0, 0), sq, species, Quat::Identity(), Vec3(speed / 2, 0, 0));
+        sim.addSuperquadric(Vec3(0.501, 0, 0), sq, species, Quat::Identity(), Vec3(-speed / 2, 0, 0));
+    };
+    s.afterStep = [&](SceneSimulation& sim) { contactSteps += sim.contactSummary().contacts > 0; };
+    s.setParticleReordering(false);
+    s.run(dt, 0.002 / speed + 2 * expected);
+    const double duration = contactSteps * dt;
+    const double rebound = (s.particles().velocity[s.slotOf(1)].x() - s.particles().velocity[s.slotOf(0)].x()) / speed;
+    std::printf("[ measured ] Hertz tip to tip: duration %.6e against %.6e, rebound speed ratio %.8f\n", duration,
+                expected, rebound);
+    EXPECT_NEAR(duration / expected, 1, 2e-3);
+    EXPECT_NEAR(rebound, 1, 1e-6);
+}
+
+TEST(SuperquadricSimulation, SphereComesToRestOnAFixedEllipsoid) {
+    // A sphere (r = 0.3, m = 6/pi 4/3 pi r^3) dropped onto the top of a fixed ellipsoid lying
+    // along x (semi-axes 1, 0.6, 0.4, centre at the origin) settles where the linear spring
+    // carries its weight: z = c + r - m g / kn (the top of the ellipsoid is at z = c, the overlap
+    // m g / kn), with no sideways drift (the top is a point of symmetry).
+    SceneSimulation s;
+    const double r = 0.3, mass = 6 / pi * 4.0 / 3.0 * pi * r * r * r;
+    const LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.5);
+    s.setup = [&](SceneSimulation& sim) {
+        sim.setGravity(Vec3(0, 0, -1));
+        sim.setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
+        const auto species = sim.addSpecies("grains", 6 / pi, law);
+        sim.addFixedSuperquadric(Vec3::Zero(), sim.addShape(Superquadric::ellipsoid(1, 0.6, 0.4)), species);
+        sim.addParticle(Vec3(0, 0, 0.4 + r + 0.05), r, species);
+    };
+    s.run(1e-4, 3);
+    const std::size_t sphere = s.slotOf(1), ellipsoid = s.slotOf(0);
+    const double expected = 0.4 + r - mass / law.normalStiffness;
+    std::printf("[ measured ] sphere on a fixed ellipsoid: z = %.10f against %.10f\n",
+                s.particles().position[sphere].z(), expected);
+    EXPECT_NEAR(s.particles().position[sphere].z(), expected, 1e-6 * r);
+    EXPECT_LT(s.particles().position[sphere].head<2>().norm(), 1e-9);
+    EXPECT_EQ(s.particles().position[ellipsoid], Vec3::Zero());
+    EXPECT_LT(s.particles().velocity[sphere].norm(), 1e-6);
+}

@@ -59,8 +59,12 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
     g.overlap = c.overlap;
     g.contactPoint = c.contactPoint;
     g.solution = {c.solution.point - p.position[i], c.solution.multiplier};
-    if (c.touching)
-        g.effectiveRadius = seriesRadius(curvatureRadius(a, c.contactPoint), curvatureRadius(b, c.contactPoint));
+    if (c.touching) {
+        // Each body's curvature on its own surface, at the ends of the overlap along the normal.
+        const Vec3 halfOverlap = 0.5 * c.overlap * c.normal;
+        g.effectiveRadius = seriesRadius(curvatureRadius(a, c.contactPoint - halfOverlap),
+                                         curvatureRadius(b, c.contactPoint + halfOverlap));
+    }
     return g;
 }
 
