@@ -311,9 +311,25 @@ private:
     // kinematics of the contact point, with the branch vectors from the centres to it. The ends
     // of a contact are not treated (the law's plain step), and the tangential spring is turned
     // into the new tangent plane with its length kept (seed:8339-8449).
+    // A pair apart keeps a lower bound of its gap (ShapedContactGeometry::gapBound) and lowers it
+    // each step by how far the two bodies can have closed in (relative speed of the centres plus
+    // each spin times its bounding radius, with a margin of half for the change of speed within
+    // the step); while it stays positive the pair cannot touch and is not solved. Such a pair is
+    // marked "approaching", so that the force loop's sweep visits it every step, also while its
+    // bounding spheres are apart: the bound is then never stale.
     [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& d) {
         const Vec3 xj = p_.position[i] - d;  // j's image next to i
         ContactHistory history = list.history.get(k);
+        if (history.isApproaching() && history.gapBound() > 0) {
+            const double closing = (p_.velocity[i] - p_.velocity[j]).norm() + p_.angularVelocity[i].norm() * p_.radius[i] +
+                                   p_.angularVelocity[j].norm() * p_.radius[j];
+            history.gapBound() -= 1.5 * closing * dt_;
+            if (history.gapBound() > 0) {
+                history.lastNormalForce = 0;
+                list.history.set(k, history);
+                return;
+            }
+        }
         const ShapedContactGeometry g = shapedPairGeometry(p_, *shapes_, i, j, xj, history);
         if (!g.converged) detectionFailed(i, j);
         history.warmPoint = g.solution.point;
@@ -321,6 +337,10 @@ private:
         const Law& law = laws_(p_.species[i], p_.species[j]);
         shapedContact(history, g, i, j, xj, p_.velocity[j], p_.angularVelocity[j], p_.invMass[j], law,
                       std::min(sizeOf(i), sizeOf(j)));
+        if (!g.touching && g.gapBound > 0) {
+            history.state = ContactHistory::approaching;
+            history.gapBound() = g.gapBound;
+        }
         list.history.set(k, history);
     }
 

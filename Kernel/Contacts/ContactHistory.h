@@ -30,6 +30,8 @@ struct ContactHistory {
     double& pushAhead() { return spring.x(); }
     double& approachSpeed() { return spring.y(); }
     double& overlapBefore() { return spring.z(); }
+    // A pair with a superquadric that is apart: a lower bound of its gap (ContactForces.h).
+    double& gapBound() { return spring.x(); }
     bool operator==(const ContactHistory&) const = default;
 };
 

@@ -21,6 +21,7 @@ struct ShapedContactGeometry {
     Vec3 contactPoint = Vec3::Zero();  // middle of the overlap
     double effectiveRadius = 0;        // from the mean curvatures (Hertzian laws)
     SuperquadricContactPoint solution; // the next step's warm start (pairs)
+    double gapBound = 0;               // pairs apart: the gap is at least this
 };
 
 // The radius of curvature 1/|K| of a body's surface at x, from the mean curvature
@@ -59,6 +60,7 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
     g.overlap = c.overlap;
     g.contactPoint = c.contactPoint;
     g.solution = {c.solution.point - p.position[i], c.solution.multiplier};
+    g.gapBound = c.gapBound;
     if (c.touching) {
         // Each body's curvature on its own surface, at the ends of the overlap along the normal.
         const Vec3 halfOverlap = 0.5 * c.overlap * c.normal;

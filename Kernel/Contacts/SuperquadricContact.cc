@@ -137,6 +137,8 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
     const double distance = between.norm();
     if (distance >= Ri + Rj) {  // the bounding spheres are apart: so are the bodies
         contact.converged = true;
+        contact.solution.multiplier = 0;  // nothing solved: no warm start
+        contact.gapBound = distance - (Ri + Rj);
         return contact;
     }
     if (i.shape->isSphere() && j.shape->isSphere()) {
@@ -185,6 +187,17 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
     const Vec3& x = found.point.point;
     const ShapeValue atI = i.at(x);
     contact.touching = atI.value < 0;
+    if (!contact.touching) {
+        // Fi = Fj = t > 0 at Xc: f + 1 is homogeneous of degree 2/e1, so the level set F = t is the
+        // body scaled by (1 + t)^(e1/2) about its centre, and the two scaled bodies touch at Xc. A
+        // convex body holding the ball of its smallest semi-axis r grows by at least (scale - 1) r
+        // in every direction when scaled, so the bodies are at least (si - 1) ri + (sj - 1) rj apart.
+        const double t = atI.value;
+        auto growth = [t](const PlacedSuperquadric& body) {
+            return (std::pow(1 + t, body.shape->e1() / 2) - 1) * body.shape->semiAxes().minCoeff();
+        };
+        contact.gapBound = growth(i) + growth(j);
+    }
     const Vec3 outOfI = atI.gradient.normalized();
     contact.normal = -outOfI;
     if (!contact.touching) return contact;

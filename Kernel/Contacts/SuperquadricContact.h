@@ -66,6 +66,7 @@ struct SuperquadricContact {
     Vec3 contactPoint = Vec3::Zero();  // middle of the overlap along the normal (the sphere path's point)
     int iterations = 0;                // Newton iterations in all, plan B included
     int morphStages = 0;               // 0: plain Newton sufficed; else the stages plan B needed
+    double gapBound = 0;               // apart: a lower bound of the distance between the bodies
 };
 
 // Exact contact of i and j, warm-started from `start` if given (a lasting contact), else from
