@@ -194,7 +194,9 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
         // in every direction when scaled, so the bodies are at least (si - 1) ri + (sj - 1) rj apart.
         const double t = atI.value;
         auto growth = [t](const PlacedSuperquadric& body) {
-            return (std::pow(1 + t, body.shape->e1() / 2) - 1) * body.shape->semiAxes().minCoeff();
+            const double e1 = body.shape->e1();
+            const double scale = e1 == 1 ? std::sqrt(1 + t) : std::pow(1 + t, e1 / 2);
+            return (scale - 1) * body.shape->semiAxes().minCoeff();
         };
         contact.gapBound = growth(i) + growth(j);
     }
