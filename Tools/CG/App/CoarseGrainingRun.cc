@@ -10,8 +10,10 @@
 
 #include "App/CsvWriter.h"
 #include "Fields/CoarseGrainer.h"
+#include "Fields/DepthAverage.h"
 #include "Fields/DerivedFields.h"
 #include "Fields/EvaluationPoints.h"
+#include "Fields/MixingIndex.h"
 #include "IO/DataFileReader.h"
 #include "IO/FstatFileReader.h"
 #include "IO/InputError.h"
@@ -115,14 +117,45 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     double firstTime = 0, lastTime = 0;
     auto lastProgress = start;
     const std::string outputPath = options.outputPath.empty() ? base + ".cg.csv" : options.outputPath;
+    // M and S go beside the fields: out.csv -> out.mixing.csv.
+    const std::string mixingPath =
+        !options.mixingPath.empty() ? options.mixingPath
+                                    : (outputPath.ends_with(".csv") ? outputPath.substr(0, outputPath.size() - 4) : outputPath) +
+                                          ".mixing.csv";
 
     std::vector<std::string> comments;
+    // Depth averages: z points per column and their spacing (the grid's z is its last axis).
+    long pointsPerColumn = 0;
+    double dz = 0;
+    bool coverageWarned = false;
+    std::unique_ptr<CsvWriter> mixingWriter;
+
     auto writeAveragedOrFrame = [&](const std::vector<double>& rowSums, double time) {
-        std::vector<double> values;
-        for (std::size_t p = 0; p < points.size(); ++p) {
-            values.clear();
-            appendDerivedFields(layout, rowSums.data() + p * layout.count(), values);
-            writer->writeRow(time, points[p], values);
+        if (options.depthAverage) {
+            std::vector<std::vector<double>> rows;
+            const DepthAverageCoverage coverage = depthAverage(layout, rowSums, pointsPerColumn, dz, options.bulkDensity, rows);
+            for (std::size_t c = 0; c < rows.size(); ++c) writer->writeRow(time, points[c * pointsPerColumn], rows[c]);
+            if (coverage.topDensityRatio > 1e-3 && !coverageWarned) {
+                coverageWarned = true;
+                log << "talus-cg: warning: --depth-average: at the top of the z range the density is " << str(coverage.topDensityRatio)
+                    << " of its column maximum (t = " << str(time) << "): the range -z does not cover the flow, so the mass per area and height are too small\n";
+            }
+        } else {
+            std::vector<double> values;
+            for (std::size_t p = 0; p < points.size(); ++p) {
+                values.clear();
+                appendDerivedFields(layout, rowSums.data() + p * layout.count(), values);
+                writer->writeRow(time, points[p], values);
+            }
+        }
+        if (mixingWriter) {
+            const MixingIndices mixing = mixingIndices(layout, points, rowSums, setup.coordinates, *options.mixingSpecies);
+            mixingWriter->writeRow(time, Vec3{0, 0, 0},
+                                   {mixing.mixing, mixing.segregation, mixing.speciesAtCore ? 1.0 : 0.0, mixing.centre[0],
+                                    mixing.centre[1], mixing.centre[2], mixing.speciesDistance, mixing.materialDistance});
+            log << "talus-cg: t = " << str(time) << ": mixing index M = " << str(mixing.mixing) << ", segregation index S = "
+                << str(mixing.segregation) << " (species " << *options.mixingSpecies << " at the "
+                << (mixing.speciesAtCore ? "core" : "periphery") << ")\n";
         }
     };
 
@@ -173,6 +206,14 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                     }
                 }
                 points = gridPoints(setup.coordinates, count, lo, hi);
+                if (options.depthAverage) {
+                    if (!setup.coordinates.resolves(2)) {
+                        throw InputError("--depth-average: --coordinates " + setup.coordinates.name() +
+                                         " does not resolve z (use XZ for a chute, Z for one column)");
+                    }
+                    pointsPerColumn = count[2];
+                    dz = (hi[2] - lo[2]) / double(count[2]);
+                }
             }
             // Species in the output: those with a density given (the default list is cut to the
             // species the first frame shows).
@@ -184,7 +225,10 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                 grainer = CoarseGrainer(setup);
                 layout = grainer.layout();
             }
-            columns = derivedColumns(layout);
+            if (options.mixingSpecies && layout.species < 2) {
+                throw InputError("--mixing: needs a mixture of at least 2 species, the run has " + std::to_string(layout.species));
+            }
+            columns = options.depthAverage ? depthAveragedColumns(layout) : derivedColumns(layout);
             comments.push_back("talus-cg: coarse-grained fields (Documentation/CoarseGraining.md)");
             comments.push_back("input: " + dataPath + (setup.contactStress ? " and " + fstatPath : std::string()) +
                                (restartPath.empty() ? std::string() : ", " + restartPath));
@@ -204,7 +248,29 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                                (options.timeAverage ? "; time average over the frames with " + str(options.timeMin) +
                                                           " <= t <= " + str(options.timeMax)
                                                     : "; one block of rows per frame"));
-            writer = std::make_unique<CsvWriter>(outputPath, setup.coordinates, !options.timeAverage, columns, comments);
+            if (options.depthAverage) {
+                comments.push_back("depth averages over z (midpoint rule, dz = " + str(dz) + "): " +
+                                   (options.bulkDensity ? "height = mass per area / bulk density " + str(*options.bulkDensity)
+                                                        : std::string("bulk density = mass-weighted mean density")) +
+                                   "; velocity and concentration mass-weighted (Fields/DepthAverage.h)");
+                std::vector<int> axes = setup.coordinates.kernelAxes();
+                axes.pop_back();  // z, integrated out
+                writer = std::make_unique<CsvWriter>(outputPath, axes, !options.timeAverage, columns, comments);
+            } else {
+                writer = std::make_unique<CsvWriter>(outputPath, setup.coordinates, !options.timeAverage, columns, comments);
+            }
+            if (options.mixingSpecies) {
+                std::vector<std::string> mixingComments = comments;
+                mixingComments.push_back("mixing index M and segregation index S (SPEC.md 5) of species " +
+                                         std::to_string(*options.mixingSpecies) +
+                                         "; SpeciesAtCore 1 when its mean distance from the centre of mass is below the material's (Fields/MixingIndex.h)");
+                mixingWriter = std::make_unique<CsvWriter>(
+                    mixingPath, std::vector<int>{}, true,
+                    std::vector<OutputColumn>{{"MixingIndex", "1"}, {"SegregationIndex", "1"}, {"SpeciesAtCore", "1"},
+                                              {"CentreX", "L"}, {"CentreY", "L"}, {"CentreZ", "L"},
+                                              {"SpeciesDistance", "L"}, {"MaterialDistance", "L"}},
+                    mixingComments);
+            }
             average.assign(points.size() * layout.count(), 0.0);
             firstTime = time;
         }
@@ -238,6 +304,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
         writeAveragedOrFrame(average, lastTime);
     }
     writer->close();
+    if (mixingWriter) mixingWriter->close();
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     log << "talus-cg: " << framesUsed << " frames (t = " << str(firstTime) << " to " << str(lastTime) << ")"
         << (options.timeAverage ? " averaged" : "") << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "

@@ -6,7 +6,11 @@ namespace talus::cg {
 
 CsvWriter::CsvWriter(const std::string& path, const Coordinates& coordinates, bool withTime,
                      const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments)
-    : path_(path), file_(std::fopen(path.c_str(), "w")), axes_(coordinates.kernelAxes()), withTime_(withTime) {
+    : CsvWriter(path, coordinates.kernelAxes(), withTime, fields, comments) {}
+
+CsvWriter::CsvWriter(const std::string& path, const std::vector<int>& axes, bool withTime,
+                     const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments)
+    : path_(path), file_(std::fopen(path.c_str(), "w")), axes_(axes), withTime_(withTime) {
     if (file_ == nullptr) throw InputError("-o: cannot write " + path);
     for (const std::string& line : comments) std::fprintf(file_, "# %s\n", line.c_str());
     std::string units = "# units (M mass, L length, T time):";

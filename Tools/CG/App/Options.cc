@@ -156,6 +156,17 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.timeAverage = true;
         } else if (option == "--progress-interval") {
             o.progressInterval = args.real(given);
+        } else if (option == "--depth-average") {
+            o.depthAverage = true;
+        } else if (option == "--bulk-density") {
+            o.bulkDensity = args.real(given);
+            if (!(*o.bulkDensity > 0)) throw InputError(given + ": the bulk density must be positive, found " + str(*o.bulkDensity));
+        } else if (option == "--mixing") {
+            const long species = args.integer(given);
+            if (species < 0) throw InputError(given + ": the species index must be 0 or more, found " + std::to_string(species));
+            o.mixingSpecies = static_cast<int>(species);
+        } else if (option == "--mixing-output") {
+            o.mixingPath = args.text(given);
         } else if (!given.empty() && given[0] == '-') {
             throw InputError("unknown option '" + given + "' (see --help)");
         } else if (o.name.empty()) {
@@ -171,6 +182,12 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         throw InputError("--width, --widths and --width-matrix exclude each other: give one");
     }
     if (!o.pointsPath.empty() && !o.counts.empty()) throw InputError("-n and --points exclude each other: give one");
+    if ((o.depthAverage || o.mixingSpecies) && !o.pointsPath.empty()) {
+        throw InputError(std::string(o.depthAverage ? "--depth-average" : "--mixing") +
+                         " integrates over a regular grid: it cannot be used with --points");
+    }
+    if (o.bulkDensity && !o.depthAverage) throw InputError("--bulk-density: only used with --depth-average");
+    if (!o.mixingPath.empty() && !o.mixingSpecies) throw InputError("--mixing-output: needs --mixing K");
     if (o.timeMax < o.timeMin) throw InputError("--time-max " + str(o.timeMax) + " is below --time-min " + str(o.timeMin));
     return o;
 }
@@ -208,6 +225,16 @@ where:
 when:
   --time-min T, --time-max T   frames with T_min <= t <= T_max (default all)
   --time-average          average the fields over the selected frames (default: write every frame)
+
+derived (Documentation/CoarseGraining.md "Depth averages", "Mixing and segregation indices"):
+  --depth-average         write, per column of the grid (per x for XZ, one row for Z), the mass per
+                          area, bulk density, height, depth-averaged velocity and concentrations
+                          instead of the fields; z must be resolved and its range cover the flow
+  --bulk-density RHO      bulk density for the height h = mass per area / RHO (default: the
+                          mass-weighted mean density of the column)
+  --mixing K              mixing index M and segregation index S (SPEC.md 5) with species K as the
+                          spheres, for every frame written (or the time average)
+  --mixing-output FILE    where M and S go (default: the output file with .mixing.csv for .csv)
 
 output:
   -o, --output FILE       CSV file (default NAME.cg.csv)

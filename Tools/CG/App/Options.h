@@ -38,6 +38,11 @@ struct ProgramOptions {
     double timeMin = -1e300, timeMax = 1e300;     // --time-min, --time-max
     bool timeAverage = false;                     // --time-average
     double progressInterval = 5;                  // --progress-interval (wall seconds)
+
+    bool depthAverage = false;                    // --depth-average (Fields/DepthAverage.h)
+    std::optional<double> bulkDensity;            // --bulk-density (default: mass-weighted mean density)
+    std::optional<int> mixingSpecies;             // --mixing K (Fields/MixingIndex.h)
+    std::string mixingPath;                       // --mixing-output (default: -o with .mixing.csv for .csv)
 };
 
 ProgramOptions parseOptions(int argc, const char* const* argv);
