@@ -252,6 +252,14 @@ void Simulation::removeParticle(std::size_t slot) {
     state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);
 }
 
+std::size_t Simulation::addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius,
+                                        std::size_t species, int motion) {
+    require(std::isfinite(radius) && radius > 0, "cylinder wall: the radius must be positive, got " + str(radius));
+    const std::size_t w = addWall(axisDirection, axisPoint, species, motion);
+    state_.walls[w].radius = radius;
+    return w;
+}
+
 std::size_t Simulation::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {
     require(isFinite(normal) && normal.norm() > 0, "wall: the normal must be a non-zero vector");
     require(isFinite(point), "wall: the point is not finite");
@@ -361,7 +369,7 @@ void Simulation::initialise(bool restarted) {
         laws_ = state_.species.table<LinearSpringDashpot>();
     else
         laws_ = state_.species.table<HertzMindlin>();
-    for (const PlaneWall& w : state_.walls)
+    for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
     grid_ = HGrid(c.cellSizeRatio);
@@ -412,7 +420,7 @@ double Simulation::shortestCollisionTime(std::string* which) const {
         s.lightest = std::min(s.lightest, p.mass[i]);
         s.smallest = std::min(s.smallest, p.radius[i]);
     }
-    for (const PlaneWall& w : state_.walls) present[w.species].immobile = true;
+    for (const Wall& w : state_.walls) present[w.species].immobile = true;
 
     double shortest = INFINITY;
     auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
@@ -527,7 +535,7 @@ void Simulation::moveWithPrescribedMotion() {
         const PrescribedMotion& m = state_.motions[p.motion[i]];
         p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
     }
-    for (PlaneWall& w : state_.walls) {
+    for (Wall& w : state_.walls) {
         if (w.motion < 0) continue;
         w.point = state_.motions[w.motion].moved(w.point, rotation[w.motion], dt);
         w.normal = (rotation[w.motion] * w.normal).normalized();

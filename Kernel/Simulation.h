@@ -95,6 +95,11 @@ public:
     void addBoundary(Boundary& boundary) { boundaries_.push_back(&boundary); }
 
     std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
+    // The inside of a cylinder (a drum's mantle, Walls/Wall.h) of the given radius about the axis
+    // through axisPoint along axisDirection; a drum turns with a motion whose centre is on the
+    // axis and whose angular velocity is along it (addMotion).
+    std::size_t addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius, std::size_t species,
+                                int motion = -1);
     std::size_t addMotion(const PrescribedMotion& motion);
 
     ParticleStore& particles() { return state_.particles; }
@@ -102,7 +107,7 @@ public:
     // The current slot of the particle with global id `id` (ids count from 0 in the order of
     // addParticle/addFixedParticle). A linear search: for drivers and tests, not inner loops.
     std::size_t slotOf(std::uint64_t id) const;
-    std::vector<PlaneWall>& walls() { return state_.walls; }
+    std::vector<Wall>& walls() { return state_.walls; }
     std::vector<PrescribedMotion>& motions() { return state_.motions; }
     std::mt19937_64& random() { return state_.random; }
 

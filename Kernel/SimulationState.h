@@ -13,7 +13,7 @@
 #include "Particles/ParticleStore.h"
 #include "Shapes/Superquadric.h"
 #include "Species/SpeciesTable.h"
-#include "Walls/PlaneWall.h"
+#include "Walls/Wall.h"
 #include "Walls/PrescribedMotion.h"
 
 namespace talus {
@@ -49,7 +49,7 @@ struct SimulationState {
     SpeciesTable species;
     std::vector<Superquadric> shapes;  // of the non-spherical particles (ParticleStore::shape)
     ParticleStore particles;
-    std::vector<PlaneWall> walls;
+    std::vector<Wall> walls;
     std::vector<PrescribedMotion> motions;
     PairList pairList;
     std::mt19937_64 random{20260101};

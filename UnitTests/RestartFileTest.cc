@@ -48,6 +48,7 @@ void richScene(SceneSimulation& s) {
     const double spacing = 0.99, bottom = 0.495, top = bottom + 2 * spacing;
     s.addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
     s.addWall(-Vec3::UnitZ(), Vec3(0, 0, top + 0.495), glass, lidMotion);
+    s.addCylinderWall(Vec3(0.5, 0, 0), Vec3(0.1, 0, 1), 40, steel);  // a drum around it all, out of reach
     for (int k = 0; k < 4; ++k)  // a row of fixed spheres along one side of the block
         s.addFixedParticle(Vec3(-1 + spacing * (k - 1), 2 + spacing, bottom), 0.5, steel, k == 3 ? conveyor : -1);
 
@@ -150,6 +151,7 @@ void expectSameState(const SimulationState& a, const SimulationState& b) {
         EXPECT_TRUE(sameBits(a.walls[k].point, b.walls[k].point));
         EXPECT_EQ(a.walls[k].species, b.walls[k].species);
         EXPECT_EQ(a.walls[k].motion, b.walls[k].motion);
+        EXPECT_TRUE(sameBits(a.walls[k].radius, b.walls[k].radius));
     }
     expectSameParticles(a.particles, b.particles);
     EXPECT_EQ(a.nextId, b.nextId);

@@ -122,8 +122,8 @@ private:
     std::vector<double> radius_;
 };
 
-bool clearOfWalls(const std::vector<PlaneWall>& walls, const Vec3& x, double r) {
-    for (const PlaneWall& w : walls)
+bool clearOfWalls(const std::vector<Wall>& walls, const Vec3& x, double r) {
+    for (const Wall& w : walls)
         if (w.signedDistance(x) < r) return false;
     return true;
 }

@@ -16,7 +16,7 @@
 #include "Error.h"
 #include "Particles/ParticleStore.h"
 #include "Species/SpeciesTable.h"
-#include "Walls/PlaneWall.h"
+#include "Walls/Wall.h"
 #include "Walls/PrescribedMotion.h"
 
 namespace talus {
@@ -269,10 +269,10 @@ public:
         oneWay_ = false;
     }
 
-    void wallPairs(PairList& list, const std::vector<PlaneWall>& walls, const std::vector<PrescribedMotion>& motions) {
+    void wallPairs(PairList& list, const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions) {
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
             const std::uint32_t i = list.wallPairs[k].particle;
-            const PlaneWall& wall = walls[list.wallPairs[k].wall];
+            const Wall& wall = walls[list.wallPairs[k].wall];
             if (shapes_ && p_.isShaped(i)) [[unlikely]] {
                 shapedWall(list, k, i, wall, motions);
                 continue;
@@ -285,16 +285,19 @@ public:
                 continue;
             ContactHistory history = list.wallHistory.get(k);
             const double overlap = p_.radius[i] - distance;
-            const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * wall.normal;
+            const Vec3 normal = wall.normalAt(p_.position[i]);
+            const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * normal;
             const Vec3 wallVelocity =
                 wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
             Arms arms;
-            ContactKinematics c = contactKinematics(wall.normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
+            ContactKinematics c = contactKinematics(normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
                                                     p_.angularVelocity[i], Vec3::Zero(), arms);
             c.inverseDistance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
             c.inverseReducedMass = p_.invMass[i];
             c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
-            c.effectiveRadius = p_.radius[i];
+            // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
+            // direction only, the mean curvature of the gap, 1/r - 1/(2R) (SPEC.md 4).
+            c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
             const Law& law = laws_(p_.species[i], wall.species);
             const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
             if (touching)
@@ -344,7 +347,7 @@ private:
         list.history.set(k, history);
     }
 
-    [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const PlaneWall& wall,
+    [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,
                                       const std::vector<PrescribedMotion>& motions) {
         ContactHistory history = list.wallHistory.get(k);
         const ShapedContactGeometry g = shapedWallGeometry(p_, *shapes_, i, wall);
@@ -523,7 +526,7 @@ private:
 };
 
 template <class Law>
-void addContactForces(ParticleStore& p, PairList& list, const std::vector<PlaneWall>& walls,
+void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
                       std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr) {

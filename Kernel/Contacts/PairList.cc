@@ -57,7 +57,7 @@ bool worthCarrying(const ContactHistory& h) {
 
 }  // namespace
 
-void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
+void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                        HGrid& grid, double dt) {
     // 1. Remember the history of touching pairs by global ids (a wall w is id ~w, an id that no
     //    particle can have).

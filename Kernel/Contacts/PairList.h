@@ -16,7 +16,7 @@
 #include "Contacts/ContactHistory.h"
 #include "Contacts/HGrid.h"
 #include "Particles/ParticleStore.h"
-#include "Walls/PlaneWall.h"
+#include "Walls/Wall.h"
 
 namespace talus {
 
@@ -56,7 +56,7 @@ public:
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.
-    void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<PlaneWall>& walls,
+    void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt);
 
     // The particles were permuted (new slot k holds old slot order[k], ParticleStore::permute):

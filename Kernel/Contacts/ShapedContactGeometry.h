@@ -9,7 +9,7 @@
 #include "Contacts/ContactHistory.h"
 #include "Contacts/SuperquadricContact.h"
 #include "Particles/ParticleStore.h"
-#include "Walls/PlaneWall.h"
+#include "Walls/Wall.h"
 
 namespace talus {
 
@@ -70,19 +70,21 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
     return g;
 }
 
-// Particle i against a plane wall: its point deepest into the wall is the one furthest along the
+// Particle i against a wall: its point deepest into the wall (or the drum's tangent plane) is the one furthest along the
 // wall's outward direction -N (Superquadric::furthestPointAlong, in the body frame).
 inline ShapedContactGeometry shapedWallGeometry(const ParticleStore& p, const std::vector<Superquadric>& shapes,
-                                                std::size_t i, const PlaneWall& wall) {
+                                                std::size_t i, const Wall& wall) {
     const Superquadric& shape = shapes[static_cast<std::size_t>(p.shape[i])];
     const Mat3 R = p.orientation[i].toRotationMatrix();
-    const Vec3 deepest = p.position[i] + R * shape.furthestPointAlong(R.transpose() * -wall.normal);
+    // (A drum wall: its tangent plane nearest to the particle's centre, Walls/Wall.h.)
+    const Vec3 normal = wall.normalAt(p.position[i]);
+    const Vec3 deepest = p.position[i] + R * shape.furthestPointAlong(R.transpose() * -normal);
     ShapedContactGeometry g;
     g.converged = true;
-    g.overlap = -wall.signedDistance(deepest);
+    g.overlap = -wall.tangentPlaneDistance(deepest, p.position[i]);
     g.touching = g.overlap > 0;
-    g.normal = wall.normal;
-    g.contactPoint = deepest + 0.5 * g.overlap * wall.normal;
+    g.normal = normal;
+    g.contactPoint = deepest + 0.5 * g.overlap * normal;
     if (g.touching) g.effectiveRadius = curvatureRadius({&shape, p.position[i], R}, deepest);
     return g;
 }

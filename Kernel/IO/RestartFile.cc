@@ -215,8 +215,9 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("motions") << std::uint64_t(s.motions.size()); w.end();
         for (const PrescribedMotion& m : s.motions) { w.key("  ") << m.velocity << m.angularVelocity << m.centre; w.end(); }
         w.key("walls") << std::uint64_t(s.walls.size()); w.end();
-        for (const PlaneWall& wall : s.walls) {
-            w.key("  ") << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion);
+        for (const Wall& wall : s.walls) {
+            w.key("  ") << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion)
+                        << wall.radius;
             w.end();
         }
         const ParticleStore& p = s.particles;
@@ -354,11 +355,13 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     };
     r.expect("walls");
     t.walls.resize(r.count("wall count", 1u << 20));
-    for (PlaneWall& w : t.walls) {
+    for (Wall& w : t.walls) {
         w.normal = r.vec("wall normal");
         w.point = r.vec("wall point");
         w.species = static_cast<std::uint32_t>(r.count("wall species", speciesCount - 1));
         w.motion = motionIndex("wall motion");
+        w.radius = r.real("wall radius");
+        if (!(w.radius >= 0)) r.fail("wall radius must be 0 (a plane) or positive (a cylinder)");
     }
     r.expect("shapes");
     const bool shapes = r.flag("shapes flag");
