@@ -221,6 +221,12 @@ TEST(MaserBoundary, BadSetupsAreClearErrors) {
         s.maser.activate(s, -3);
     };
     test::expectError([&] { computeInitialForces(noSpecies); }, {"maser", "chute must end downstream"});
+    MaserScene shaped;
+    shaped.arrange = [](MaserScene& s) {
+        s.addSuperquadric(Vec3(-5, 1, 0), s.addShape(Superquadric::ellipsoid(0.5, 0.25, 0.25)), 1);
+        s.maser.activate(s, 10);
+    };
+    test::expectError([&] { computeInitialForces(shaped); }, {"maser", "superquadric particles", "not supported"});
 }
 
 // Seeding: at activation the first box length of the chute gets a copy of every mobile particle

@@ -58,6 +58,9 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
     double largest = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!box.isMember(p.species[i])) continue;
+        // The one-way pairs across the face and the copies are written for spheres.
+        require(!p.isShaped(i), "maser: superquadric particles in the maser box are not supported (particle id " +
+                                    std::to_string(p.id[i]) + "); its copies and one-way contacts are for spheres");
         largest = std::max(largest, 2 * p.radius[i]);
         mobile += !p.fixed[i];
     }
