@@ -41,6 +41,32 @@ Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, cons
     return r;
 }
 
+// The Newton step J step = -Phi with J = [[A, b], [c^T, 0]], A = scale (Hi + mu^2 Hj),
+// b = 2 scale mu grad Fj, c = grad Fi - grad Fj. By the Schur complement of A (positive
+// definite for two strictly convex bodies): dmu = (Phi_4 - c.A^-1 Phi_123) / (c.A^-1 b) and
+// dX = -A^-1 (Phi_123 + dmu b), with the closed-form 3 x 3 inverse. Where A is nearly singular
+// (the flat faces of blocky shapes) the 4 x 4 system is solved by LU instead.
+Vec4 newtonStep(const Residual& r, double mu, double scale) {
+    const Mat3 A = scale * (r.i.hessian + mu * mu * r.j.hessian);
+    const Vec3 b = scale * 2 * mu * r.j.gradient, c = r.i.gradient - r.j.gradient;
+    const double determinant = A.determinant();
+    if (std::abs(determinant) > 1e-12 * std::pow(A.norm(), 3)) {
+        const Mat3 inverse = A.inverse();
+        const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.head<3>();
+        const double dmu = (r.phi[3] - c.dot(inverseR)) / c.dot(inverseB);
+        Vec4 step;
+        step.head<3>() = -(inverseR + dmu * inverseB);
+        step[3] = dmu;
+        if (step.allFinite()) return step;
+    }
+    Mat4 jacobian;
+    jacobian.topLeftCorner<3, 3>() = A;
+    jacobian.topRightCorner<3, 1>() = b;
+    jacobian.bottomLeftCorner<1, 3>() = c.transpose();
+    jacobian(3, 3) = 0;
+    return Eigen::PartialPivLU<Mat4>(jacobian).solve(-r.phi);
+}
+
 // The damped Newton solve of SPEC.md 4 from `start`.
 NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
                    const SuperquadricContactSettings& settings, double scale) {
@@ -50,13 +76,7 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
     Residual r = residual(i, j, x, mu, scale);
     for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
         result.iterations = iteration;
-        Mat4 jacobian;
-        jacobian.topLeftCorner<3, 3>() = scale * (r.i.hessian + mu * mu * r.j.hessian);
-        jacobian.topRightCorner<3, 1>() = scale * 2 * mu * r.j.gradient;
-        jacobian.bottomLeftCorner<1, 3>() = (r.i.gradient - r.j.gradient).transpose();
-        jacobian(3, 3) = 0;
-        const Eigen::PartialPivLU<Mat4> lu(jacobian);
-        const Vec4 step = lu.solve(-r.phi);
+        const Vec4 step = newtonStep(r, mu, scale);
         if (!step.allFinite()) return result;
         // Halve the step while the residual does not decrease.
         double t = 1;
