@@ -12,7 +12,7 @@ namespace talus::cg {
 
 namespace {
 
-// Talus restart format 4 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
+// Talus restart formats 4 and 5 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
 // `name density law...`, `particles N nextId` + N lines of 23 fields with id first, the species
 // at field 20 and the fixed flag at field 21.
 RestartInfo readTalusRestart(TextFile& file) {
@@ -42,6 +42,15 @@ RestartInfo readTalusRestart(TextFile& file) {
                 info.speciesDensity.push_back(density);
             }
             sawSpecies = true;
+        } else if (fields[0] == "shapes") {
+            // Restart format 5: `shapes S Q`, S = 1 when the scene has superquadric particles. The
+            // fields here treat every particle as a sphere of its .data radius (mass, volume, the
+            // branch vectors of the contact stress), which for a superquadric is its bounding
+            // radius: refused rather than silently wrong.
+            if (fields.size() != 3) file.fail("expected 'shapes FLAG COUNT'");
+            if (parseInteger(fields[1], file, "the shapes flag") != 0)
+                file.fail("the run has superquadric particles (Documentation/Superquadrics/Superquadrics.md); "
+                          "talus-cg coarse-grains spheres only so far");
         } else if (fields[0] == "particles") {
             if (fields.size() != 3) file.fail("expected 'particles COUNT NEXTID'");
             const long count = parseInteger(fields[1], file, "the particle count");

@@ -173,6 +173,11 @@ TEST(BadFiles, ErrorsNameFileAndLine) {
               "truncated.fstat line 3: file ends inside the header of the frame at t = 0: truncated file?");
     write("bad.restart", "Talus restart 4\nname x\ndomain 0 0 0 1 1 1 1 0\n");
     EXPECT_EQ(errorOf([] { readRestartFile("bad.restart"); }), "bad.restart line 3: expected 'domain' with 9 values, found 8");
+    // A run with superquadric particles (restart format 5, shapes flag 1) is refused, not
+    // coarse-grained as spheres of its bounding radii.
+    write("shapes.restart", "Talus restart 5\nname x\ndomain 0 0 0 1 1 1 1 0 0\nshapes 1 1\n   0.5 0.25 0.25 1 1\n");
+    EXPECT_NE(errorOf([] { readRestartFile("shapes.restart"); }).find("shapes.restart line 4: the run has superquadric particles"),
+              std::string::npos);
     // Species without a density.
     CoarseGrainingSetup setup;
     setup.speciesDensity = {1.0};
