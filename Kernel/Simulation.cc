@@ -214,32 +214,31 @@ std::size_t Simulation::addSuperquadric(const Vec3& position, std::size_t shape,
 }
 
 std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion) {
+    requireMotion(motion, "fixed particle");
+    return fixParticle(addParticle(position, radius, species), motion);
+}
+
+std::size_t Simulation::addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                             const Quat& orientation, int motion) {
+    requireMotion(motion, "fixed superquadric");
+    return fixParticle(addSuperquadric(position, shape, species, orientation), motion);
+}
+
+void Simulation::requireMotion(int motion, const std::string& what) const {
     require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
-            "fixed particle: motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
-    const std::size_t i = addParticle(position, radius, species);
+            what + ": motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
+}
+
+// Never integrated (inverse mass and inertia 0: an infinitely heavy partner in its contacts);
+// with a motion it moves and turns with it.
+std::size_t Simulation::fixParticle(std::size_t i, int motion) {
     ParticleStore& p = state_.particles;
     p.fixed[i] = 1;
     p.invMass[i] = 0;
     p.invInertia[i] = 0;
     p.motion[i] = motion;
     if (motion >= 0) {
-        p.velocity[i] = state_.motions[motion].pointVelocity(position);
-        p.angularVelocity[i] = state_.motions[motion].angularVelocity;
-    }
-    return i;
-}
-
-std::size_t Simulation::addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
-                                             const Quat& orientation, int motion) {
-    require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
-            "fixed superquadric: motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
-    const std::size_t i = addSuperquadric(position, shape, species, orientation);
-    ParticleStore& p = state_.particles;
-    p.fixed[i] = 1;
-    p.invMass[i] = 0;
-    p.motion[i] = motion;
-    if (motion >= 0) {
-        p.velocity[i] = state_.motions[motion].pointVelocity(position);
+        p.velocity[i] = state_.motions[motion].pointVelocity(p.position[i]);
         p.angularVelocity[i] = state_.motions[motion].angularVelocity;
     }
     return i;

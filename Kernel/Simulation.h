@@ -152,6 +152,8 @@ private:
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
     void turnShapedParticles(double kick, double drift);
+    void requireMotion(int motion, const std::string& what) const;
+    std::size_t fixParticle(std::size_t slot, int motion);
     void reorderParticles();
     std::uint64_t saveEvery() const;
 
