@@ -27,32 +27,7 @@ from matplotlib.collections import PatchCollection
 from matplotlib.patches import Circle
 import numpy as np
 
-
-def read_frame(path, wanted):
-    """The frame of a .data file closest to time `wanted` (None: the last): time, particle rows,
-    width along y (from the frame header)."""
-    best = None
-    with open(path) as f:
-        line_number = 0
-        while True:
-            header = f.readline()
-            line_number += 1
-            if not header:
-                break
-            fields = header.split()
-            if len(fields) != 8:
-                sys.exit(f"plotChuteFront: {path} line {line_number}: expected a frame header of 8 fields")
-            count, time = int(fields[0]), float(fields[1])
-            width = float(fields[6]) - float(fields[3])
-            lines = [f.readline() for _ in range(count)]
-            if count and not lines[-1]:
-                sys.exit(f"plotChuteFront: {path}: the frame at t = {time} is truncated")
-            line_number += count
-            if wanted is None or best is None or abs(time - wanted) <= abs(best[0] - wanted):
-                best = (time, lines, width)
-    if best is None:
-        sys.exit(f"plotChuteFront: {path} holds no frame")
-    return best[0], np.loadtxt(best[1], ndmin=2), best[2]
+from dataFrames import read_frame
 
 
 def main():
@@ -64,7 +39,8 @@ def main():
     parser.add_argument("--small", default="1,4")
     parser.add_argument("--box", type=float, default=20)
     args = parser.parse_args()
-    time, p, width = read_frame(args.data, args.time)
+    time, p, header = read_frame(args.data, args.time, "plotChuteFront")
+    width = header[6] - header[3]
     x, z, r, species = p[:, 0], p[:, 2], p[:, 6], p[:, 13].astype(int)
     large = np.isin(species, [int(s) for s in args.large.split(",")])
     small = np.isin(species, [int(s) for s in args.small.split(",")])

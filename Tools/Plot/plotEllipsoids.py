@@ -21,34 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Ellipse  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_frame(path, wanted):
-    """(time, rows) of the frame closest to `wanted` (None: the last)."""
-    best = None
-    with open(path) as f:
-        line_number = 0
-        while True:
-            header = f.readline()
-            line_number += 1
-            if not header:
-                break
-            fields = header.split()
-            if len(fields) < 8:
-                sys.exit(f"{path} line {line_number}: expected a frame header 'N t xmin ymin zmin xmax ymax zmax'")
-            n, t = int(fields[0]), float(fields[1])
-            rows = []
-            for _ in range(n):
-                line = f.readline()
-                line_number += 1
-                values = line.split()
-                if len(values) < 14:
-                    sys.exit(f"{path} line {line_number}: expected 14 columns, found {len(values)} (truncated file?)")
-                rows.append([float(v) for v in values[:14]])
-            if best is None or wanted is None or abs(t - wanted) < abs(best[0] - wanted):
-                best = (t, np.array(rows))
-    if best is None:
-        sys.exit(f"{path}: no frame")
-    return best
+from dataFrames import read_frame  # noqa: E402
 
 
 def rotation(roll, pitch, yaw):
@@ -72,7 +45,7 @@ def main():
         assert len(axes) == 3 and np.all(axes > 0)
     except (ValueError, AssertionError):
         sys.exit(f"--semi-axes: expected three positive numbers a,b,c, got '{args.semi_axes}'")
-    t, rows = read_frame(args.data, args.time)
+    t, rows, _ = read_frame(args.data, args.time, "plotEllipsoids")
     order = np.argsort(-rows[:, 1])  # back (large y) first, front last
     y = rows[:, 1]
     span = max(y.max() - y.min(), 1e-12)
