@@ -333,7 +333,7 @@ private:
                 return;
             }
         }
-        const ShapedContactGeometry g = shapedPairGeometry(p_, *shapes_, i, j, xj, history);
+        const ShapedContactGeometry g = shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius);
         if (!g.converged) detectionFailed(i, j);
         history.warmPoint = g.solution.point;
         history.warmMultiplier = g.solution.multiplier;
@@ -350,7 +350,7 @@ private:
     [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,
                                       const std::vector<PrescribedMotion>& motions) {
         ContactHistory history = list.wallHistory.get(k);
-        const ShapedContactGeometry g = shapedWallGeometry(p_, *shapes_, i, wall);
+        const ShapedContactGeometry g = shapedWallGeometry(p_, list.shapedFrameScratch, i, wall, Law::usesEffectiveRadius);
         const Vec3 wallVelocity = wall.motion >= 0 ? motions[wall.motion].pointVelocity(g.contactPoint) : Vec3::Zero();
         const Vec3 wallSpin = wall.motion >= 0 ? motions[wall.motion].angularVelocity : Vec3::Zero();
         // A wall as a partner of infinite mass whose "centre" is the contact point itself.
@@ -530,6 +530,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>&
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
                       std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr) {
+    if (shapes && p.hasShapes()) placeShapedParticles(p, *shapes, list.shapedFrameScratch);
     ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes);
     loop.particlePairs(list, domain);
     loop.oneWayPairs(list, domain);

@@ -15,6 +15,7 @@
 #include "Boundaries/Domain.h"
 #include "Contacts/ContactHistory.h"
 #include "Contacts/HGrid.h"
+#include "Contacts/SuperquadricContact.h"
 #include "Particles/ParticleStore.h"
 #include "Walls/Wall.h"
 
@@ -44,6 +45,7 @@ public:
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
     std::uint64_t builds = 0;
     std::vector<std::uint32_t> activeScratch;  // the force loop's list of pairs that need work
+    std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
 
     // True when some particle will have moved more than skin/2 since the last build by the end of
     // the next step (nearest-image displacement, so wrapping through a periodic face is not a

@@ -19,7 +19,7 @@ struct ShapedContactGeometry {
     Vec3 normal = Vec3::Zero();        // from j (or the wall) to i
     double overlap = 0;
     Vec3 contactPoint = Vec3::Zero();  // middle of the overlap
-    double effectiveRadius = 0;        // from the mean curvatures (Hertzian laws)
+    double effectiveRadius = 0;        // from the mean curvatures, for laws that use it (Hertzian)
     SuperquadricContactPoint solution; // the next step's warm start (pairs)
     double gapBound = 0;               // pairs apart: the gap is at least this
 };
@@ -36,21 +36,37 @@ inline double curvatureRadius(const PlacedSuperquadric& body, const Vec3& x) {
 
 inline double seriesRadius(double a, double b) { return a * b / (a + b); }
 
-// A particle as a placed superquadric; a sphere partner becomes a sphere-shaped superquadric
-// (kept in `sphere`, which must outlive the result).
-inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<Superquadric>& shapes, std::size_t i,
+// The lab frames of the shaped particles (frames[i] for particle i), placed once per force
+// evaluation so that all the contacts of a particle share its rotation and quadric.
+inline void placeShapedParticles(const ParticleStore& p, const std::vector<Superquadric>& shapes,
+                                 std::vector<PlacedSuperquadric>& frames) {
+    frames.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.isShaped(i))
+            frames[i] = {&shapes[static_cast<std::size_t>(p.shape[i])], p.position[i], p.orientation[i].toRotationMatrix()};
+}
+
+// A particle as a placed superquadric at `centre` (its own position or a periodic image); a
+// sphere partner becomes a sphere-shaped superquadric (kept in `sphere`, which must outlive the
+// result).
+inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames, std::size_t i,
                                  const Vec3& centre, Superquadric& sphere) {
-    if (p.shape[i] >= 0) return {&shapes[static_cast<std::size_t>(p.shape[i])], centre, p.orientation[i].toRotationMatrix()};
+    if (p.shape[i] >= 0) {
+        PlacedSuperquadric body = frames[i];
+        body.centre = centre;
+        return body;
+    }
     sphere = Superquadric::sphere(p.radius[i]);
     return {&sphere, centre, Mat3::Identity()};
 }
 
 // Particles i and j, j at xj (its periodic image next to i); `history` holds the warm start.
-inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const std::vector<Superquadric>& shapes,
+// The curvatures are evaluated only if the law needs the effective radius (`withRadius`).
+inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
                                                 std::size_t i, std::size_t j, const Vec3& xj,
-                                                const ContactHistory& history) {
+                                                const ContactHistory& history, bool withRadius) {
     Superquadric sphereI = Superquadric::sphere(1), sphereJ = sphereI;
-    const PlacedSuperquadric a = placed(p, shapes, i, p.position[i], sphereI), b = placed(p, shapes, j, xj, sphereJ);
+    const PlacedSuperquadric a = placed(p, frames, i, p.position[i], sphereI), b = placed(p, frames, j, xj, sphereJ);
     SuperquadricContactPoint start{p.position[i] + history.warmPoint, history.warmMultiplier};
     const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr);
     ShapedContactGeometry g;
@@ -61,7 +77,7 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
     g.contactPoint = c.contactPoint;
     g.solution = {c.solution.point - p.position[i], c.solution.multiplier};
     g.gapBound = c.gapBound;
-    if (c.touching) {
+    if (c.touching && withRadius) {
         // Each body's curvature on its own surface, at the ends of the overlap along the normal.
         const Vec3 halfOverlap = 0.5 * c.overlap * c.normal;
         g.effectiveRadius = seriesRadius(curvatureRadius(a, c.contactPoint - halfOverlap),
@@ -72,20 +88,20 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
 
 // Particle i against a wall: its point deepest into the wall (or the drum's tangent plane) is the one furthest along the
 // wall's outward direction -N (Superquadric::furthestPointAlong, in the body frame).
-inline ShapedContactGeometry shapedWallGeometry(const ParticleStore& p, const std::vector<Superquadric>& shapes,
-                                                std::size_t i, const Wall& wall) {
-    const Superquadric& shape = shapes[static_cast<std::size_t>(p.shape[i])];
-    const Mat3 R = p.orientation[i].toRotationMatrix();
+inline ShapedContactGeometry shapedWallGeometry(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
+                                                std::size_t i, const Wall& wall, bool withRadius) {
+    const PlacedSuperquadric& body = frames[i];
+    const Mat3& R = body.rotation;
     // (A drum wall: its tangent plane nearest to the particle's centre, Walls/Wall.h.)
     const Vec3 normal = wall.normalAt(p.position[i]);
-    const Vec3 deepest = p.position[i] + R * shape.furthestPointAlong(R.transpose() * -normal);
+    const Vec3 deepest = p.position[i] + R * body.shape->furthestPointAlong(R.transpose() * -normal);
     ShapedContactGeometry g;
     g.converged = true;
     g.overlap = -wall.tangentPlaneDistance(deepest, p.position[i]);
     g.touching = g.overlap > 0;
     g.normal = normal;
     g.contactPoint = deepest + 0.5 * g.overlap * normal;
-    if (g.touching) g.effectiveRadius = curvatureRadius({&shape, p.position[i], R}, deepest);
+    if (g.touching && withRadius) g.effectiveRadius = curvatureRadius(body, deepest);
     return g;
 }
 

@@ -49,8 +49,8 @@ Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, cons
 Vec4 newtonStep(const Residual& r, double mu, double scale) {
     const Mat3 A = scale * (r.i.hessian + mu * mu * r.j.hessian);
     const Vec3 b = scale * 2 * mu * r.j.gradient, c = r.i.gradient - r.j.gradient;
-    const double determinant = A.determinant();
-    if (std::abs(determinant) > 1e-12 * std::pow(A.norm(), 3)) {
+    const double determinant = A.determinant(), size = A.norm();
+    if (std::abs(determinant) > 1e-12 * size * size * size) {
         const Mat3 inverse = A.inverse();
         const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.head<3>();
         const double dmu = (r.phi[3] - c.dot(inverseR)) / c.dot(inverseB);
@@ -118,9 +118,7 @@ double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Ve
         // F(x + d u) = |s + d v|^2 - 1 with s, v the body-frame point and direction scaled by
         // the semi-axes: the positive root of a quadratic (s.s < 1 inside), in the form that
         // does not cancel.
-        const Vec3 inverseAxes = body.shape->semiAxes().cwiseInverse();
-        const Vec3 s = (body.rotation.transpose() * (x - body.centre)).cwiseProduct(inverseAxes);
-        const Vec3 v = (body.rotation.transpose() * u).cwiseProduct(inverseAxes);
+        const Vec3 s = body.toUnitSphere * (x - body.centre), v = body.toUnitSphere * u;
         const double a = v.squaredNorm(), b = s.dot(v), c = s.squaredNorm() - 1;
         const double root = std::sqrt(b * b - a * c);
         return b > 0 ? -c / (b + root) : (root - b) / a;

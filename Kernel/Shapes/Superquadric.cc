@@ -113,6 +113,10 @@ Vec3 Superquadric::principalInertia(double density) const {
 // for beta > 1 the same equation is solved for Z first, so that nothing overflows when n is
 // nearly along z.
 Vec3 Superquadric::furthestPointAlong(const Vec3& n) const {
+    if (isEllipsoid()) {  // x^T D^-2 x = 1 with D = diag(a, b, c): x = D^2 n / |D n|, no powers
+        const Vec3 scaledNormal = axes_.cwiseProduct(n);
+        return axes_.cwiseProduct(scaledNormal) / scaledNormal.norm();
+    }
     const Vec3 N = axes_.cwiseProduct(n.cwiseAbs());
     const int reference = N.x() >= N.y() ? 0 : 1, other = 1 - reference;
     Vec3 scaled;
