@@ -167,6 +167,37 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.mixingSpecies = static_cast<int>(species);
         } else if (option == "--mixing-output") {
             o.mixingPath = args.text(given);
+        } else if (option == "--output-format") {
+            o.outputFormat = args.text(given);
+            if (o.outputFormat != "csv" && o.outputFormat != "hdf5" && o.outputFormat != "h5" && o.outputFormat != "stat") {
+                throw InputError(given + ": unknown format '" + o.outputFormat + "' (csv, hdf5 or stat)");
+            }
+        } else if (option == "--width-scan") {
+            o.widthScan = true;
+        } else if (option == "--scan-x" || option == "--scan-y" || option == "--scan-z") {
+            WidthScanRange range;
+            range.min = args.real(given);
+            range.max = args.real(given);
+            range.count = args.integer(given);
+            if (!(range.min > 0)) throw InputError(given + ": widths must be positive, found MIN " + str(range.min));
+            if (!(range.max > range.min)) {
+                throw InputError(given + ": empty range: MAX " + str(range.max) + " must be above MIN " + str(range.min));
+            }
+            if (range.count < 2) throw InputError(given + ": COUNT must be at least 2, found " + std::to_string(range.count));
+            o.scanRange[option.back() - 'x'] = range;
+        } else if (option == "--scan-point") {
+            o.scanPoints.push_back(Vec3{args.real(given), args.real(given), args.real(given)});
+        } else if (option == "--scan-field") {
+            o.scanField = args.text(given);
+        } else if (option == "--scan-tolerance") {
+            o.scanTolerance = args.real(given);
+            if (!(o.scanTolerance > 0)) throw InputError(given + ": the tolerance must be positive, found " + str(o.scanTolerance));
+        } else if (option == "--scan-min-width") {
+            o.scanMinWidth = args.real(given);
+            if (!(*o.scanMinWidth >= 0)) throw InputError(given + ": must be 0 or more, found " + str(*o.scanMinWidth));
+        } else if (option == "--scan-min-particles") {
+            o.scanMinParticles = args.integer(given);
+            if (o.scanMinParticles < 1) throw InputError(given + ": must be at least 1, found " + std::to_string(o.scanMinParticles));
         } else if (!given.empty() && given[0] == '-') {
             throw InputError("unknown option '" + given + "' (see --help)");
         } else if (o.name.empty()) {
@@ -181,13 +212,38 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
     if (int(o.width.has_value()) + int(o.widths.has_value()) + int(o.widthMatrix.has_value()) > 1) {
         throw InputError("--width, --widths and --width-matrix exclude each other: give one");
     }
-    if (!o.pointsPath.empty() && !o.counts.empty()) throw InputError("-n and --points exclude each other: give one");
+    if (!o.pointsPath.empty() && !o.counts.empty() && !o.widthScan) throw InputError("-n and --points exclude each other: give one");
     if ((o.depthAverage || o.mixingSpecies) && !o.pointsPath.empty()) {
         throw InputError(std::string(o.depthAverage ? "--depth-average" : "--mixing") +
                          " integrates over a regular grid: it cannot be used with --points");
     }
     if (o.bulkDensity && !o.depthAverage) throw InputError("--bulk-density: only used with --depth-average");
     if (!o.mixingPath.empty() && !o.mixingSpecies) throw InputError("--mixing-output: needs --mixing K");
+    if (o.outputFormat != "csv" && (o.depthAverage || o.mixingSpecies)) {
+        throw InputError("--output-format " + o.outputFormat + ": depth averages and mixing indices are written as csv only");
+    }
+    const bool scanOption = o.scanRange[0] || o.scanRange[1] || o.scanRange[2] || !o.scanPoints.empty() ||
+                            !o.scanField.empty();
+    if (scanOption && !o.widthScan) throw InputError("--scan-x/y/z, --scan-point, --scan-field: only used with --width-scan");
+    if (o.widthScan) {
+        const int ranges = int(o.scanRange[0].has_value()) + int(o.scanRange[1].has_value()) + int(o.scanRange[2].has_value());
+        if (ranges == 0) {
+            // The thesis's scan of a chute (seed:6820-6823): wx 0.1..1000, wz 0.1..10; fewer steps.
+            o.scanRange[0] = WidthScanRange{0.1, 1000, 41};
+            o.scanRange[2] = WidthScanRange{0.1, 10, 21};
+        } else if (ranges != 2) {
+            throw InputError("--width-scan: give the ranges of exactly two directions (two of --scan-x, --scan-y, --scan-z), found " +
+                             std::to_string(ranges));
+        }
+        if (o.scanPoints.empty() == o.pointsPath.empty()) {
+            throw InputError("--width-scan: give the points either by --scan-point X Y Z (repeatable) or by --points FILE");
+        }
+        if (o.widthMatrix) throw InputError("--width-scan: scans diagonal widths; --width-matrix cannot be used");
+        if (o.depthAverage || o.mixingSpecies || !o.counts.empty()) {
+            throw InputError("--width-scan: evaluates at the scan points only; -n, --depth-average and --mixing cannot be used");
+        }
+        if (o.outputFormat != "csv") throw InputError("--width-scan: writes csv only, found --output-format " + o.outputFormat);
+    }
     if (o.timeMax < o.timeMin) throw InputError("--time-max " + str(o.timeMax) + " is below --time-min " + str(o.timeMin));
     return o;
 }
@@ -236,8 +292,28 @@ derived (Documentation/CoarseGraining.md "Depth averages", "Mixing and segregati
                           spheres, for every frame written (or the time average)
   --mixing-output FILE    where M and S go (default: the output file with .mixing.csv for .csv)
 
+width scan (Documentation/CoarseGraining.md "Choosing the widths"; SPEC.md 6):
+  --width-scan            scan diagonal widths of two directions on a log grid at the scan points, write
+                          the field and its sensitivity per width pair, and choose the widths at the
+                          centre of the largest plateau of insensitivity common to all points
+  --scan-x MIN MAX COUNT, --scan-y .., --scan-z ..
+                          COUNT log-spaced widths from MIN to MAX for the two scanned directions
+                          (default --scan-x 0.1 1000 41 --scan-z 0.1 10 21); the third width comes
+                          from --widths or --width (default 1)
+  --scan-point X Y Z      a point of the scan (repeatable), or --points FILE
+  --scan-field NAME       the field, a column name of the csv output (default Concentration_s1, or
+                          Density for one species)
+  --scan-tolerance T      insensitive: the field changes by at most T per decade of width towards
+                          every neighbour of the scan grid (relative to the largest |field| of the
+                          point unless the field is a concentration or volume fraction; default 0.05)
+  --scan-min-particles N  widths whose kernel holds fewer particle centres are not trusted (default 10)
+  --scan-min-width W      scanned widths below W are not trusted (default: the mean particle diameter;
+                          narrower kernels resolve single particles or layers)
+
 output:
-  -o, --output FILE       CSV file (default NAME.cg.csv)
+  -o, --output FILE       output file (default NAME.cg.csv, NAME.cg.h5, NAME.stat, NAME.widthscan.csv)
+  --output-format F       csv (default), hdf5 (HDF5 and an XDMF .xmf file for ParaView) or stat
+                          (MercuryDPM's .stat layout, Documentation/FileFormats/stat.md)
   --progress-interval S   wall seconds between progress lines on stderr (default 5)
   --help                  this text
 )";

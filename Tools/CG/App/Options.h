@@ -12,6 +12,12 @@
 
 namespace talus::cg {
 
+// A log-spaced range of widths for --width-scan: `count` widths from `min` to `max`.
+struct WidthScanRange {
+    double min = 0, max = 0;
+    long count = 0;
+};
+
 struct ProgramOptions {
     bool help = false;
     std::string name;          // NAME: NAME.data, NAME.fstat, NAME.restart
@@ -19,7 +25,8 @@ struct ProgramOptions {
     std::string fstatPath;     // --fstat (default NAME.fstat when it exists)
     std::string restartPath;   // --restart (default NAME.restart when it exists; "none": no)
     std::optional<bool> stress;          // --stress on|off (default: on when a .fstat is found)
-    std::string outputPath;    // -o (default NAME.cg.csv)
+    std::string outputPath;    // -o (default NAME.cg.csv, NAME.cg.h5, NAME.stat; NAME.widthscan.csv for --width-scan)
+    std::string outputFormat = "csv";  // --output-format csv|hdf5|stat (App/FieldWriter.h)
 
     KernelShape shape = KernelShape::Lucy;  // --function
     std::optional<double> width;            // -w / --width
@@ -43,6 +50,16 @@ struct ProgramOptions {
     std::optional<double> bulkDensity;            // --bulk-density (default: mass-weighted mean density)
     std::optional<int> mixingSpecies;             // --mixing K (Fields/MixingIndex.h)
     std::string mixingPath;                       // --mixing-output (default: -o with .mixing.csv for .csv)
+
+    // --width-scan (App/WidthScanRun.h, Fields/WidthScan.h; SPEC.md 6): the two scanned
+    // directions are those given a range (default x 0.1..1000 and z 0.1..10).
+    bool widthScan = false;
+    std::array<std::optional<WidthScanRange>, 3> scanRange;  // --scan-x, --scan-y, --scan-z MIN MAX COUNT
+    std::vector<Vec3> scanPoints;                 // --scan-point X Y Z (repeatable), or --points FILE
+    std::string scanField;                        // --scan-field (default Concentration_s1, Density for one species)
+    double scanTolerance = 0.05;                  // --scan-tolerance (field change per decade of width)
+    long scanMinParticles = 10;                   // --scan-min-particles
+    std::optional<double> scanMinWidth;           // --scan-min-width (default: the mean particle diameter)
 };
 
 ProgramOptions parseOptions(int argc, const char* const* argv);

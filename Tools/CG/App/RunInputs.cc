@@ -1,0 +1,126 @@
+#include "App/RunInputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "IO/InputError.h"
+
+namespace talus::cg {
+
+namespace {
+
+bool exists(const std::string& path) {
+    std::error_code error;
+    return !path.empty() && std::filesystem::is_regular_file(path, error);
+}
+
+std::string list(const std::vector<double>& values) {
+    std::string text;
+    for (double v : values) {
+        if (!text.empty()) text += ',';
+        text += str(v);
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string periodicText(const std::array<bool, 3>& periodic) {
+    std::string text;
+    for (int k = 0; k < 3; ++k) {
+        if (!periodic[k]) continue;
+        if (!text.empty()) text += ',';
+        text += axisLetter(k);
+    }
+    return text.empty() ? "none" : text;
+}
+
+RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, bool wantStress) {
+    RunInputs in;
+    in.dataPath = options.dataPath.empty() ? options.name + ".data" : options.dataPath;
+    in.base = options.name.empty() ? in.dataPath.substr(0, in.dataPath.size() - (in.dataPath.ends_with(".data") ? 5 : 0))
+                                   : options.name;
+
+    // Restart file: densities, periodic directions, fixed particles.
+    in.restartPath = options.restartPath;
+    if (in.restartPath.empty() && exists(in.base + ".restart")) in.restartPath = in.base + ".restart";
+    if (in.restartPath == "none") in.restartPath.clear();
+    if (!in.restartPath.empty()) {
+        in.restart = readRestartFile(in.restartPath);
+        log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << list(in.restart->speciesDensity)
+            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles\n";
+    }
+
+    CoarseGrainingSetup& setup = in.setup;
+    setup.shape = options.shape;
+    setup.coordinates = Coordinates::fromName(options.coordinates);
+    if (options.widthMatrix) setup.width = WidthMatrix::full(*options.widthMatrix);
+    else if (options.widths) setup.width = WidthMatrix::diagonal((*options.widths)[0], (*options.widths)[1], (*options.widths)[2]);
+    else setup.width = WidthMatrix::isotropic(options.width.value_or(1.0));
+    setup.speciesDensity = options.densities ? *options.densities
+                           : in.restart      ? in.restart->speciesDensity
+                                             : std::vector<double>{6.0 / std::numbers::pi};
+    if (!options.densities && !in.restart) {
+        // The default 6/pi (SPEC.md 1: d = 1 has mass 1) for every species the data will show.
+        setup.speciesDensity.assign(16, 6.0 / std::numbers::pi);
+    }
+    setup.periodic = options.periodic ? *options.periodic : in.restart ? in.restart->periodic : std::array<bool, 3>{false, false, false};
+    if (options.excludeFixed) {
+        if (!in.restart) throw InputError("--fixed exclude: needs a restart file to know which particles are fixed (--restart FILE)");
+        setup.excluded = in.restart->fixed;
+    }
+
+    in.fstatPath = options.fstatPath;
+    if (in.fstatPath.empty() && exists(in.base + ".fstat")) in.fstatPath = in.base + ".fstat";
+    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty());
+    if (setup.contactStress && in.fstatPath.empty()) {
+        throw InputError("--stress on: no contact file (" + in.base + ".fstat not found; give --fstat FILE)");
+    }
+    return in;
+}
+
+void fitSpeciesToFrame(const ProgramOptions& options, RunInputs& inputs, const ParticleFrame& frame) {
+    if (options.densities || inputs.restart) return;
+    int species = 1;
+    for (int s : frame.species) species = std::max(species, s + 1);
+    if (species > 16) throw InputError(inputs.dataPath + ": species index " + std::to_string(species - 1) + " needs --density");
+    inputs.setup.speciesDensity.resize(species);
+}
+
+FrameStream::FrameStream(const RunInputs& inputs, const ProgramOptions& options)
+    : inputs_(inputs), timeMin_(options.timeMin), timeMax_(options.timeMax), data_(inputs.dataPath) {
+    if (inputs.setup.contactStress) fstat_.emplace(inputs.fstatPath);
+}
+
+bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
+    while (true) {
+        const long headerLine = data_.file().lineNumber() + 1;
+        if (!data_.readFrame(frame)) return false;
+        const double time = frame.time;
+        ++frameIndex_;
+        if (fstat_) {
+            if (!fstat_->readFrame(contacts)) {
+                throw InputError(inputs_.fstatPath + ": ends before the frame at t = " + str(time) + " of " + inputs_.dataPath +
+                                 " (line " + std::to_string(headerLine) + ")");
+            }
+            if (std::abs(contacts.time - time) > 1e-9 * std::max(1.0, std::abs(time))) {
+                throw InputError(inputs_.fstatPath + " line " + std::to_string(contacts.headerLine) + ": frame time " +
+                                 str(contacts.time) + " differs from the time " + str(time) + " of frame " +
+                                 std::to_string(frameIndex_) + " of " + inputs_.dataPath + " (line " +
+                                 std::to_string(frame.headerLine) + ")");
+            }
+        }
+        if (time < timeMin_) continue;
+        if (time > timeMax_) return false;
+        return true;
+    }
+}
+
+double FrameStream::fractionRead() {
+    TextFile& file = data_.file();
+    return double(file.bytesRead()) / double(std::max<std::uintmax_t>(file.size(), 1));
+}
+
+}  // namespace talus::cg
