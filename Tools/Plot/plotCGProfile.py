@@ -15,25 +15,18 @@ import matplotlib
 
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from cgFiles import read_cg_csv  # noqa: E402
 
 
 def read_profile(path):
-    with open(path) as f:
-        comments, lines = [], []
-        for line in f:
-            (comments if line.startswith('#') else lines).append(line)
-    if not lines:
-        sys.exit(f"{path}: no column names (not a talus-cg CSV file)")
-    names = lines[0].strip().split(',')
-    if 'z' not in names:
+    p, comments = read_cg_csv(path, 'plotCGProfile.py')
+    if 'z' not in p:
         sys.exit(f"{path}: no z column (make the profile with talus-cg --coordinates Z)")
-    data = np.loadtxt(lines[1:], delimiter=',', ndmin=2)
-    if 't' in names:
+    if 't' in p:
         # Frames not averaged: plot the last one.
-        t = data[:, names.index('t')]
-        data = data[t == t.max()]
-    return {name: data[:, k] for k, name in enumerate(names)}, comments
+        last = p['t'] == p['t'].max()
+        p = {name: values[last] for name, values in p.items()}
+    return p, comments
 
 
 def main():
