@@ -30,6 +30,14 @@ void writeStringAttribute(hid_t object, const char* name, const std::string& val
     H5Tclose(type);
 }
 
+void writeNumberAttribute(hid_t object, const char* name, double value) {
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute = H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value);
+    H5Aclose(attribute);
+    H5Sclose(space);
+}
+
 std::string frameGroup(std::size_t index) {
     char name[32];
     std::snprintf(name, sizeof name, "/frames/%06zu", index);
@@ -96,8 +104,8 @@ void Hdf5FieldWriter::writeFrame(double firstTime, double time, const std::vecto
     const std::string groupName = frameGroup(times_.size());
     const hid_t group = H5Gcreate2(file_, groupName.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     if (group < 0) throw InputError("-o: cannot write the group " + groupName + " to " + setup_.path);
-    writeStringAttribute(group, "time", str(time));
-    if (setup_.timeAverage) writeStringAttribute(group, "firstTime", str(firstTime));
+    writeNumberAttribute(group, "time", time);
+    if (setup_.timeAverage) writeNumberAttribute(group, "firstTime", firstTime);
 
     const std::size_t n = setup_.points.size();
     const std::size_t fields = columns_.size();

@@ -171,6 +171,14 @@ TEST(OutputFormats, Hdf5GridReadsBackBitwiseInXFastestOrder) {
             }
         }
     }
+    // The frame's time as a number attribute.
+    const hid_t group = H5Gopen2(file, "/frames/000001", H5P_DEFAULT);
+    const hid_t attribute = H5Aopen(group, "time", H5P_DEFAULT);
+    double time = 0;
+    H5Aread(attribute, H5T_NATIVE_DOUBLE, &time);
+    EXPECT_EQ(time, 0.75);
+    H5Aclose(attribute);
+    H5Gclose(group);
     H5Fclose(file);
     // The XDMF file points at the datasets with these dimensions.
     std::ifstream xmf(Hdf5FieldWriter::xdmfPath("sample.h5"));
