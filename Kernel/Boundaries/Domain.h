@@ -84,6 +84,8 @@ public:
         }
         return d;
     }
+    double length(int axis) const { return length_[axis]; }  // infinite along a closed axis
+    double halfLength(int axis) const { return half_[axis]; }
 
 private:
     double length_[3], half_[3];

@@ -12,6 +12,7 @@
 
 #include "Boundaries/Domain.h"
 #include "Contacts/PairList.h"
+#include "Contacts/PairSweep.h"
 #include "Contacts/ShapedContactGeometry.h"
 #include "Error.h"
 #include "Particles/ParticleStore.h"
@@ -153,19 +154,13 @@ public:
 
     void particlePairs(PairList& list, const Domain& domain) {
         const PeriodicImage image(domain);
-        // Two passes: a branch-free sweep over all listed pairs picks those that need work
-        // (touching, about to touch within the next step, or just separated), then the contacts
-        // are computed for those alone.
+        // Two passes: a branch-free sweep over all listed pairs (Contacts/PairSweep.h) picks those
+        // that need work (touching, about to touch within the next step, or just separated), then
+        // the contacts are computed for those alone.
         std::vector<std::uint32_t>& active = list.activeScratch;
         active.resize(list.pairs.size());
-        std::size_t activeCount = 0;
-        for (std::size_t k = 0; k < list.pairs.size(); ++k) {
-            const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
-            const Vec3 d = image.nearest(p_.position[i] - p_.position[j]);
-            const double limit = p_.radius[i] + p_.radius[j] + closing_;
-            active[activeCount] = static_cast<std::uint32_t>(k);
-            activeCount += (d.squaredNorm() < limit * limit) | (list.history.state(k) != ContactHistory::apart);
-        }
+        const std::size_t activeCount = sweepPairs(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(),
+                                                   p_.radius.data(), list.history.states(), image, closing_, active.data());
         for (std::size_t a = 0; a < activeCount; ++a) {
             const std::size_t k = active[a];
             const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;

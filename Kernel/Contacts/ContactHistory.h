@@ -42,6 +42,7 @@ class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }
     ContactHistory::State state(std::size_t k) const { return states_[k]; }
+    const ContactHistory::State* states() const { return states_.data(); }
     ContactHistory get(std::size_t k) const {
         ContactHistory h{springs_[k], lastNormalForces_[k], states_[k]};
         if (withWarmStarts_) [[unlikely]]
