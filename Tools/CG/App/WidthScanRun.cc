@@ -46,6 +46,10 @@ int runWidthScan(const ProgramOptions& options, std::ostream& log) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     RunInputs inputs = resolveRunInputs(options, log, needsContactStress(options.scanField));
+    if (needsContactStress(options.scanField) && !inputs.setup.contactStress) {
+        throw InputError("--scan-field " + options.scanField + ": needs the contact stress, but no contact file is read (" +
+                         inputs.base + ".fstat not found or --stress off; give --fstat FILE)");
+    }
     WidthScanRequest request;
     int scanned = 0;
     for (int k = 0; k < 3; ++k) {
