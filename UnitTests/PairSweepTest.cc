@@ -1,8 +1,10 @@
 // The force loop's first pass (Contacts/PairSweep.h): the pairs it picks are exactly those a
 // direct evaluation of the rule picks (nearest periodic image closer than ri + rj + closing, or
-// a pending contact), in order, whether the AVX-512 lanes or the scalar loop decide.
+// a pending contact), in order, with their separations to the bit, whether the AVX-512 lanes or
+// the scalar loop decide.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "Contacts/PairSweep.h"
@@ -12,11 +14,13 @@ using namespace talus;
 namespace {
 
 // The rule written out independently: the nearest image by rounding, distances by the norm.
-bool needsWorkDirectly(const Vec3& xi, const Vec3& xj, double ri, double rj, ContactHistory::State state,
-                       const Vec3& box, const bool periodic[3], double closing) {
+Vec3 separationDirectly(const Vec3& xi, const Vec3& xj, const Vec3& box, const bool periodic[3]) {
     Vec3 d = xi - xj;
     for (int a = 0; a < 3; ++a)
         if (periodic[a]) d[a] -= box[a] * std::round(d[a] / box[a]);
+    return d;
+}
+bool needsWorkDirectly(const Vec3& d, double ri, double rj, ContactHistory::State state, double closing) {
     return d.norm() < ri + rj + closing || state != ContactHistory::apart;
 }
 
@@ -32,7 +36,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
     domain.hi = box;
     domain.periodic = {true, true, false};
     const PeriodicImage image(domain);
-    for (std::size_t n : {1u, 7u, 8u, 9u, 500u}) {  // tails of the eight-lane loop included
+    for (std::size_t n : {1u, 7u, 8u, 9u, 500u}) {  // 4n + 3 pairs: tails of the eight lanes and of a chunk
         std::vector<Vec3> position(n);
         std::vector<double> radius(n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -56,16 +60,28 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             states.push_back(static_cast<ContactHistory::State>(random() % 7 == 0 ? 1 + random() % 2 : 0));
         }
         const double closing = 0.01;
-        std::vector<std::uint32_t> active(pairs.size());
-        const std::size_t picked = sweepPairs(pairs.data(), pairs.size(), position.data(), n, radius.data(),
-                                              states.data(), image, closing, active.data());
+        std::vector<std::uint32_t> picked;
+        std::vector<Vec3> separations;
+        SweptPairs swept;
+        for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
+            sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(), n,
+                       radius.data(), states.data(), image, closing, swept);
+            for (std::size_t a = 0; a < swept.count; ++a) {
+                picked.push_back(swept.pair[a]);
+                separations.push_back(swept.separation(a));
+            }
+        }
         std::vector<std::uint32_t> expected;
-        for (std::size_t k = 0; k < pairs.size(); ++k)
-            if (needsWorkDirectly(position[pairs[k].i], position[pairs[k].j], radius[pairs[k].i], radius[pairs[k].j],
-                                  states[k], box, periodic, closing))
+        std::vector<Vec3> expectedSeparations;
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+            const Vec3 d = separationDirectly(position[pairs[k].i], position[pairs[k].j], box, periodic);
+            if (needsWorkDirectly(d, radius[pairs[k].i], radius[pairs[k].j], states[k], closing)) {
                 expected.push_back(static_cast<std::uint32_t>(k));
-        active.resize(picked);
-        EXPECT_EQ(active, expected) << n << " particles";
+                expectedSeparations.push_back(d);
+            }
+        }
+        EXPECT_EQ(picked, expected) << n << " particles";
+        EXPECT_EQ(separations, expectedSeparations) << n << " particles";
         if (n < 100) continue;
         EXPECT_GT(expected.size(), pairs.size() / 10) << "the test must include pairs that need work";
         EXPECT_LT(expected.size(), pairs.size() / 2) << "and pairs that do not";

@@ -154,67 +154,69 @@ public:
 
     void particlePairs(PairList& list, const Domain& domain) {
         const PeriodicImage image(domain);
-        // Two passes: a branch-free sweep over all listed pairs (Contacts/PairSweep.h) picks those
-        // that need work (touching, about to touch within the next step, or just separated), then
-        // the contacts are computed for those alone.
-        std::vector<std::uint32_t>& active = list.activeScratch;
-        active.resize(list.pairs.size());
-        const std::size_t activeCount = sweepPairs(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(),
-                                                   p_.radius.data(), list.history.states(), image, closing_, active.data());
-        for (std::size_t a = 0; a < activeCount; ++a) {
-            const std::size_t k = active[a];
-            const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
-            const Vec3 d = image.nearest(p_.position[i] - p_.position[j]);
-            if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
-                shapedPair(list, k, i, j, d);
-                continue;
-            }
-            const double sumR = p_.radius[i] + p_.radius[j];
-            const double r2 = d.squaredNorm();
-            const bool touching = r2 < sumR * sumR;
-            if constexpr (Law::batched) {
-                // Inside a lasting contact: into the batch (see ContactBatch).
-                if (touching && list.history.state(k) == ContactHistory::touching) {
-                    const Law& law = laws_(p_.species[i], p_.species[j]);
-                    if (law.treatContactEnds) {
-                        batch_.add(k, i, j, d, p_, previousForce_, list.history, law);
-                        if (batch_.full()) flush(list);
-                        continue;
-                    }
-                }
-            }
-            const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
-            const Vec3 n = d * inverseDistance, relativeVelocity = p_.velocity[i] - p_.velocity[j];
-            // Apart with nothing pending, and not closing the gap within the next step at the
-            // present speed: no force (approachForce would push nothing), and no work beyond
-            // noting that the pair applied no force this step.
-            if (!touching && list.history.state(k) == ContactHistory::apart) {
-                const double u = relativeVelocity.dot(n);
-                if (!(u < 0 && distance - sumR < -u * dt_)) {
-                    list.history.clearLastNormalForce(k);
-                    continue;
-                }
-            }
-            ContactHistory history = list.history.get(k);
-            Arms arms;
-            ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j], relativeVelocity,
-                                                    p_.angularVelocity[i], p_.angularVelocity[j], arms);
-            c.inverseDistance = inverseDistance;
-            const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
-            c.inverseReducedMass = inverseMassSum;
-            // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
-            c.otherAcceleration = previousForce_[i].dot(c.normal) * p_.invMass[i] -
-                                  previousForce_[j].dot(c.normal) * p_.invMass[j] -
-                                  history.lastNormalForce * inverseMassSum;
-            if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
-            const Law& law = laws_(p_.species[i], p_.species[j]);
-            if (touching)
-                touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
-            else
-                history = apart(i, j, c, arms, history, law);
-            list.history.set(k, history);
+        // Two passes per chunk of the list: a branch-free sweep over the listed pairs
+        // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
+        // next step, or just separated), then the contacts are computed for those alone.
+        SweptPairs swept;
+        for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
+            sweepPairs(list.pairs.data(), begin, std::min(list.pairs.size(), begin + SweptPairs::capacity),
+                       p_.position.data(), p_.size(), p_.radius.data(), list.history.states(), image, closing_, swept);
+            for (std::size_t a = 0; a < swept.count; ++a) pairContact(list, swept.pair[a], swept.separation(a));
         }
         if constexpr (Law::batched) flush(list);
+    }
+
+    // Pair k of the list, whose separation xi - xj (nearest image) is d.
+    [[gnu::always_inline]] void pairContact(PairList& list, std::size_t k, const Vec3& d) {
+        const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
+        if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
+            shapedPair(list, k, i, j, d);
+            return;
+        }
+        const double sumR = p_.radius[i] + p_.radius[j];
+        const double r2 = d.squaredNorm();
+        const bool touching = r2 < sumR * sumR;
+        if constexpr (Law::batched) {
+            // Inside a lasting contact: into the batch (see ContactBatch).
+            if (touching && list.history.state(k) == ContactHistory::touching) {
+                const Law& law = laws_(p_.species[i], p_.species[j]);
+                if (law.treatContactEnds) {
+                    batch_.add(k, i, j, d, p_, previousForce_, list.history, law);
+                    if (batch_.full()) flush(list);
+                    return;
+                }
+            }
+        }
+        const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
+        const Vec3 n = d * inverseDistance, relativeVelocity = p_.velocity[i] - p_.velocity[j];
+        // Apart with nothing pending, and not closing the gap within the next step at the
+        // present speed: no force (approachForce would push nothing), and no work beyond
+        // noting that the pair applied no force this step.
+        if (!touching && list.history.state(k) == ContactHistory::apart) {
+            const double u = relativeVelocity.dot(n);
+            if (!(u < 0 && distance - sumR < -u * dt_)) {
+                list.history.clearLastNormalForce(k);
+                return;
+            }
+        }
+        ContactHistory history = list.history.get(k);
+        Arms arms;
+        ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j], relativeVelocity,
+                                                p_.angularVelocity[i], p_.angularVelocity[j], arms);
+        c.inverseDistance = inverseDistance;
+        const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
+        c.inverseReducedMass = inverseMassSum;
+        // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
+        c.otherAcceleration = previousForce_[i].dot(c.normal) * p_.invMass[i] -
+                              previousForce_[j].dot(c.normal) * p_.invMass[j] -
+                              history.lastNormalForce * inverseMassSum;
+        if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+        const Law& law = laws_(p_.species[i], p_.species[j]);
+        if (touching)
+            touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
+        else
+            history = apart(i, j, c, arms, history, law);
+        list.history.set(k, history);
     }
 
     // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, SPEC.md 3):

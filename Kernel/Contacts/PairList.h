@@ -44,7 +44,6 @@ public:
     double reach = 0;  // skin + 2 vmax dt at the last build
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
     std::uint64_t builds = 0;
-    std::vector<std::uint32_t> activeScratch;  // the force loop's list of pairs that need work
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
 
     // True when some particle will have moved more than skin/2 since the last build by the end of

@@ -1,13 +1,16 @@
-// The first pass of the force loop (Contacts/ContactForces.h): of all listed pairs, pick those
+// The first pass of the force loop (Contacts/ContactForces.h): of the listed pairs, pick those
 // that need work this step: touching, closer than the sum of their radii plus `closing` (they
-// may touch within the step), or with a contact still pending (state not apart). The indices of
-// the picked pairs are written to `active` in order; their number is returned.
+// may touch within the step), or with a contact still pending (state not apart). The picked
+// pairs go into a SweptPairs chunk in order, each with its separation: the second pass then
+// reads it in sequence instead of gathering the two positions and finding the periodic image
+// again.
 //
 // Every step visits every listed pair here (4-5 per particle against 0.5-3 contacts), so this
 // pass is a fifth of the step of a sphere flow (Documentation/Performance.md). With AVX-512 it
 // takes eight pairs at a time: gathers of the two positions and radii, the nearest periodic
-// image by the same compare-and-shift as PeriodicImage::nearest, and a compress-store of the
-// picked indices. Both versions make the same decisions (same operations in the same order).
+// image by the same compare-and-shift as PeriodicImage::nearest, and compress-stores of the
+// picked indices and separations. Both versions make the same decisions and give the same
+// separations, bit for bit (the same operations in the same order).
 #pragma once
 
 #include <cmath>
@@ -25,40 +28,42 @@
 
 namespace talus {
 
-inline bool pairNeedsWork(const ParticlePair& pair, const Vec3* position, const double* radius,
-                          ContactHistory::State state, const PeriodicImage& image, double closing) {
-    const Vec3 d = image.nearest(position[pair.i] - position[pair.j]);
-    const double limit = radius[pair.i] + radius[pair.j] + closing;
-#ifdef __FMA__
-    const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
-#else
-    const double r2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
-#endif
-    return (r2 < limit * limit) | (state != ContactHistory::apart);
-}
+// The picked pairs of one chunk of the list: small enough to stay in the first-level cache
+// between the two passes (and on the stack: no allocation).
+struct SweptPairs {
+    static constexpr std::size_t capacity = 512;
+    std::size_t count = 0;
+    std::uint32_t pair[capacity];
+    double dx[capacity], dy[capacity], dz[capacity];  // xi - xj, nearest image
 
-inline std::size_t sweepPairs(const ParticlePair* pairs, std::size_t count, const Vec3* position,
-                              [[maybe_unused]] std::size_t particleCount, const double* radius, const ContactHistory::State* states,
-                              const PeriodicImage& image, double closing, std::uint32_t* active) {
-    std::size_t picked = 0, k = 0;
+    Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
+};
+
+// Pairs [begin, end) of the list, at most SweptPairs::capacity of them.
+inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const Vec3* position,
+                       [[maybe_unused]] std::size_t particleCount, const double* radius,
+                       const ContactHistory::State* states, const PeriodicImage& image, double closing,
+                       SweptPairs& out) {
+    std::size_t picked = 0, k = begin;
 #ifdef TALUS_AVX512_SWEEP
     // (The gathers index the coordinates with 32-bit 3 i; GCC 12 warns about the intrinsics' own
     // undefined pass-through operands.)
-    const std::size_t vectorCount = particleCount < (std::size_t{1} << 31) / 3 ? count : 0;
+    const std::size_t vectorEnd = particleCount < (std::size_t{1} << 31) / 3 ? end : begin;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
     static_assert(sizeof(ParticlePair) == 8 && sizeof(Vec3) == 24 && sizeof(ContactHistory::State) == 1);
     const double* coordinates = position[0].data();
-    const __m512d length[3] = {_mm512_set1_pd(image.length(0)), _mm512_set1_pd(image.length(1)),
-                               _mm512_set1_pd(image.length(2))};
-    const __m512d half[3] = {_mm512_set1_pd(image.halfLength(0)), _mm512_set1_pd(image.halfLength(1)),
-                             _mm512_set1_pd(image.halfLength(2))};
-    const __m512d minusHalf[3] = {_mm512_set1_pd(-image.halfLength(0)), _mm512_set1_pd(-image.halfLength(1)),
-                                  _mm512_set1_pd(-image.halfLength(2))};
+    __m512d length[3], half[3], minusHalf[3];
+    for (int a = 0; a < 3; ++a) {
+        length[a] = _mm512_set1_pd(image.length(a));
+        half[a] = _mm512_set1_pd(image.halfLength(a));
+        minusHalf[a] = _mm512_set1_pd(-image.halfLength(a));
+    }
     const __m512d closingV = _mm512_set1_pd(closing);
     const __m512i evenLanes = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
     const __m256i three = _mm256_set1_epi32(3), laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    for (; k + 8 <= vectorCount; k += 8) {
+    double* separation[3] = {out.dx, out.dy, out.dz};
+    for (; k + 8 <= vectorEnd; k += 8) {
         // i in the low eight 32-bit lanes, j in the high eight.
         const __m512i ij = _mm512_permutexvar_epi32(evenLanes, _mm512_loadu_si512(pairs + k));
         const __m256i i = _mm512_castsi512_si256(ij), j = _mm512_extracti64x4_epi64(ij, 1);
@@ -74,18 +79,27 @@ inline std::size_t sweepPairs(const ParticlePair* pairs, std::size_t count, cons
             _mm512_add_pd(_mm512_i32gather_pd(i, radius, 8), _mm512_i32gather_pd(j, radius, 8)), closingV);
         const __mmask8 near = _mm512_cmp_pd_mask(r2, _mm512_mul_pd(limit, limit), _CMP_LT_OQ);
         const __m256i state = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(states + k)));
-        const __mmask8 pending = _mm256_test_epi32_mask(state, state);
-        const __mmask8 pick = near | pending;
-        _mm256_mask_compressstoreu_epi32(active + picked, pick, _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(k)), laneOffsets));
+        const __mmask8 pick = near | _mm256_test_epi32_mask(state, state);
+        _mm256_mask_compressstoreu_epi32(out.pair + picked, pick,
+                                         _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(k)), laneOffsets));
+        for (int a = 0; a < 3; ++a) _mm512_mask_compressstoreu_pd(separation[a] + picked, pick, d[a]);
         picked += static_cast<std::size_t>(__builtin_popcount(pick));
     }
 #pragma GCC diagnostic pop
 #endif
-    for (; k < count; ++k) {
-        active[picked] = static_cast<std::uint32_t>(k);
-        picked += pairNeedsWork(pairs[k], position, radius, states[k], image, closing);
+    for (; k < end; ++k) {
+        const Vec3 d = image.nearest(position[pairs[k].i] - position[pairs[k].j]);
+        const double limit = radius[pairs[k].i] + radius[pairs[k].j] + closing;
+#ifdef __FMA__
+        const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
+#else
+        const double r2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
+#endif
+        out.pair[picked] = static_cast<std::uint32_t>(k);
+        out.dx[picked] = d.x(), out.dy[picked] = d.y(), out.dz[picked] = d.z();
+        picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
     }
-    return picked;
+    out.count = picked;
 }
 
 }  // namespace talus
