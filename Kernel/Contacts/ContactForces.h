@@ -358,7 +358,7 @@ private:
     }
 
     void shapedContact(ContactHistory& history, const ShapedContactGeometry& g, std::uint32_t i, std::int64_t j,
-                       const Vec3& xj, const Vec3& vj, const Vec3& wj, double invMassJ, Law law, double size) {
+                       const Vec3& xj, const Vec3& vj, const Vec3& wj, double invMassJ, const Law& law, double size) {
         if (!g.touching) {
             history.spring.setZero();
             history.lastNormalForce = 0;
@@ -377,7 +377,6 @@ private:
         c.otherAcceleration = 0;  // (only the treatment of contact ends uses it)
         c.effectiveRadius = g.effectiveRadius;
         c.inverseDistance = 0;  // the spring is projected (below), not rotated as for spheres
-        if constexpr (requires { law.treatContactEnds; }) law.treatContactEnds = false;
         if (history.isTouching()) {
             const double length = history.spring.norm();
             history.spring -= history.spring.dot(n) * n;
@@ -386,7 +385,12 @@ private:
         } else {
             history.spring.setZero();
         }
-        const ContactForce f = law.force(c, history, dt_);
+        // The law's plain step: the ends of the contact are not treated (see above).
+        ContactForce f;
+        if constexpr (requires { law.plainForce(c, history, dt_); })
+            f = law.plainForce(c, history, dt_);
+        else
+            f = law.force(c, history, dt_);
         history.state = ContactHistory::touching;
         history.lastNormalForce = f.normalForce;
         const Vec3 force = f.normalForce * n + f.tangentialForce;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "Contacts/ContactHistory.h"
@@ -50,14 +51,14 @@ inline void placeShapedParticles(const ParticleStore& p, const std::vector<Super
 // sphere partner becomes a sphere-shaped superquadric (kept in `sphere`, which must outlive the
 // result).
 inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames, std::size_t i,
-                                 const Vec3& centre, Superquadric& sphere) {
+                                 const Vec3& centre, std::optional<Superquadric>& sphere) {
     if (p.shape[i] >= 0) {
         PlacedSuperquadric body = frames[i];
         body.centre = centre;
         return body;
     }
     sphere = Superquadric::sphere(p.radius[i]);
-    return {&sphere, centre, Mat3::Identity()};
+    return {&*sphere, centre, Mat3::Identity()};
 }
 
 // Particles i and j, j at xj (its periodic image next to i); `history` holds the warm start.
@@ -65,7 +66,7 @@ inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<Place
 inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
                                                 std::size_t i, std::size_t j, const Vec3& xj,
                                                 const ContactHistory& history, bool withRadius) {
-    Superquadric sphereI = Superquadric::sphere(1), sphereJ = sphereI;
+    std::optional<Superquadric> sphereI, sphereJ;
     const PlacedSuperquadric a = placed(p, frames, i, p.position[i], sphereI), b = placed(p, frames, j, xj, sphereJ);
     SuperquadricContactPoint start{p.position[i] + history.warmPoint, history.warmMultiplier};
     const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr);
