@@ -15,6 +15,7 @@
 #include "Fields/DerivedFields.h"
 #include "Fields/EvaluationPoints.h"
 #include "Fields/MixingIndex.h"
+#include "Fields/TimeSmoothing.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
@@ -70,6 +71,44 @@ Grid gridFromOptions(const ProgramOptions& options, const Coordinates& coordinat
     return grid;
 }
 
+// Cylindrical coordinates (Fields/CylindricalCoarseGrainer.h): r from -r, else from 0 to the drum
+// radius of the restart file, else to the farthest particle surface from the axis; the
+// coordinate along the axis from the range flag of the axis direction, else the box when
+// periodic along it, else the particles' centres widened by the kernel's reach R wa.
+void setCylindricalRange(const ProgramOptions& options, const RunInputs& inputs, const ParticleFrame& frame, Grid& grid) {
+    const Coordinates& c = inputs.setup.coordinates;
+    const int axis = c.axis();
+    const int across1 = (axis + 1) % 3, across2 = (axis + 2) % 3;
+    double farthest = 0, sMin = 1e300, sMax = -1e300;
+    for (std::size_t p = 0; p < frame.size(); ++p) {
+        const Vec3& x = frame.position[p];
+        farthest = std::max(farthest, std::hypot(x[across1] - c.axisPoint()[across1], x[across2] - c.axisPoint()[across2]) + frame.radius[p]);
+        sMin = std::min(sMin, x[axis]);
+        sMax = std::max(sMax, x[axis]);
+    }
+    grid.lo = {0, 0, 0};
+    grid.hi = {0, 0, 0};
+    if (options.radiusRange) {
+        grid.lo[0] = (*options.radiusRange)[0];
+        grid.hi[0] = (*options.radiusRange)[1];
+    } else {
+        grid.hi[0] = inputs.drumRadius ? *inputs.drumRadius : farthest;
+        if (!(grid.hi[0] > 0)) throw InputError("-r: every particle is on the axis; give the radius range -r MIN MAX");
+    }
+    if (!c.resolves(2)) return;
+    if (options.range[axis]) {
+        grid.lo[2] = (*options.range[axis])[0];
+        grid.hi[2] = (*options.range[axis])[1];
+    } else if (inputs.setup.periodic[axis] && frame.box.length(axis) > 0) {
+        grid.lo[2] = frame.box.lo[axis];
+        grid.hi[2] = frame.box.hi[axis];
+    } else {
+        const double reach = KernelProfile(inputs.setup.shape, 3).cutoff() * inputs.setup.width.widths()[4 * axis];
+        grid.lo[2] = sMin - reach;
+        grid.hi[2] = sMax + reach;
+    }
+}
+
 }  // namespace
 
 int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
@@ -91,6 +130,12 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     std::unique_ptr<CsvWriter> depthWriter;
     FieldSums layout = grainer.layout();
     int framesUsed = 0;
+    // --time-smoothing (Fields/TimeSmoothing.h): the smoothed fields of the output times that no
+    // later frame changes are written as each frame arrives.
+    std::optional<TimeSmoother> smoother;
+    if (options.timeSmoothing) smoother.emplace(options.timeShape, *options.timeSmoothing, options.outputTimes, options.outputStep);
+    std::vector<SmoothedFields> smoothed;
+    int outputTimes = 0;
     double firstTime = 0, lastTime = 0;
     auto lastProgress = start;
     const std::string outputPath = options.outputPath.empty() ? defaultOutputPath(format, inputs.base) : options.outputPath;
@@ -141,6 +186,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                 grid.hi = frame.box.hi;
             } else {
                 grid = gridFromOptions(options, setup.coordinates, frame.box);
+                if (setup.coordinates.isCylindrical()) setCylindricalRange(options, inputs, frame, grid);
                 points = gridPoints(setup.coordinates, grid.count, grid.lo, grid.hi);
                 if (options.depthAverage) {
                     if (!setup.coordinates.resolves(2)) {
@@ -165,20 +211,32 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                                (inputs.restartPath.empty() ? std::string() : ", " + inputs.restartPath));
             std::ostringstream kernel;
             const auto& b = setup.width.widths();
-            kernel << "function " << kernelShapeName(setup.shape) << " (" << setup.coordinates.dimension()
+            kernel << "function " << kernelShapeName(setup.shape) << " (" << setup.coordinates.kernelDimension()
                    << "-D), width matrix B = [" << str(b[0]) << " " << str(b[1]) << " " << str(b[2]) << "; " << str(b[3]) << " "
                    << str(b[4]) << " " << str(b[5]) << "; " << str(b[6]) << " " << str(b[7]) << " " << str(b[8]) << "]";
             comments.push_back(kernel.str());
             comments.push_back("coordinates " + setup.coordinates.name() +
-                               (setup.coordinates.dimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
+                               (setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
                                                                   : std::string()) +
                                ", periodic " + periodicText(setup.periodic) + ", densities " + list(setup.speciesDensity) +
                                (options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
+            if (setup.coordinates.isCylindrical()) {
+                const Coordinates& c = setup.coordinates;
+                comments.push_back("cylindrical coordinates: r = distance from the axis along " + c.coordinateName(2) + " through (" +
+                                   str(c.axisPoint()[0]) + ", " + str(c.axisPoint()[1]) + ", " + str(c.axisPoint()[2]) +
+                                   "); fields averaged over the angle" + (c.resolves(2) ? "" : " and along the axis") +
+                                   "; components R (radial), Theta (azimuthal, right-handed about +" + c.coordinateName(2) +
+                                   "), Axial (Fields/CylindricalCoarseGrainer.h)");
+            }
             comments.push_back(std::to_string(points.size()) + " points" +
                                (options.pointsPath.empty() ? " (grid, cell centres)" : " from " + options.pointsPath) +
                                (options.timeAverage ? "; time average over the frames with " + str(options.timeMin) +
                                                           " <= t <= " + str(options.timeMax)
-                                                    : "; one block of rows per frame"));
+                               : options.timeSmoothing
+                                   ? "; time smoothing over the frames with " + str(options.timeMin) + " <= t <= " + str(options.timeMax) +
+                                         " by " + kernelShapeName(options.timeShape) + " of width " + str(*options.timeSmoothing) +
+                                         ", weights normalised at each output time (Fields/TimeSmoothing.h); one block per output time"
+                                   : "; one block of rows per frame"));
             if (options.depthAverage) {
                 comments.push_back("depth averages over z (midpoint rule, dz = " + str(dz) + "): " +
                                    (options.bulkDensity ? "height = mass per area / bulk density " + str(*options.bulkDensity)
@@ -223,6 +281,11 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
         grainer.evaluate(points, sums);
         if (options.timeAverage) {
             for (std::size_t k = 0; k < sums.size(); ++k) average[k] += sums[k];
+        } else if (smoother) {
+            smoothed.clear();
+            smoother->addFrame(time, sums, smoothed);
+            for (const SmoothedFields& out : smoothed) writeAveragedOrFrame(out.sums, out.time, out.time);
+            outputTimes += static_cast<int>(smoothed.size());
         } else {
             writeAveragedOrFrame(sums, time, time);
         }
@@ -247,12 +310,19 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
         for (double& v : average) v /= framesUsed;
         writeAveragedOrFrame(average, firstTime, lastTime);
     }
+    if (smoother) {
+        smoothed.clear();
+        smoother->finish(smoothed);
+        for (const SmoothedFields& out : smoothed) writeAveragedOrFrame(out.sums, out.time, out.time);
+        outputTimes += static_cast<int>(smoothed.size());
+    }
     if (fieldWriter) fieldWriter->close();
     if (depthWriter) depthWriter->close();
     if (mixingWriter) mixingWriter->close();
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     log << "talus-cg: " << framesUsed << " frames (t = " << str(firstTime) << " to " << str(lastTime) << ")"
-        << (options.timeAverage ? " averaged" : "") << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "
+        << (options.timeAverage ? " averaged" : smoother ? " smoothed in time to " + std::to_string(outputTimes) + " output times" : "")
+        << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "
         << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "") << "\n";
     return framesUsed;
 }

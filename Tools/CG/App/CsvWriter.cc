@@ -6,10 +6,11 @@ namespace talus::cg {
 
 CsvWriter::CsvWriter(const std::string& path, const Coordinates& coordinates, bool withTime,
                      const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments)
-    : CsvWriter(path, coordinates.kernelAxes(), withTime, fields, comments) {}
+    : CsvWriter(path, coordinates.kernelAxes(), withTime, fields, comments, &coordinates) {}
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<int>& axes, bool withTime,
-                     const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments)
+                     const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments,
+                     const Coordinates* coordinates)
     : path_(path), file_(std::fopen(path.c_str(), "w")), axes_(axes), withTime_(withTime) {
     if (file_ == nullptr) throw InputError("-o: cannot write " + path);
     for (const std::string& line : comments) std::fprintf(file_, "# %s\n", line.c_str());
@@ -21,7 +22,7 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<int>& axes, bool
         names += name;
     };
     if (withTime) add("t", "T");
-    for (int k : axes_) add(std::string(1, axisLetter(k)), "L");
+    for (int k : axes_) add(coordinates ? coordinates->coordinateName(k) : std::string(1, axisLetter(k)), "L");
     for (const OutputColumn& c : fields) add(c.name, c.unit);
     std::fprintf(file_, "%s\n%s\n", units.c_str(), names.c_str());
 }

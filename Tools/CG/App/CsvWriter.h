@@ -18,10 +18,11 @@ public:
     // Opens `path` (throws InputError naming it when it cannot be written).
     CsvWriter(const std::string& path, const Coordinates& coordinates, bool withTime,
               const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments);
-    // The same with the coordinate columns named by axis (0 = x, 1 = y, 2 = z), e.g. only x for
-    // depth averages of an XZ grid.
+    // The same with the coordinate columns of the slots `axes` (0 = x, 1 = y, 2 = z), e.g. only x
+    // for depth averages of an XZ grid; named by `coordinates` when given (r for cylindrical ones).
     CsvWriter(const std::string& path, const std::vector<int>& axes, bool withTime,
-              const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments);
+              const std::vector<OutputColumn>& fields, const std::vector<std::string>& comments,
+              const Coordinates* coordinates = nullptr);
     ~CsvWriter();
     CsvWriter(const CsvWriter&) = delete;
     CsvWriter& operator=(const CsvWriter&) = delete;

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "Fields/Coordinates.h"
 #include "IO/InputError.h"
 #include "IO/TextFile.h"
 
@@ -109,6 +110,20 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.widthMatrix = std::array<double, 9>{b[0], b[1], b[2], b[1], b[3], b[4], b[2], b[4], b[5]};
         } else if (option == "--coordinates") {
             o.coordinates = args.text(given);
+        } else if (option == "--axis") {
+            const std::string letter = args.text(given);
+            if (letter != "x" && letter != "y" && letter != "z" && letter != "X" && letter != "Y" && letter != "Z") {
+                throw InputError(given + ": expected the drum axis direction x, y or z, found '" + letter + "'");
+            }
+            o.axis = std::tolower(static_cast<unsigned char>(letter[0])) - 'x';
+        } else if (option == "--axis-point") {
+            o.axisPoint = Vec3{args.real(given), args.real(given), args.real(given)};
+        } else if (option == "-r") {
+            const double lo = args.real(given), hi = args.real(given);
+            if (!(lo >= 0) || !(hi > lo)) {
+                throw InputError(given + ": the radius range must have 0 <= min < max, found " + str(lo) + " " + str(hi));
+            }
+            o.radiusRange = std::array<double, 2>{lo, hi};
         } else if (option == "-n") {
             o.counts.clear();
             o.counts.push_back(args.integer(given));
@@ -154,6 +169,26 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.timeMax = args.real(given);
         } else if (option == "--time-average") {
             o.timeAverage = true;
+        } else if (option == "--time-smoothing") {
+            o.timeSmoothing = args.real(given);
+            if (!(*o.timeSmoothing > 0)) throw InputError(given + ": the width must be positive, found " + str(*o.timeSmoothing));
+        } else if (option == "--time-function") {
+            const std::string name = args.text(given);
+            try {
+                o.timeShape = kernelShapeFromName(name);
+            } catch (const InputError&) {
+                throw InputError(given + ": unknown time-smoothing function '" + name + "' (Lucy, Gauss or Heaviside)");
+            }
+        } else if (option == "--output-times") {
+            o.outputTimes.clear();
+            for (const std::string& item : splitList(args.text(given))) {
+                double value = 0;
+                if (!toReal(item, value) || !std::isfinite(value)) throw InputError(given + ": '" + item + "' is not a time");
+                o.outputTimes.push_back(value);
+            }
+        } else if (option == "--output-step") {
+            o.outputStep = args.real(given);
+            if (!(*o.outputStep > 0)) throw InputError(given + ": the step must be positive, found " + str(*o.outputStep));
         } else if (option == "--progress-interval") {
             o.progressInterval = args.real(given);
         } else if (option == "--depth-average") {
@@ -217,6 +252,32 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         throw InputError(std::string(o.depthAverage ? "--depth-average" : "--mixing") +
                          " integrates over a regular grid: it cannot be used with --points");
     }
+    const bool cylindrical = Coordinates::fromName(o.coordinates).isCylindrical();
+    if (!cylindrical && (o.axis || o.axisPoint || o.radiusRange)) {
+        throw InputError(std::string(o.axis ? "--axis" : o.axisPoint ? "--axis-point" : "-r") +
+                         ": only used with cylindrical coordinates (--coordinates RZ or R)");
+    }
+    if (cylindrical) {
+        for (int k = 0; k < 3; ++k) {
+            if (o.range[k] && (!o.axis || *o.axis != k)) {
+                throw InputError(std::string("-") + axisLetter(k) + ": cylindrical coordinates resolve the distance from the axis (-r MIN MAX)" +
+                                 " and the coordinate along the axis (the range flag of --axis)");
+            }
+        }
+        if (o.depthAverage || o.mixingSpecies || o.widthScan) {
+            throw InputError(std::string(o.depthAverage ? "--depth-average" : o.mixingSpecies ? "--mixing" : "--width-scan") +
+                             ": not available in cylindrical coordinates (--coordinates " + o.coordinates + ")");
+        }
+        if (o.outputFormat != "csv") {
+            throw InputError("--output-format " + o.outputFormat + ": cylindrical coordinates are written as csv only");
+        }
+    }
+    if (o.timeSmoothing && o.timeAverage) throw InputError("--time-smoothing and --time-average exclude each other: give one");
+    if (!o.timeSmoothing && (!o.outputTimes.empty() || o.outputStep)) {
+        throw InputError(std::string(o.outputStep ? "--output-step" : "--output-times") + ": only used with --time-smoothing WT");
+    }
+    if (!o.outputTimes.empty() && o.outputStep) throw InputError("--output-times and --output-step exclude each other: give one");
+    if (o.timeSmoothing && o.widthScan) throw InputError("--time-smoothing: not used by --width-scan");
     if (o.bulkDensity && !o.depthAverage) throw InputError("--bulk-density: only used with --depth-average");
     if (!o.mixingPath.empty() && !o.mixingSpecies) throw InputError("--mixing-output: needs --mixing K");
     if (o.outputFormat != "csv" && (o.depthAverage || o.mixingSpecies)) {
@@ -271,16 +332,29 @@ coarse-graining function:
   --width-matrix BXX BXY BXZ BYY BYZ BZZ
                           a symmetric positive definite width matrix B = A^-1 (rotated anisotropic kernel)
   --coordinates C         XYZ (default), XY, XZ, YZ, X, Y or Z: the resolved directions; the others
-                          are averaged over the domain box of the .data header
+                          are averaged over the domain box of the .data header. RZ: cylindrical
+                          coordinates about a drum axis (distance r and the coordinate along the
+                          axis, averaged over the angle); R: also averaged along the axis
+  --axis x|y|z            drum axis direction for RZ and R (default: the restart file's cylinder wall)
+  --axis-point X Y Z      a point of the drum axis (default: the restart file's cylinder wall)
 
 where:
   -n N [N [N]]            grid points per resolved direction (default 100 in 1-D, 50 in 2-D, 20 in 3-D)
-  -x MIN MAX, -y .., -z ..  grid range (default the domain box); points at the cell centres
+  -x MIN MAX, -y .., -z ..  grid range (default the domain box); points at the cell centres; for RZ
+                          the flag of the axis direction gives the range along the axis (default:
+                          the box if periodic along it, else the particles' range plus the kernel)
+  -r MIN MAX              RZ and R: range of the distance from the axis (default 0 to the drum
+                          radius of the restart file, else to the farthest particle surface)
   --points FILE           evaluate at the points of FILE instead (x y z, or the resolved coordinates, per line)
 
 when:
   --time-min T, --time-max T   frames with T_min <= t <= T_max (default all)
   --time-average          average the fields over the selected frames (default: write every frame)
+  --time-smoothing WT     smooth in time with a kernel of width WT over the frames (weights
+                          normalised to sum 1 at each output time, renormalised near the ends)
+  --time-function NAME    the temporal kernel: Lucy (default), Gauss or Heaviside
+  --output-times T1,T2,.. output times of --time-smoothing (default: the frames' times)
+  --output-step DT        output times every DT from the first frame to the last
 
 derived (Documentation/CoarseGraining.md "Depth averages", "Mixing and segregation indices"):
   --depth-average         write, per column of the grid (per x for XZ, one row for Z), the mass per

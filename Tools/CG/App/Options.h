@@ -33,6 +33,10 @@ struct ProgramOptions {
     std::optional<Vec3> widths;             // --widths wx wy wz
     std::optional<std::array<double, 9>> widthMatrix;  // --width-matrix bxx bxy bxz byy byz bzz
     std::string coordinates = "XYZ";        // --coordinates
+    // Cylindrical coordinates (RZ, R; Fields/CylindricalCoarseGrainer.h): the drum axis.
+    std::optional<int> axis;                // --axis x|y|z (default: the restart file's cylinder wall)
+    std::optional<Vec3> axisPoint;          // --axis-point X Y Z (a point of the axis)
+    std::optional<std::array<double, 2>> radiusRange;  // -r MIN MAX
 
     std::vector<long> counts;               // -n
     std::array<std::optional<std::array<double, 2>>, 3> range;  // -x -y -z
@@ -44,6 +48,11 @@ struct ProgramOptions {
 
     double timeMin = -1e300, timeMax = 1e300;     // --time-min, --time-max
     bool timeAverage = false;                     // --time-average
+    // Time smoothing (Fields/TimeSmoothing.h): a temporal kernel of width WT over the frames.
+    std::optional<double> timeSmoothing;          // --time-smoothing WT
+    KernelShape timeShape = KernelShape::Lucy;    // --time-function
+    std::vector<double> outputTimes;              // --output-times T1,T2,... (default: the frames)
+    std::optional<double> outputStep;             // --output-step DT (times first frame + k DT)
     double progressInterval = 5;                  // --progress-interval (wall seconds)
 
     bool depthAverage = false;                    // --depth-average (Fields/DepthAverage.h)

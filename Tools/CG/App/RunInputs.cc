@@ -27,6 +27,45 @@ std::string list(const std::vector<double>& values) {
 
 }  // namespace
 
+void resolveDrumAxis(const ProgramOptions& options, RunInputs& in, std::ostream& log) {
+    Coordinates& coordinates = in.setup.coordinates;
+    const std::string flag = "--coordinates " + coordinates.name();
+    // A cylinder wall of the restart file along x, y or z (Talus drums, addCylinderWall).
+    const CylinderWall* wall = nullptr;
+    int wallAxis = -1;
+    if (in.restart) {
+        for (const CylinderWall& c : in.restart->cylinders) {
+            int along = -1;
+            for (int k = 0; k < 3; ++k) {
+                const bool unit = std::abs(std::abs(c.axisDirection[k]) - 1) < 1e-12;
+                const bool others = std::abs(c.axisDirection[(k + 1) % 3]) < 1e-12 && std::abs(c.axisDirection[(k + 2) % 3]) < 1e-12;
+                if (unit && others) along = k;
+            }
+            if (along >= 0 && (!options.axis || *options.axis == along)) {
+                wall = &c;
+                wallAxis = along;
+                break;
+            }
+        }
+    }
+    if (!options.axis && !wall) {
+        throw InputError(flag + ": no drum axis: give --axis x|y|z and --axis-point X Y Z (" +
+                         (in.restart ? in.restartPath + " has no cylinder wall along x, y or z" : std::string("no restart file")) + ")");
+    }
+    if (!options.axisPoint && !wall) {
+        throw InputError("--axis-point: give a point of the drum axis, X Y Z (" +
+                         (in.restart ? in.restartPath + " has no cylinder wall along " + std::string(1, axisLetter(*options.axis))
+                                     : std::string("no restart file")) + ")");
+    }
+    const int axis = options.axis ? *options.axis : wallAxis;
+    const Vec3 point = options.axisPoint ? *options.axisPoint : Vec3{wall->axisPoint[0], wall->axisPoint[1], wall->axisPoint[2]};
+    coordinates.setAxis(axis, point);
+    if (wall) in.drumRadius = wall->radius;
+    log << "talus-cg: drum axis along " << axisLetter(axis) << " through (" << str(point[0]) << ", " << str(point[1]) << ", "
+        << str(point[2]) << ")" << (options.axis && options.axisPoint ? "" : " (from " + in.restartPath + ")")
+        << (wall ? ", drum radius " + str(wall->radius) : std::string()) << "\n";
+}
+
 std::string periodicText(const std::array<bool, 3>& periodic) {
     std::string text;
     for (int k = 0; k < 3; ++k) {
@@ -56,6 +95,7 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
     CoarseGrainingSetup& setup = in.setup;
     setup.shape = options.shape;
     setup.coordinates = Coordinates::fromName(options.coordinates);
+    if (setup.coordinates.isCylindrical()) resolveDrumAxis(options, in, log);
     if (options.widthMatrix) setup.width = WidthMatrix::full(*options.widthMatrix);
     else if (options.widths) setup.width = WidthMatrix::diagonal((*options.widths)[0], (*options.widths)[1], (*options.widths)[2]);
     else setup.width = WidthMatrix::isotropic(options.width.value_or(1.0));
@@ -74,7 +114,8 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
 
     in.fstatPath = options.fstatPath;
     if (in.fstatPath.empty() && exists(in.base + ".fstat")) in.fstatPath = in.base + ".fstat";
-    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty());
+    // The contact stress is not available in cylindrical coordinates (CylindricalCoarseGrainer.h).
+    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty() && !setup.coordinates.isCylindrical());
     if (setup.contactStress && in.fstatPath.empty()) {
         throw InputError("--stress on: no contact file (" + in.base + ".fstat not found; give --fstat FILE)");
     }

@@ -24,7 +24,12 @@ struct RunInputs {
     std::string fstatPath;     // empty: none found
     std::optional<RestartInfo> restart;
     CoarseGrainingSetup setup;  // shape, width, coordinates, densities, periodic, excluded, contact stress
+    std::optional<double> drumRadius;  // cylindrical coordinates: the radius of the restart's cylinder wall
 };
+
+// Cylindrical coordinates: the drum axis from --axis/--axis-point, else from a cylinder wall of
+// the restart file along x, y or z; throws InputError naming the missing flag.
+void resolveDrumAxis(const ProgramOptions& options, RunInputs& inputs, std::ostream& log);
 
 // "x,y" or "none".
 std::string periodicText(const std::array<bool, 3>& periodic);

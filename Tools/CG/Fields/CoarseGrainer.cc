@@ -35,7 +35,12 @@ std::string lineOf(const std::string& path, long line) { return path + " line " 
 }  // namespace
 
 CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
-    : setup_(std::move(setup)), profile_(setup_.shape, setup_.coordinates.dimension()) {
+    : setup_(std::move(setup)), profile_(setup_.shape, setup_.coordinates.kernelDimension()) {
+    if (setup_.coordinates.isCylindrical()) {
+        cylindrical_ = std::make_unique<CylindricalCoarseGrainer>(setup_);
+        layout_ = cylindrical_->layout();
+        return;
+    }
     setup_.width.restrictTo(setup_.coordinates);
     if (setup_.speciesDensity.empty()) throw InputError("--density: at least one species density is needed");
     for (double rho : setup_.speciesDensity) {
@@ -74,6 +79,10 @@ void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox&
 
 void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
                              const std::string& dataPath, const std::string& fstatPath) {
+    if (cylindrical_) {
+        cylindrical_->setFrame(frame, dataPath);
+        return;
+    }
     const std::size_t n = frame.size();
     scale_ = setup_.width.determinant() / setup_.coordinates.averagedLength(frame.box);
     if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
@@ -286,6 +295,10 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
 }
 
 void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const {
+    if (cylindrical_) {
+        cylindrical_->evaluate(points, sums);
+        return;
+    }
     sums.assign(points.size() * layout_.count(), 0.0);
     const bool diagonal = setup_.width.isDiagonal();
     switch (setup_.shape) {

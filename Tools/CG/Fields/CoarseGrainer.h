@@ -4,13 +4,17 @@
 //
 // Set up once with the kernel (shape, width matrix, coordinates); then per frame setFrame()
 // builds the sources (particles with their periodic images, contact segments) and their cell
-// lists, and evaluate() fills one row of sums per point.
+// lists, and evaluate() fills one row of sums per point. Cylindrical coordinates (RZ, R) are
+// handed to CylindricalCoarseGrainer, which averages over the angle around the drum axis.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
+#include "Fields/CoarseGrainingSetup.h"
 #include "Fields/Coordinates.h"
+#include "Fields/CylindricalCoarseGrainer.h"
 #include "Fields/FieldSums.h"
 #include "Fields/SupportBins.h"
 #include "IO/FstatFileReader.h"
@@ -19,18 +23,6 @@
 #include "Kernels/WidthMatrix.h"
 
 namespace talus::cg {
-
-struct CoarseGrainingSetup {
-    KernelShape shape = KernelShape::Lucy;
-    WidthMatrix width = WidthMatrix::isotropic(1.0);
-    Coordinates coordinates = Coordinates::fromName("XYZ");
-    std::array<bool, 3> periodic{false, false, false};
-    std::vector<double> speciesDensity{6.0 / 3.141592653589793};  // by species index
-    bool contactStress = false;
-    // Per .data line: true for particles left out of the particle fields (fixed base particles
-    // with --fixed exclude); empty: none left out.
-    std::vector<bool> excluded;
-};
 
 class CoarseGrainer {
 public:
@@ -50,7 +42,7 @@ public:
     // sums[p * layout().count() + f]: field f at points[p] (overwritten).
     void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
 
-    std::size_t particleSourceCount() const { return mass_.size(); }
+    std::size_t particleSourceCount() const { return cylindrical_ ? cylindrical_->sourceCount() : mass_.size(); }
     std::size_t contactSourceCount() const { return contactTensor_.size(); }
 
 private:
@@ -63,6 +55,7 @@ private:
 
     CoarseGrainingSetup setup_;
     KernelProfile profile_;
+    std::unique_ptr<CylindricalCoarseGrainer> cylindrical_;  // set for RZ and R only
     FieldSums layout_;
     Vec3 halfExtent_{};  // support half-extent per lab axis (zero on averaged axes)
     double scale_ = 1;   // c_d det(A) / (lengths of the averaged directions) of the current frame

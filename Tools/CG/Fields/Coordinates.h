@@ -3,6 +3,12 @@
 // (a depth profile). The kernel then has the dimension of the resolved directions and each
 // field is divided by the lengths of the averaged directions, taken from the domain box of the
 // .data header, so that a depth profile of density integrates over z to mass per unit area.
+//
+// Cylindrical coordinates about a drum axis along x, y or z (SPEC.md 5): `RZ` resolves the
+// distance r from the axis and the coordinate s along it and averages over the angle; `R` also
+// averages along the axis (divided by the box length along it). Their points keep r in slot 0 and
+// s (the lab coordinate along the axis) in slot 2 of a Vec3; the fields are angular averages of
+// the 3-D (RZ) or cross-section 2-D (R) kernel (Fields/CylindricalCoarseGrainer.h).
 #pragma once
 
 #include <array>
@@ -15,20 +21,37 @@ namespace talus::cg {
 
 class Coordinates {
 public:
-    // "XYZ", "XY", "XZ", "YZ", "X", "Y", "Z" (any case, letters in any order); throws InputError.
+    // "XYZ", "XY", "XZ", "YZ", "X", "Y", "Z" (any case, letters in any order), or "RZ", "R"
+    // (cylindrical: the axis is set by setAxis); throws InputError.
     static Coordinates fromName(const std::string& name);
 
     std::string name() const;
     bool resolves(int axis) const { return resolved_[axis]; }
     const std::array<bool, 3>& resolvesAxes() const { return resolved_; }
+    // Resolved coordinates: 3 for XYZ, 2 for XZ and RZ, 1 for Z and R.
     int dimension() const;
-    // The resolved axes in increasing order (0 = x, 1 = y, 2 = z).
+    // Dimension of the coarse-graining function: dimension() for Cartesian coordinates; 3 for RZ
+    // (the 3-D kernel averaged over the angle), 2 for R (the kernel in the cross-section).
+    int kernelDimension() const;
+    // The resolved slots in increasing order (0 = x, 1 = y, 2 = z; cylindrical: 0 = r, 2 = s).
     std::vector<int> kernelAxes() const;
-    // Product of the box lengths of the averaged directions (1 for XYZ).
+    // The column name of slot k: "x", "y", "z"; cylindrical: "r" and the axis letter for s.
+    std::string coordinateName(int slot) const;
+    // Product of the box lengths of the averaged directions (1 for XYZ and RZ; the length along
+    // the axis for R).
     double averagedLength(const DomainBox& box) const;
+
+    bool isCylindrical() const { return cylindrical_; }
+    // The drum axis: direction 0, 1, 2 (x, y, z; -1 until set) through `point`.
+    void setAxis(int axis, const Vec3& point);
+    int axis() const { return axis_; }
+    const Vec3& axisPoint() const { return axisPoint_; }
 
 private:
     std::array<bool, 3> resolved_{true, true, true};
+    bool cylindrical_ = false;
+    int axis_ = -1;
+    Vec3 axisPoint_{0, 0, 0};
 };
 
 char axisLetter(int axis);

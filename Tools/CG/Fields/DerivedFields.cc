@@ -8,6 +8,9 @@ namespace {
 const char* const vectorSuffix[3] = {"X", "Y", "Z"};
 const char* const symmetricSuffix[6] = {"XX", "XY", "XZ", "YY", "YZ", "ZZ"};
 const char* const tensorSuffix[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+// Cylindrical components (Fields/CylindricalCoarseGrainer.h): radial, azimuthal, axial.
+const char* const cylindricalVectorSuffix[3] = {"R", "Theta", "Axial"};
+const char* const cylindricalSymmetricSuffix[6] = {"RR", "RTheta", "RAxial", "ThetaTheta", "ThetaAxial", "AxialAxial"};
 constexpr int symmetricRow[6] = {0, 0, 0, 1, 1, 2};
 constexpr int symmetricCol[6] = {0, 1, 2, 1, 2, 2};
 }  // namespace
@@ -16,9 +19,11 @@ std::vector<OutputColumn> derivedColumns(const FieldSums& layout) {
     std::vector<OutputColumn> columns;
     columns.push_back({"Density", "M/L^3"});
     columns.push_back({"VolumeFraction", "1"});
-    for (auto s : vectorSuffix) columns.push_back({std::string("Momentum") + s, "M/(L^2 T)"});
-    for (auto s : vectorSuffix) columns.push_back({std::string("Velocity") + s, "L/T"});
-    for (auto s : symmetricSuffix) columns.push_back({std::string("KineticStress") + s, "M/(L T^2)"});
+    const char* const* vector = layout.cylindrical ? cylindricalVectorSuffix : vectorSuffix;
+    const char* const* symmetric = layout.cylindrical ? cylindricalSymmetricSuffix : symmetricSuffix;
+    for (int c = 0; c < 3; ++c) columns.push_back({std::string("Momentum") + vector[c], "M/(L^2 T)"});
+    for (int c = 0; c < 3; ++c) columns.push_back({std::string("Velocity") + vector[c], "L/T"});
+    for (int c = 0; c < 6; ++c) columns.push_back({std::string("KineticStress") + symmetric[c], "M/(L T^2)"});
     if (layout.contactStress) {
         for (auto s : tensorSuffix) columns.push_back({std::string("ContactStress") + s, "M/(L T^2)"});
         for (auto s : tensorSuffix) columns.push_back({std::string("Stress") + s, "M/(L T^2)"});

@@ -39,17 +39,18 @@ std::vector<Vec3> readPointList(const std::string& path, const Coordinates& coor
         splitFields(line, fields);
         if (fields.empty() || fields[0].front() == '#') continue;
         Vec3 point{0, 0, 0};
-        if (fields.size() == 3) {
+        if (fields.size() == 3 && !coordinates.isCylindrical()) {
             for (int k = 0; k < 3; ++k) {
                 point[k] = coordinates.resolves(k) ? parseReal(fields[k], file, std::string("coordinate ") + axisLetter(k)) : 0.0;
             }
         } else if (fields.size() == axes.size()) {
             for (std::size_t c = 0; c < axes.size(); ++c) {
-                point[axes[c]] = parseReal(fields[c], file, std::string("coordinate ") + axisLetter(axes[c]));
+                point[axes[c]] = parseReal(fields[c], file, "coordinate " + coordinates.coordinateName(axes[c]));
             }
         } else {
-            file.fail("expected 3 coordinates (x y z) or " + std::to_string(axes.size()) + " (" + coordinates.name() +
-                      "), found " + std::to_string(fields.size()) + " columns");
+            file.fail((coordinates.isCylindrical() ? std::string("expected ") : "expected 3 coordinates (x y z) or ") +
+                      std::to_string(axes.size()) + " (" + coordinates.name() + "), found " + std::to_string(fields.size()) +
+                      " columns");
         }
         points.push_back(point);
     }

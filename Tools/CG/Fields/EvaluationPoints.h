@@ -20,7 +20,8 @@ std::vector<Vec3> gridPoints(const Coordinates& coordinates, const std::array<lo
 
 // Points from a text file, one per line: either x y z (averaged coordinates are ignored) or
 // only the resolved coordinates (e.g. one z per line for --coordinates Z). Blank lines and
-// lines starting with '#' are skipped. Errors name file and line.
+// lines starting with '#' are skipped. Cylindrical coordinates take only the resolved ones
+// (r and the coordinate along the axis for RZ, r for R). Errors name file and line.
 std::vector<Vec3> readPointList(const std::string& path, const Coordinates& coordinates);
 
 }  // namespace talus::cg

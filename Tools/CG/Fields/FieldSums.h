@@ -9,7 +9,9 @@
 //   ContactStress (9, optional) = sum_contacts w_c f_c (x) b_c int_0^1 W(r - r_c + s b_c) ds
 //
 // Sums are what time averaging averages; velocity, kinetic stress and concentration are
-// derived from them afterwards (DerivedFields.h).
+// derived from them afterwards (DerivedFields.h). In cylindrical coordinates (RZ, R) the vector
+// and tensor slots hold the radial, azimuthal and axial components instead of x, y, z
+// (Fields/CylindricalCoarseGrainer.h).
 #pragma once
 
 namespace talus::cg {
@@ -23,6 +25,7 @@ struct FieldSums {
 
     int species = 1;
     bool contactStress = false;
+    bool cylindrical = false;  // components (r, theta, s) instead of (x, y, z)
 
     int speciesDensityIndex(int s) const { return speciesDensity + s; }
     int contactStressIndex() const { return speciesDensity + species; }  // 9 components, row-major

@@ -42,6 +42,22 @@ RestartInfo readTalusRestart(TextFile& file) {
                 info.speciesDensity.push_back(density);
             }
             sawSpecies = true;
+        } else if (fields[0] == "walls" && fields.size() == 2) {
+            // restart.md: per wall normal (3; a cylinder's axis direction), point (3; a point of
+            // its axis), species, motion index, radius (0: a plane).
+            const long count = parseInteger(fields[1], file, "the wall count");
+            for (long w = 0; w < count; ++w) {
+                if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the wall list (truncated file?)");
+                splitFields(line, fields);
+                if (fields.size() != 9) file.fail("expected 9 fields for a wall, found " + std::to_string(fields.size()));
+                CylinderWall wall;
+                for (int k = 0; k < 3; ++k) {
+                    wall.axisDirection[k] = parseReal(fields[k], file, "the wall normal");
+                    wall.axisPoint[k] = parseReal(fields[3 + k], file, "the wall point");
+                }
+                wall.radius = parseReal(fields[8], file, "the wall radius");
+                if (wall.radius > 0) info.cylinders.push_back(wall);
+            }
         } else if (fields[0] == "shapes") {
             // Restart format 5: `shapes S Q`, S = 1 when the scene has superquadric particles. The
             // fields here treat every particle as a sphere of its .data radius (mass, volume, the

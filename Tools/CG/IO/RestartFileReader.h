@@ -1,6 +1,7 @@
 // What the CG tool takes from a restart file (Talus's, Documentation/FileFormats/restart.md, or
 // MercuryDPM's): the density of each species (the .data file has no masses), which directions
-// are periodic, and which particles are fixed (the base of a chute), in .data line order.
+// are periodic, which particles are fixed (the base of a chute), in .data line order, and the
+// cylinder walls of a drum (the default axis of cylindrical coordinates).
 #pragma once
 
 #include <array>
@@ -9,6 +10,14 @@
 
 namespace talus::cg {
 
+// A cylinder wall of a Talus restart file (the mantle of a rotating drum, SPEC.md 5): a point of
+// its axis, the axis direction and the radius.
+struct CylinderWall {
+    std::array<double, 3> axisPoint{0, 0, 0};
+    std::array<double, 3> axisDirection{0, 0, 1};
+    double radius = 0;
+};
+
 struct RestartInfo {
     std::string writer;                   // "Talus" or "MercuryDPM"
     std::vector<double> speciesDensity;   // by species index
@@ -16,6 +25,7 @@ struct RestartInfo {
     // Fixed flag per particle, in the order of the .data lines of the restart's frame
     // (Talus: ascending global id; MercuryDPM: particle index).
     std::vector<bool> fixed;
+    std::vector<CylinderWall> cylinders;  // Talus `walls` with radius > 0 (MercuryDPM: not read)
     double time = 0;
 };
 

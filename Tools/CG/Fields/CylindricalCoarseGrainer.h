@@ -1,0 +1,71 @@
+// Coarse-grained fields in cylindrical coordinates about a drum axis (SPEC.md 5 rotating drums,
+// SPEC.md 6 fields; derivation in Documentation/CoarseGraining.md "Cylindrical coordinates").
+//
+// The fields are the Cartesian fields of SPEC.md 6 (densities per unit volume) averaged over the
+// angle theta around the axis: rho(r, s) = (1/2 pi) int rho(r, theta, s) dtheta, so that
+// int rho 2 pi r dr ds is the mass. For a kernel W(x) = c_d/(wp^2 wa) f(u^2) that is isotropic
+// across the axis (width wp) with width wa along it, the average of one particle's kernel over the
+// circle of radius r is c_d/(wp^2 wa) C0(r, ri, s - si) (Kernels/AngularMoments.h): the exact
+// measure, not a 2-D kernel in an (r, s) plane.
+//
+// Vectors and tensors are averaged in the local basis (e_r, e_theta, e_s) of the point, e_theta =
+// e_s x e_r (right-handed about the positive axis direction). With phi = theta - theta_i,
+// e_r(theta) = cos(phi) e_r(theta_i) + sin(phi) e_theta(theta_i), so a particle with radial,
+// azimuthal and axial velocity (u_r, u_t, u_s) contributes (the sin(n phi) parts vanish because
+// the kernel is even in phi):
+//   momentum        p_r = m u_r C1,  p_t = m u_t C1,  p_s = m u_s C0
+//   momentum flux   K_rr = m (u_r^2 (C0 + C2) + u_t^2 (C0 - C2)) / 2,  K_rt = m u_r u_t C2,
+//                   K_tt = m (u_r^2 (C0 - C2) + u_t^2 (C0 + C2)) / 2,  K_rs = m u_r u_s C1,
+//                   K_ts = m u_t u_s C1,  K_ss = m u_s^2 C0
+// and mass, volume and species densities m C0, V C0. Velocity and kinetic stress then follow
+// from these sums as in Cartesian coordinates (DerivedFields.h).
+//
+// `RZ` uses the 3-D kernel; `R` the 2-D kernel of the cross-section, divided by the box length
+// along the axis (as `XZ` divides by the y length). Periodicity along the axis adds images for
+// RZ; periodic directions across the axis are refused. The contact stress is not available here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Fields/CoarseGrainingSetup.h"
+#include "Fields/FieldSums.h"
+#include "Fields/SupportBins.h"
+#include "IO/ParticleFrame.h"
+#include "Kernels/KernelProfile.h"
+
+namespace talus::cg {
+
+class CylindricalCoarseGrainer {
+public:
+    // Throws InputError naming the flag for a missing axis, a width matrix that is not isotropic
+    // across the axis, periodic directions across the axis, or --stress on.
+    explicit CylindricalCoarseGrainer(const CoarseGrainingSetup& setup);
+
+    const FieldSums& layout() const { return layout_; }
+    double crossWidth() const { return crossWidth_; }
+    double axialWidth() const { return axialWidth_; }
+
+    // Builds the particle sources of a frame (radius, axial coordinate, velocity components).
+    void setFrame(const ParticleFrame& frame, const std::string& dataPath);
+    // sums[p * layout().count() + f] at points (r, -, s) (overwritten); throws for r < 0.
+    void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+
+    std::size_t sourceCount() const { return mass_.size(); }
+
+private:
+    CoarseGrainingSetup setup_;
+    KernelProfile profile_;
+    FieldSums layout_;
+    int axis_ = 2;
+    double crossWidth_ = 1, axialWidth_ = 1;
+    double scale_ = 1;  // 1/(wp^2 wa) for RZ, 1/(wp^2 L) for R
+
+    // Sources of the current frame (axial images included).
+    std::vector<double> radius_, axial_, mass_, volume_;
+    std::vector<Vec3> velocity_;  // (u_r, u_theta, u_s)
+    std::vector<int> species_;
+    SupportBins bins_;
+};
+
+}  // namespace talus::cg
