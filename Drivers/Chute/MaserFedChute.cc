@@ -128,8 +128,11 @@ public:
 
 private:
     // Phase 2: the maser feeds the chute, whose base is the maser's, copied downstream.
+    // The chute (base and outlet) is laid out here, with --chute-length as it is now: a maser
+    // saved in a restart file before activation can feed chutes of any length.
     void activate() {
         const double end = maserLength + chuteLength;
+        outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
         maser.activate(*this, end);
         activatedAt_ = time();
         const std::size_t n = particles().size();
