@@ -26,6 +26,7 @@ struct NewtonResult {
     bool converged = false;
     SuperquadricContactPoint point;
     int iterations = 0;
+    ShapeValue atI{};  // Fi at the point (so that it is not evaluated again)
 };
 
 // Phi of the header, its gradient rows scaled by a length so that all four components are
@@ -107,6 +108,7 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
         }
     }
     result.point = {x, std::abs(mu)};
+    result.atI = r.i;
     return result;
 }
 
@@ -196,14 +198,14 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
             point = stage.point;
         }
         contact.morphStages = stages;
-        if (ok) found = {true, point, 0};
+        if (ok) found = {true, point, 0, i.at(point.point)};  // (the morphed shapes' Fi is not i's)
     }
     if (!found.converged) return contact;
 
     contact.converged = true;
     contact.solution = found.point;
     const Vec3& x = found.point.point;
-    const ShapeValue atI = i.at(x);
+    const ShapeValue& atI = found.atI;
     contact.touching = atI.value < 0;
     if (!contact.touching) {
         // Fi = Fj = t > 0 at Xc: f + 1 is homogeneous of degree 2/e1, so the level set F = t is the
