@@ -464,9 +464,11 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
     PairList& list = state_.pairList;
     const bool rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
     if (rebuild && state_.settings.reorderParticles) reorderParticles();
-    previousForce_.resize(p.size());
+    // The forces of the last step become previousForce_ by a swap (no copy: at 10^6 particles a
+    // step is bound by memory bandwidth), and the old array is overwritten with gravity.
+    previousForce_.swap(p.force);
+    p.force.resize(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
-        previousForce_[i] = p.force[i];
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
         p.torque[i].setZero();
     }
