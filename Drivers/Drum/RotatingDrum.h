@@ -1,0 +1,77 @@
+// The rotating drum of SPEC.md 5 (seed:7025-7270): spheres and prolate ellipsoids of equal volume
+// mixing or segregating in a drum turning about its horizontal axis y.
+//
+// Methods. Half of N particles are spheres of diameter 1, half prolate ellipsoids of semi-axes
+// a = R^(2/3)/2, b = c = R^(-1/3)/2 (aspect ratio R, --aspect; the same volume pi/6), all of
+// density 6/pi (mass 1). Contacts are linear spring-dashpots with tc = 0.05 and e = 0.1 for two
+// particles (reduced mass 1/2), kt = 2/7 kn, gt = gn and sliding friction 0.5; dt = tc/50. The
+// drum (radius r, --radius) is periodic along its axis y (length L, --length). Its wall is one
+// layer of fixed spheres of diameter 0.5, a disordered flat rough base of length 2 pi r (the
+// chute's, Chute::addBase) wrapped onto the cylinder: angle x/r, X = (r + z) cos(x/r),
+// Z = (r + z) sin(x/r) (SPEC.md 5; the seed drops the /r); or, with --wall smooth, the plain
+// cylinder wall of radius r. N follows from --fill, the fraction of the drum's cross-section the
+// bed fills (taken at packing fraction 0.6), unless --particles is given.
+// Filling (SPEC.md 5): the particles are placed one by one at random places in the drum where
+// their bounding spheres overlap nothing; after 1000 failed tries in a row the bed settles and the rest are tried again, up to
+// --insertion-rounds rounds. When all are in (or the rounds are used up: the run says how many
+// of each kind are missing) and the bed is at rest, the drum starts turning at Froude number
+// F = w^2 r / g (--froude): the wall moves as a prescribed rotation about y, every wall particle
+// along its circle with velocity (-w r sin th, 0, w r cos th) and angular velocity w.
+// Every --sample-interval the run appends to NAME.series: time, rotations, kinetic energy, the
+// mixing and segregation indices M and S of the sphere fraction (DrumAnalysis.h) and the
+// dynamic angle of repose.
+#pragma once
+
+#include <string>
+
+#include "Simulation.h"
+
+namespace talus {
+
+class RotatingDrum : public Simulation {
+public:
+    // Flags (SPEC.md 5's full scale is --radius 15; the defaults are a scaled-down drum).
+    double radius = 6, length = 6, aspect = 2, fill = 0.4, froude = 0.01;
+    double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1;
+    int particleCount = 0, seed = 1, insertionRounds = 20;
+    std::string wallType = "particles";
+
+    static constexpr double collisionTime = 0.05, restitution = 0.1, friction = 0.5;
+    static constexpr double wallDiameter = 0.5;
+
+    RotatingDrum();
+
+    // Angular speed of the drum from the Froude number, w = sqrt(F g / r).
+    double angularSpeed() const;
+    bool rotating() const { return rotationStart_ >= 0; }
+    double rotationStartTime() const { return rotationStart_; }
+    // Drum turns since the rotation started.
+    double rotations() const;
+    int particlesToInsert() const { return targetCount_; }
+    int particlesInserted() const { return insertedSpheres_ + insertedEllipsoids_; }
+    // Distance from the axis within which the bed's bounding spheres must lie.
+    double innerRadius() const { return innerRadius_; }
+    std::size_t sphereSpecies() const { return 0; }
+
+protected:
+    void setupInitialConditions() override;
+    void actionsAfterTimeStep() override;
+    void actionsAfterSolve() override;
+
+private:
+    void checkFlags() const;
+    void addParticleWall(std::size_t wallSpecies, int motion);
+    // One round of random insertion; returns how many particles it placed.
+    int insertRemaining();
+    void startRotation();
+    void checkBed() const;
+    void writeSample();
+
+    std::size_t shape_ = 0;
+    // The run's progress, kept in the restart file.
+    int targetCount_ = 0, insertedSpheres_ = 0, insertedEllipsoids_ = 0, rounds_ = 0;
+    double lastInsertion_ = 0, rotationStart_ = -1, innerRadius_ = 0, angleSum_ = 0;
+    int angleSamples_ = 0;
+};
+
+}  // namespace talus

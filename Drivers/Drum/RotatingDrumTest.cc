@@ -1,0 +1,164 @@
+// Checks of the rotating-drum driver (SPEC.md 5) on small drums: the wall turns as a rigid body
+// at w, the bed is at rest when it starts, no particle is lost, a single sphere is carried as
+// the mechanics of rolling predicts, and bad flags are named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "RotatingDrum.h"
+
+using namespace talus;
+
+namespace {
+
+// The drum with a check after every step of the driver's own actions.
+class CheckedDrum : public RotatingDrum {
+public:
+    std::function<void(CheckedDrum&)> check;
+    std::function<void(CheckedDrum&)> afterSetup;
+
+    void run(std::vector<std::string> flags) {
+        flags.insert(flags.end(), {"--files", "off", "--progress-interval", "1e9"});
+        setName("RotatingDrumTest");
+        setTimeStep(collisionTime / 50);
+        solveOrThrow(flags);
+    }
+
+protected:
+    void setupInitialConditions() override {
+        RotatingDrum::setupInitialConditions();
+        if (afterSetup) afterSetup(*this);
+    }
+    void actionsAfterTimeStep() override {
+        RotatingDrum::actionsAfterTimeStep();
+        if (check) check(*this);
+    }
+};
+
+std::string errorOf(const std::vector<std::string>& flags) {
+    CheckedDrum drum;
+    try {
+        drum.run(flags);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
+    CheckedDrum drum;
+    struct Start { double radius, angle, y; };
+    std::map<std::uint64_t, Start> wall;  // by particle id, at t = 0
+    double worstRadius = 0, worstSpeed = 0, worstAngle = 0, restSpeed = -1;
+    drum.check = [&](CheckedDrum& d) {
+        const ParticleStore& p = d.particles();
+        const double w = d.rotating() ? d.angularSpeed() : 0;
+        const double turned = d.rotating() ? w * (d.time() - d.rotationStartTime()) : 0;
+        double fastest = 0;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const Vec3& x = p.position[i];
+            if (!p.fixed[i]) {
+                fastest = std::max(fastest, p.velocity[i].norm());
+                continue;
+            }
+            const double rho = std::hypot(x.x(), x.z()), angle = std::atan2(x.z(), x.x());
+            if (d.step() == 1) wall[p.id[i]] = {rho, angle, x.y()};
+            const Start& s = wall.at(p.id[i]);
+            worstRadius = std::max(worstRadius, std::abs(rho - s.radius));
+            ASSERT_EQ(x.y(), s.y);
+            // SPEC.md 5: speed w r along the circle, the angle advanced by w (t - t0).
+            worstSpeed = std::max(worstSpeed, std::abs(p.velocity[i].norm() - w * rho));
+            worstAngle = std::max(worstAngle, std::abs(std::remainder(angle - s.angle - turned, 2 * pi)));
+        }
+        if (d.rotating() && restSpeed < 0) restSpeed = fastest;  // the first step of the turning drum
+    };
+    drum.run({"--radius", "4", "--length", "4", "--particles", "30", "--end-time", "40"});
+    ASSERT_TRUE(drum.rotating());
+    EXPECT_GT(drum.rotations(), 0.1);
+    std::printf("[ measured ] wall: radius drift %.2e, |speed - w r| %.2e, angle error %.2e after %.3f turns; "
+                "fastest particle when the drum starts %.2e\n",
+                worstRadius, worstSpeed, worstAngle, drum.rotations(), restSpeed);
+    EXPECT_GT(wall.size(), 200u);
+    EXPECT_LT(worstRadius, 1e-12);
+    EXPECT_LT(worstSpeed, 1e-12);
+    EXPECT_LT(worstAngle, 1e-10);
+    // At rest when it starts: kinetic energy per particle below 1e-4 means speeds below
+    // sqrt(2e-4) = 0.014 for mass 1; a moving bed falls at about sqrt(g d) = 1.
+    EXPECT_GE(restSpeed, 0);
+    EXPECT_LT(restSpeed, std::sqrt(2e-4));
+    // Mass conservation: all 30 in the drum, 15 of each kind, each of mass 1 (equal volumes pi/6,
+    // density 6/pi: the ellipsoid's 4/3 pi a b^2 = pi/6 R^(2/3) R^(-2/3)).
+    const ParticleStore& p = drum.particles();
+    int spheres = 0, ellipsoids = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.fixed[i]) continue;
+        (p.species[i] == 0 ? spheres : ellipsoids) += 1;
+        EXPECT_NEAR(p.mass[i], 1, 1e-12);
+        EXPECT_LT(std::hypot(p.position[i].x(), p.position[i].z()), drum.innerRadius());
+        EXPECT_GE(p.position[i].y(), 0);
+        EXPECT_LT(p.position[i].y(), 4);
+    }
+    EXPECT_EQ(spheres, 15);
+    EXPECT_EQ(ellipsoids, 15);
+}
+
+TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
+    // One sphere (d = 1, s = 1/2) at rest at the bottom of a smooth drum of radius r that starts to
+    // turn with surface speed V = w r. While its contact slips, friction's impulse J gives the
+    // centre v = J/m and the spin w_s s = J s^2/I = 5J/(2m): the contact point moves at 7J/(2m),
+    // and slipping ends when that reaches V, with v = 2V/7 whatever the force's history. Then it
+    // rolls: with the contact point moving at V, (r - s) phi' + w_s s = V, so w_s' = -(r - s)
+    // phi''/s, friction F = I w_s'/s and m (r - s) phi'' = -m g sin(phi) + F give
+    // (7/5)(r - s) phi'' = -g sin(phi): a pendulum, not a climb (no rolling resistance, so friction
+    // never has to hold the sphere up). Energy: (7/10) m v^2 = m g (r - s)(1 - cos phi_max), so
+    // 1 - cos phi_max = 2 V^2 / (35 g (r - s)) = 2 F r / (35 (r - s)) with V^2 = w^2 r^2 = F g r.
+    // (Rolling needs |F| = (2/7) m g sin(phi) <= mu m g cos(phi), tan(phi) <= 3.5 mu: far away.)
+    CheckedDrum drum;
+    const double r = 4, s = 0.5, froude = 0.01;
+    drum.afterSetup = [&](CheckedDrum& d) {
+        ParticleStore& p = d.particles();
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (!p.fixed[i]) {
+                // At the bottom, sunk into the wall by its weight m g / kn (no bounce).
+                const double kn = LinearSpringDashpot::fromCollision(RotatingDrum::collisionTime, 0.1, 0.5).normalStiffness;
+                p.position[i] = Vec3(0, 1, -(r - s) - 1 / kn);
+                p.velocity[i] = Vec3::Zero();
+            }
+    };
+    double phiMax = 0, lastPhi = 0;
+    const double period = 2 * pi * std::sqrt(7 * (r - s) / 5);
+    drum.check = [&](CheckedDrum& d) {
+        if (!d.rotating() || d.time() - d.rotationStartTime() > period / 2) return;
+        for (std::size_t i = 0; i < d.particles().size(); ++i)
+            if (!d.particles().fixed[i]) {
+                const Vec3& x = d.particles().position[i];
+                lastPhi = std::atan2(x.x(), -x.z());
+                phiMax = std::max(phiMax, lastPhi);
+            }
+    };
+    drum.run({"--radius", "4", "--length", "4", "--particles", "1", "--wall", "smooth", "--froude", "0.01",
+              "--end-time", "30"});
+    ASSERT_TRUE(drum.rotating());
+    ASSERT_LT(drum.rotationStartTime(), 30 - period / 2);
+    const double expected = std::acos(1 - 2 * froude * r / (35 * (r - s)));
+    std::printf("[ measured ] sphere carried to %.5f rad (pendulum amplitude %.5f), %.5f half a period later\n", phiMax,
+                expected, lastPhi);
+    EXPECT_NEAR(phiMax, expected, 0.05 * expected);
+    EXPECT_LT(std::abs(lastPhi), 0.2 * expected);  // back at the bottom after half a period
+}
+
+TEST(RotatingDrum, BadFlagsAreNamed) {
+    EXPECT_NE(errorOf({"--radius", "2"}).find("--radius 2 is too small"), std::string::npos);
+    EXPECT_NE(errorOf({"--fill", "1.5"}).find("--fill must lie in (0, 1)"), std::string::npos);
+    EXPECT_NE(errorOf({"--fill", "0"}).find("--fill must lie in (0, 1)"), std::string::npos);
+    EXPECT_NE(errorOf({"--aspect", "0.5"}).find("--aspect must be at least 1"), std::string::npos);
+    EXPECT_NE(errorOf({"--wall", "bumpy"}).find("--wall must be particles or smooth"), std::string::npos);
+    EXPECT_NE(errorOf({"--particles", "5000"}).find("do not fit into the drum"), std::string::npos);
+}
