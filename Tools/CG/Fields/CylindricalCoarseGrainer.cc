@@ -118,6 +118,7 @@ void CylindricalCoarseGrainer::evaluate(const std::vector<Vec3>& points, std::ve
     sums.assign(points.size() * fields, 0.0);
     const bool resolvesAxial = setup_.coordinates.resolves(2);
     const double inverseCross = 1.0 / crossWidth_, inverseAlong = 1.0 / axialWidth_;
+    const int angular = layout_.angularMomentumIndex();
     for (std::size_t p = 0; p < points.size(); ++p) {
         const double r = points[p][0], s = points[p][2];
         if (!(r >= 0)) throw InputError("--points: the distance r from the axis must be 0 or more, found " + str(r));
@@ -146,6 +147,8 @@ void CylindricalCoarseGrainer::evaluate(const std::vector<Vec3>& points, std::ve
             row[FieldSums::momentumFlux + 4] += u[1] * u[2] * c1;
             row[FieldSums::momentumFlux + 5] += u[2] * u[2] * c0;
             row[FieldSums::speciesDensity + species_[i]] += c0;
+            row[angular] += radius_[i] * u[1] * c0;
+            row[angular + 1] += radius_[i] * radius_[i] * c0;
         }
     }
 }

@@ -18,7 +18,10 @@
 //                   K_tt = m (u_r^2 (C0 - C2) + u_t^2 (C0 + C2)) / 2,  K_rs = m u_r u_s C1,
 //                   K_ts = m u_t u_s C1,  K_ss = m u_s^2 C0
 // and mass, volume and species densities m C0, V C0. Velocity and kinetic stress then follow
-// from these sums as in Cartesian coordinates (DerivedFields.h).
+// from these sums as in Cartesian coordinates (DerivedFields.h). Two more scalar sums, the
+// angular momentum m r_i u_t C0 and the moment of inertia m r_i^2 C0 about the axis, give the
+// angular velocity L / I, exactly omega for solid-body rotation (V_theta = p_t / rho is omega times
+// the kernel-weighted mean radius, omega r only where the density is uniform).
 //
 // `RZ` uses the 3-D kernel; `R` the 2-D kernel of the cross-section, divided by the box length
 // along the axis (as `XZ` divides by the y length). Periodicity along the axis adds images for

@@ -30,6 +30,7 @@ std::vector<OutputColumn> derivedColumns(const FieldSums& layout) {
     }
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Density_s" + std::to_string(s), "M/L^3"});
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Concentration_s" + std::to_string(s), "1"});
+    if (layout.cylindrical) columns.push_back({"AngularVelocity", "1/T"});
     return columns;
 }
 
@@ -59,6 +60,12 @@ void appendDerivedFields(const FieldSums& layout, const double* sums, std::vecto
         // clamp into [0, 1].
         const double phi = rho > 0 ? sums[layout.speciesDensityIndex(s)] / rho : 0.0;
         values.push_back(std::clamp(phi, 0.0, 1.0));
+    }
+    if (layout.cylindrical) {
+        // Angular momentum over moment of inertia about the axis: exactly omega for solid-body
+        // rotation (Fields/CylindricalCoarseGrainer.h).
+        const double inertia = sums[layout.angularMomentumIndex() + 1];
+        values.push_back(inertia > 0 ? sums[layout.angularMomentumIndex()] / inertia : 0.0);
     }
 }
 

@@ -11,6 +11,7 @@
 //                   branch from its partner to i gives a positive normal stress)
 //   Stress          sigma_k + sigma_c (when contact stress is evaluated)
 //   Concentration   phi_s = rho_s / rho, in [0, 1] (0 where rho = 0)
+//   AngularVelocity (cylindrical coordinates) angular momentum / moment of inertia about the axis
 #pragma once
 
 #include <string>

@@ -7,6 +7,8 @@
 //   MomentumFlux (6)   K        = sum_i m_i v_i v_i W(r - r_i)   (xx xy xz yy yz zz)
 //   Density of species s (S)    = sum over particles of species s of m_i W(r - r_i)
 //   ContactStress (9, optional) = sum_contacts w_c f_c (x) b_c int_0^1 W(r - r_c + s b_c) ds
+//   cylindrical only (2):  AngularMomentum  sum_i m_i r_i u_theta,i <W>,
+//                          MomentOfInertia  sum_i m_i r_i^2 <W>   (about the drum axis)
 //
 // Sums are what time averaging averages; velocity, kinetic stress and concentration are
 // derived from them afterwards (DerivedFields.h). In cylindrical coordinates (RZ, R) the vector
@@ -29,7 +31,8 @@ struct FieldSums {
 
     int speciesDensityIndex(int s) const { return speciesDensity + s; }
     int contactStressIndex() const { return speciesDensity + species; }  // 9 components, row-major
-    int count() const { return speciesDensity + species + (contactStress ? 9 : 0); }
+    int angularMomentumIndex() const { return speciesDensity + species + (contactStress ? 9 : 0); }  // then inertia
+    int count() const { return angularMomentumIndex() + (cylindrical ? 2 : 0); }
 };
 
 }  // namespace talus::cg

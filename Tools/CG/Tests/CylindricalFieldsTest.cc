@@ -7,7 +7,8 @@
 //      20000 particles spread evenly over the ring, projected on (e_r, e_theta, e_s): a sum over
 //      evenly spaced particles is the trapezoid rule of the angular average.
 //  (c) solid-body rotation v = omega e_s x (x - c) (plus a uniform axial drift): radial velocity
-//      zero to round-off, azimuthal velocity the angular mean of the Cartesian field
+//      zero and angular velocity omega to round-off, azimuthal velocity the angular mean of the
+//      Cartesian field
 //      <p . e_theta> / <rho> (trapezoid rule over 4096 points of the circle), and omega r where
 //      the density is uniform (a fine lattice).
 //  (d) bad input names the flag.
@@ -161,7 +162,7 @@ TEST(CylindricalFields, RingSumsEqualTheCartesianFieldsOfManyParticlesOnIt) {
             cartesian.evaluate(lab, reference);
             const int fields = cylindrical.layout().count();
             const int labFields = cartesian.layout().count();
-            ASSERT_EQ(fields, labFields);
+            ASSERT_EQ(fields, labFields + 2);  // and the angular momentum and moment of inertia
             double largest = 0;
             for (double value : reference) largest = std::max(largest, std::abs(value));
             const double m = 1.5 * sphereVolume(0.1), speed = std::hypot(u[0], u[1], u[2]);
@@ -181,6 +182,12 @@ TEST(CylindricalFields, RingSumsEqualTheCartesianFieldsOfManyParticlesOnIt) {
                                           std::to_string(points[p][2]);
                 EXPECT_NEAR(c[FieldSums::density], x[FieldSums::density], tolerance) << where;
                 EXPECT_NEAR(c[FieldSums::volumeFraction], x[FieldSums::volumeFraction], tolerance / 1.5) << where;
+                // Every particle has radius r0 and azimuthal velocity u_t: L = r0 u_t rho, I = r0^2 rho
+                // (up to the rounding of r_i and u_t from the positions, summed over 20000 terms).
+                const int angular = cylindrical.layout().angularMomentumIndex();
+                const double l = r0 * u[1] * c[FieldSums::density], inertia = r0 * r0 * c[FieldSums::density];
+                EXPECT_NEAR(c[angular], l, 1e-11 * std::abs(l) + 1e-300) << where;
+                EXPECT_NEAR(c[angular + 1], inertia, 1e-11 * inertia + 1e-300) << where;
                 // Cartesian momentum and momentum flux projected on the local basis.
                 const double* pm = x + FieldSums::momentum;
                 const double* k = x + FieldSums::momentumFlux;
@@ -264,6 +271,8 @@ TEST(CylindricalFields, SolidBodyRotationIsAzimuthalWithNoRadialVelocity) {
         const double r = points[p][0];
         EXPECT_LT(std::abs(vr), 1e-14 * rot.omega * 5) << "r " << r;
         EXPECT_NEAR(vs, rot.drift, 1e-14) << "r " << r;
+        // Angular momentum over moment of inertia: sum m r_i (omega r_i) C0 / sum m r_i^2 C0 = omega.
+        EXPECT_NEAR(derived.back(), rot.omega, 1e-14) << "r " << r;
         // The angular mean of the Cartesian fields on the circle (trapezoid rule; for a periodic
         // C^2 integrand its error falls faster than 1/circle^2).
         std::vector<Vec3> lab;
