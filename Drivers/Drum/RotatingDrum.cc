@@ -99,7 +99,7 @@ void RotatingDrum::setupInitialConditions() {
                                                                         bedPackingFraction / particleVolume / 2));
     const double bedVolume = targetCount_ * particleVolume / bedPackingFraction;
     require(bedVolume < 0.9 * crossSection * length,
-            "--particles " + std::to_string(targetCount_) + " do not fit into the drum (their bed would fill " +
+            std::to_string(targetCount_) + " particles (--particles, --fill) do not fit into the drum (their bed would fill " +
                 str(bedVolume / (crossSection * length)) + " of it); use fewer, a larger --radius or --length");
     std::printf("%s: drum r = %g, inner radius %.4g, length %g, %d particles (fill %.3g), aspect %g\n", name().c_str(),
                 radius, innerRadius_, length, targetCount_, bedVolume / (crossSection * length), aspect);

@@ -90,7 +90,7 @@ def main():
     left.set_title("NAME.series while the drum turns")
     draw_cross_section(right, rows, axes, t)
     fig.tight_layout()
-    fig.savefig(args.out, dpi=130)
+    fig.savefig(args.out, dpi=100)
     print(f"wrote {args.out} ({turning.sum()} samples while turning, frame t = {t:g} of {len(rows)} particles)")
 
 
