@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "DrumAnalysis.h"
 #include "RotatingDrum.h"
 
 using namespace talus;
@@ -161,4 +162,58 @@ TEST(RotatingDrum, BadFlagsAreNamed) {
     EXPECT_NE(errorOf({"--aspect", "0.5"}).find("--aspect must be at least 1"), std::string::npos);
     EXPECT_NE(errorOf({"--wall", "bumpy"}).find("--wall must be particles or smooth"), std::string::npos);
     EXPECT_NE(errorOf({"--particles", "5000"}).find("do not fit into the drum"), std::string::npos);
+}
+
+namespace {
+
+// A bare particle store for the measurements (they read position, mass, species and fixed).
+void addPoint(ParticleStore& p, const Vec3& x, std::uint32_t species, bool fixed = false) {
+    p.position.push_back(x);
+    p.mass.push_back(1);
+    p.species.push_back(species);
+    p.fixed.push_back(fixed ? 1 : 0);
+}
+
+}  // namespace
+
+TEST(DrumAnalysis, SurfaceAngleOfABedUnderAPlane) {
+    // Columns of particles every 0.5 in x, the top one on the line z = x tan(30 deg), three more
+    // below it: every column's surface particle lies on the line, so the fit is exact. Fixed
+    // particles far above (a wall) must not count.
+    ParticleStore p;
+    const double slope = std::tan(30 * pi / 180);
+    for (int k = -10; k <= 10; ++k)
+        for (int j = 0; j < 4; ++j) addPoint(p, Vec3(0.5 * k, 0, 0.5 * k * slope - j), k % 2 == 0 ? 0 : 1);
+    for (int k = -5; k <= 5; ++k) addPoint(p, Vec3(k, 0, 100 - k), 2, true);
+    EXPECT_NEAR(drum::surfaceAngle(p), 30, 1e-9);
+    // A flat bed: 0.
+    ParticleStore flat;
+    for (int k = -10; k <= 10; ++k) addPoint(flat, Vec3(0.5 * k, 0, -2), 0);
+    EXPECT_NEAR(drum::surfaceAngle(flat), 0, 1e-12);
+}
+
+TEST(DrumAnalysis, MixingIndexOfTwinsAndOfASeparatedCore) {
+    // Twins (a sphere and an ellipsoid at every place): phi = 1/2 wherever there is mass, m = -ln 2, M = 1.
+    ParticleStore twins;
+    for (int k = 0; k < 20; ++k) {
+        const Vec3 x(std::cos(k) * 0.2 * k, 0, std::sin(k) * 0.2 * k - 1);
+        addPoint(twins, x, 0);
+        addPoint(twins, x, 1);
+    }
+    const drum::MixingIndices mixed = drum::mixingIndices(twins, 0, 6, 48, 1);
+    EXPECT_NEAR(mixed.mixing, 1, 1e-12);
+    EXPECT_NEAR(std::abs(mixed.segregation), 0, 1e-12);
+    // Spheres within 0.5 of the centre, ellipsoids on a ring of radius 4: the kernels (width 1) of
+    // the two kinds never meet, phi is 0 or 1 everywhere, M = 0; the spheres are at the core, S = M - 1 = -1.
+    ParticleStore core;
+    for (int k = 0; k < 8; ++k) addPoint(core, Vec3(0.5 * std::cos(k * pi / 4), 0, 0.5 * std::sin(k * pi / 4)), 0);
+    for (int k = 0; k < 40; ++k) addPoint(core, Vec3(4 * std::cos(k * pi / 20), 0, 4 * std::sin(k * pi / 20)), 1);
+    const drum::MixingIndices separated = drum::mixingIndices(core, 0, 6, 48, 1);
+    EXPECT_NEAR(separated.mixing, 0, 1e-12);
+    EXPECT_TRUE(separated.spheresAtCore);
+    EXPECT_NEAR(separated.segregation, -1, 1e-12);
+    // The same with the kinds swapped: the spheres at the periphery, S = 1 - M = 1.
+    const drum::MixingIndices swapped = drum::mixingIndices(core, 1, 6, 48, 1);
+    EXPECT_FALSE(swapped.spheresAtCore);
+    EXPECT_NEAR(swapped.segregation, 1, 1e-12);
 }
