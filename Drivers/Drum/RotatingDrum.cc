@@ -228,14 +228,15 @@ void RotatingDrum::actionsAfterTimeStep() {
 }
 
 void RotatingDrum::writeSample() {
-    std::ofstream series(name() + ".series", std::ios::app);  // appended, so a restart continues it
-    if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
-        series << "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
-                  " (energy: translational + rotational of the bed; angle nan while filling)\n";
     const drum::MixingIndices mixing = drum::mixingIndices(particles(), sphereSpecies(), radius,
                                                           static_cast<int>(std::ceil(8 * radius)), cgWidth);
     const double angle = rotating() ? drum::surfaceAngle(particles()) : NAN;
     if (rotating() && rotations() >= 1 && std::isfinite(angle)) angleSum_ += angle, ++angleSamples_;
+    if (!settings().writeData) return;  // --files off
+    std::ofstream series(name() + ".series", std::ios::app);  // appended, so a restart continues it
+    if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
+        series << "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
+                  " (energy: translational + rotational of the bed; angle nan while filling)\n";
     series.precision(10);
     series << time() << ' ' << rotations() << ' ' << energies().kinetic + energies().rotational << ' '
            << mixing.mixing << ' ' << mixing.segregation << ' ' << angle << '\n';
