@@ -20,7 +20,7 @@ from matplotlib.patches import Ellipse  # noqa: E402
 import numpy as np  # noqa: E402
 
 from dataFrames import read_frame  # noqa: E402
-from plotEllipsoids import rotation  # noqa: E402
+from plotEllipsoids import rotation, semi_axes  # noqa: E402
 
 
 def read_series(path):
@@ -64,11 +64,7 @@ def main():
     parser.add_argument("--semi-axes", required=True, help="a,b,c of the ellipsoids")
     parser.add_argument("--time", type=float, default=None, help="frame to draw (default: the last)")
     args = parser.parse_args()
-    try:
-        axes = np.array([float(v) for v in args.semi_axes.split(",")])
-        assert len(axes) == 3 and np.all(axes > 0)
-    except (ValueError, AssertionError):
-        sys.exit(f"--semi-axes: expected three positive numbers a,b,c, got '{args.semi_axes}'")
+    axes = semi_axes(args.semi_axes)
     series = read_series(args.name + ".series")
     t, rows, _ = read_frame(args.name + ".data", args.time, "plotDrum")
 

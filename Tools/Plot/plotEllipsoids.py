@@ -24,6 +24,16 @@ import numpy as np  # noqa: E402
 from dataFrames import read_frame  # noqa: E402
 
 
+
+def semi_axes(text):
+    """The semi-axes a,b,c of --semi-axes as an array; exits with a message naming the flag."""
+    try:
+        axes = np.array([float(v) for v in text.split(",")])
+        assert len(axes) == 3 and np.all(axes > 0)
+    except (ValueError, AssertionError):
+        sys.exit(f"--semi-axes: expected three positive numbers a,b,c, got '{text}'")
+    return axes
+
 def rotation(roll, pitch, yaw):
     """Body-to-lab rotation of Tait-Bryan Z-Y-X angles: R = Rz(yaw) Ry(pitch) Rx(roll)."""
     cr, sr, cp, sp, cy, sy = np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
@@ -40,11 +50,7 @@ def main():
     parser.add_argument("--semi-axes", required=True, help="a,b,c of the scene's ellipsoids")
     parser.add_argument("--time", type=float, default=None)
     args = parser.parse_args()
-    try:
-        axes = np.array([float(v) for v in args.semi_axes.split(",")])
-        assert len(axes) == 3 and np.all(axes > 0)
-    except (ValueError, AssertionError):
-        sys.exit(f"--semi-axes: expected three positive numbers a,b,c, got '{args.semi_axes}'")
+    axes = semi_axes(args.semi_axes)
     t, rows, _ = read_frame(args.data, args.time, "plotEllipsoids")
     order = np.argsort(-rows[:, 1])  # back (large y) first, front last
     y = rows[:, 1]

@@ -22,15 +22,6 @@ namespace talus::cg {
 
 namespace {
 
-std::string list(const std::vector<double>& values) {
-    std::string text;
-    for (double v : values) {
-        if (!text.empty()) text += ',';
-        text += str(v);
-    }
-    return text;
-}
-
 std::string seconds(double s) {
     std::ostringstream out;
     out.precision(s < 10 ? 2 : 3);
@@ -218,7 +209,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             comments.push_back("coordinates " + setup.coordinates.name() +
                                (setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
                                                                   : std::string()) +
-                               ", periodic " + periodicText(setup.periodic) + ", densities " + list(setup.speciesDensity) +
+                               ", periodic " + periodicText(setup.periodic) + ", densities " + commaList(setup.speciesDensity) +
                                (options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
             if (setup.coordinates.isCylindrical()) {
                 const Coordinates& c = setup.coordinates;

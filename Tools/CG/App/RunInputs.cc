@@ -16,15 +16,6 @@ bool exists(const std::string& path) {
     return !path.empty() && std::filesystem::is_regular_file(path, error);
 }
 
-std::string list(const std::vector<double>& values) {
-    std::string text;
-    for (double v : values) {
-        if (!text.empty()) text += ',';
-        text += str(v);
-    }
-    return text;
-}
-
 }  // namespace
 
 void resolveDrumAxis(const ProgramOptions& options, RunInputs& in, std::ostream& log) {
@@ -66,6 +57,15 @@ void resolveDrumAxis(const ProgramOptions& options, RunInputs& in, std::ostream&
         << (wall ? ", drum radius " + str(wall->radius) : std::string()) << "\n";
 }
 
+std::string commaList(const std::vector<double>& values) {
+    std::string text;
+    for (double v : values) {
+        if (!text.empty()) text += ',';
+        text += str(v);
+    }
+    return text;
+}
+
 std::string periodicText(const std::array<bool, 3>& periodic) {
     std::string text;
     for (int k = 0; k < 3; ++k) {
@@ -88,7 +88,7 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
     if (in.restartPath == "none") in.restartPath.clear();
     if (!in.restartPath.empty()) {
         in.restart = readRestartFile(in.restartPath);
-        log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << list(in.restart->speciesDensity)
+        log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << commaList(in.restart->speciesDensity)
             << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles\n";
     }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "App/Options.h"
 #include "Fields/CoarseGrainer.h"
@@ -33,6 +34,8 @@ void resolveDrumAxis(const ProgramOptions& options, RunInputs& inputs, std::ostr
 
 // "x,y" or "none".
 std::string periodicText(const std::array<bool, 3>& periodic);
+// "1,2.5,3": numbers as the log lines show them.
+std::string commaList(const std::vector<double>& values);
 
 // Resolves the options against the files found; says on `log` what the restart file gave.
 // `wantStress`: the contact stress is evaluated when a .fstat file is found (or --stress on).
