@@ -13,6 +13,19 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An error that every rank of an MPI run throws at the same step (Parallel/DomainSplit.h), so
+// that all of them stop cleanly. The rank that found the problem carries the message; the others
+// are silent (their message only says which rank found it), and Simulation::solve prints only
+// the first kind.
+class CollectiveError : public Error {
+public:
+    CollectiveError(const std::string& message, bool silent) : Error(message), silent_(silent) {}
+    bool silent() const { return silent_; }
+
+private:
+    bool silent_;
+};
+
 // Throws Error(message) unless condition holds. Used for argument checks in setters.
 inline void require(bool condition, const std::string& message) {
     if (!condition) throw Error(message);

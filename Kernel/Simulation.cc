@@ -9,6 +9,7 @@
 #include "IO/OutputFiles.h"
 #include "IO/Progress.h"
 #include "IO/RestartFile.h"
+#include "Parallel/DomainSplit.h"
 #include "Particles/SpaceFillingCurve.h"
 
 namespace talus {
@@ -280,7 +281,30 @@ std::size_t Simulation::addMotion(const PrescribedMotion& motion) {
 Energies Simulation::energies() const {
     Energies e = particleEnergies(state_.particles, state_.gravity);
     e.elastic = elasticEnergy_;
-    return e;
+    if (!onRanks()) return e;
+    const Vec3 moment = e.mass > 0 ? Vec3(e.mass * e.centreOfMass) : Vec3::Zero();
+    std::vector<double> sums = {e.gravitational, e.kinetic, e.rotational, e.mass, moment.x(), moment.y(), moment.z()};
+    sumOverRanks(sums);
+    e.gravitational = sums[0], e.kinetic = sums[1], e.rotational = sums[2], e.mass = sums[3];
+    e.centreOfMass = e.mass > 0 ? Vec3(Vec3(sums[4], sums[5], sums[6]) / e.mass) : Vec3::Constant(NAN);
+    return e;  // elastic: summed over ranks when the contacts were recorded
+}
+
+int Simulation::rank() const { return split_ ? split_->rank() : worldCommunicator().rank(); }
+int Simulation::ranks() const { return split_ ? split_->ranks() : worldCommunicator().size(); }
+bool Simulation::onRanks() const { return split_ && split_->isParallel(); }
+
+double Simulation::sumOverRanks(double x) const { return onRanks() ? split_->communicator().sum(x) : x; }
+void Simulation::sumOverRanks(std::vector<double>& values) const {
+    if (onRanks())
+        split_->communicator().allReduce(values.data(), static_cast<int>(values.size()), Communicator::Reduction::sum);
+}
+
+std::size_t Simulation::mobileParticleCount() const {
+    const ParticleStore& p = state_.particles;
+    double mobile = 0;
+    for (std::size_t i = 0; i < p.owned(); ++i) mobile += !p.fixed[i];
+    return static_cast<std::size_t>(sumOverRanks(mobile));
 }
 
 // --- the run ---
@@ -291,7 +315,11 @@ int Simulation::solve(int argc, char** argv) {
         solveOrThrow(flags);
         return 0;
     } catch (const Error& e) {
-        std::cerr << (argc > 0 ? argv[0] : "talus") << ": error: " << e.what() << std::endl;
+        const auto* collective = dynamic_cast<const CollectiveError*>(&e);
+        if (!collective || !collective->silent())
+            std::cerr << (argc > 0 ? argv[0] : "talus") << ": error: " << e.what() << std::endl;
+        // An error that only this rank saw would leave the others waiting for it: end them all.
+        if (!collective && ranks() > 1) worldCommunicator().abort(1);
         return 1;
     }
 }
@@ -316,9 +344,10 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const double dt = state_.settings.timeStep;
     const double remaining = state_.settings.endTime - state_.time;
     const auto steps = remaining > 0 ? static_cast<std::uint64_t>(std::llround(remaining / dt)) : 0;
-    std::size_t mobile = 0;
-    for (auto f : state_.particles.fixed) mobile += !f;
-    Progress progress(std::cout, state_.settings.progressInterval);
+    std::size_t mobile = mobileParticleCount();
+    std::ostringstream quiet;  // ranks other than 0 print nothing
+    std::ostream& out = rank() == 0 ? std::cout : quiet;
+    Progress progress(out, state_.settings.progressInterval);
     progress.start(name(), state_.time, state_.settings.endTime, steps, mobile);
     const std::uint64_t every = saveEvery();
     std::size_t counted = state_.particles.size();
@@ -329,11 +358,11 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrate(saving);
         actionsAfterTimeStep();
         if (saving) writeOutput();
-        // Boundaries may add and delete particles: count again when the number changed.
-        if (state_.particles.size() != counted) {
+        // Boundaries may add and delete particles: count again when the number changed (they
+        // do not run on more than one rank).
+        if (state_.particles.size() != counted && !onRanks()) {
             counted = state_.particles.size();
-            mobile = 0;
-            for (auto f : state_.particles.fixed) mobile += !f;
+            mobile = mobileParticleCount();
         }
         progress.update(state_.time, k, mobile);
     }
@@ -342,7 +371,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         // Rebuilds cost a full neighbour search; boundaries that add, delete or move particles
         // each force one.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
-        std::cout << name() << ": neighbour list built " << builds << " times, every "
+        out << name() << ": neighbour list built " << builds << " times, every "
                   << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0)
                   << " steps on average" << std::endl;
     }
@@ -371,6 +400,7 @@ void Simulation::initialise(bool restarted) {
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
+    split_ = std::make_unique<DomainSplit>(worldCommunicator());
     grid_ = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
         double rmin = INFINITY;
@@ -378,23 +408,18 @@ void Simulation::initialise(bool restarted) {
         c.skin = std::isfinite(rmin) ? 0.2 * rmin : 0;
     }
     state_.pairList.skin = c.skin;
+    largestRadius_ = 0;
+    for (double r : state_.particles.radius) largestRadius_ = std::max(largestRadius_, r);
     files_.reset();
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
-    if (anyFile) files_ = std::make_unique<OutputFiles>(state_, restarted);
+    if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
+    if (onRanks()) splitScene(restarted);
     if (restarted) return;
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
     computeForces(&records_, /*checkOverlaps*/ false);
-    if (summary_.maxOverlapFraction > c.maxInitialOverlapFraction) {
-        std::ostringstream m;
-        m << "initial conditions: particle id " << summary_.worstA << " and "
-          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB << " overlap by "
-          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit "
-          << 100 * c.maxInitialOverlapFraction
-          << "%, settings().maxInitialOverlapFraction); place them further apart or make them smaller";
-        throw Error(m.str());
-    }
+    checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
     writeOutput();
 }
 
@@ -459,11 +484,17 @@ void Simulation::checkTimeStep() const {
                     which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller");
 }
 
-void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOverlaps) {
+void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkLimit) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
-    const bool rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
-    if (rebuild && state_.settings.reorderParticles) reorderParticles();
+    std::vector<CarriedHistory> carried;
+    bool rebuild;
+    if (onRanks()) {
+        rebuild = updateNeighbourhoodOnRanks(carried);
+    } else {
+        rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
+        if (rebuild && state_.settings.reorderParticles) reorderParticles();
+    }
     // The forces of the last step become previousForce_ by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity.
     previousForce_.swap(p.force);
@@ -472,7 +503,10 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
         p.torque[i].setZero();
     }
-    if (rebuild) list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
+    if (rebuild && onRanks())
+        list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
+    else if (rebuild)
+        list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     summary_ = ContactSummary{};
     if (records) records->clear();
     std::visit(
@@ -483,30 +517,53 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkOv
         },
         laws_);
     if (records) {
+        // A pair across ranks is computed on both: its record is kept where its first particle
+        // is owned (PairList::rebuild puts the smaller id first).
+        if (p.ghostCount > 0) std::erase_if(*records, [&p](const ContactRecord& r) { return r.i >= p.owned(); });
         elasticEnergy_ = 0;
         for (const ContactRecord& r : *records) elasticEnergy_ += r.elasticEnergy;
+        if (onRanks()) elasticEnergy_ = sumOverRanks(elasticEnergy_);
     }
-    if (checkOverlaps && summary_.maxOverlapFraction > state_.settings.maxOverlapFraction) {
+    if (checkLimit) checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false);
+}
+
+// Overlaps beyond the limit stop the run with the worst pair named: at the start (initial) they
+// are bad input, during the run a blow-up.
+void Simulation::checkOverlaps(double limit, bool initial) {
+    std::string diagnosis;
+    if (summary_.maxOverlapFraction > limit) {
         std::ostringstream m;
         auto at = [this](std::uint64_t id) {
             std::ostringstream where;
-            where << " at (" << state_.particles.position[slotOf(id)].transpose() << ")";
+            where << " at (" << state_.particles.position[slotOf(id, /*ghosts*/ true)].transpose() << ")";
             return where.str();
         };
-        m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << at(summary_.worstA) << " and "
-          << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB
-          << (summary_.worstIsWall ? std::string() : at(summary_.worstB)) << " overlap by "
-          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit "
-          << 100 * state_.settings.maxOverlapFraction
-          << "%); the contact is too soft for the impact speed, or the time step too large";
-        throw Error(m.str());
+        if (initial)
+            m << "initial conditions: particle id " << summary_.worstA;
+        else
+            m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << at(summary_.worstA);
+        m << " and " << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB
+          << (summary_.worstIsWall || initial ? std::string() : at(summary_.worstB)) << " overlap by "
+          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit " << 100 * limit;
+        if (initial)
+            m << "%, settings().maxInitialOverlapFraction); place them further apart or make them smaller";
+        else
+            m << "%); the contact is too soft for the impact speed, or the time step too large";
+        diagnosis = m.str();
     }
+    if (onRanks())
+        agreeOnOverlaps(diagnosis);
+    else if (!diagnosis.empty())
+        throw Error(diagnosis);
 }
 
-std::size_t Simulation::slotOf(std::uint64_t id) const {
+std::size_t Simulation::slotOf(std::uint64_t id) const { return slotOf(id, false); }
+
+std::size_t Simulation::slotOf(std::uint64_t id, bool ghosts) const {
     const std::vector<std::uint64_t>& ids = state_.particles.id;
-    const auto it = std::find(ids.begin(), ids.end(), id);
-    require(it != ids.end(), "no particle has id " + std::to_string(id));
+    const auto end = ids.begin() + static_cast<std::ptrdiff_t>(ghosts ? ids.size() : state_.particles.owned());
+    const auto it = std::find(ids.begin(), end, id);
+    require(it != end, "no particle has id " + std::to_string(id) + (onRanks() ? " on rank " + std::to_string(rank()) : ""));
     return static_cast<std::size_t>(it - ids.begin());
 }
 
@@ -517,7 +574,9 @@ void Simulation::reorderParticles() {
     double largest = 0;
     for (double r : p.radius) largest = std::max(largest, r);
     if (p.size() < 2 || largest <= 0) return;
-    const std::vector<std::size_t> order = spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest);
+    // On ranks the order must not depend on the order particles arrived in (exact restarts).
+    const std::vector<std::size_t> order =
+        spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);
     bool unchanged = true;
     for (std::size_t k = 0; k < order.size() && unchanged; ++k) unchanged = order[k] == k;
     if (unchanged) return;
@@ -531,7 +590,7 @@ void Simulation::moveWithPrescribedMotion() {
     std::vector<Mat3> rotation;
     for (const PrescribedMotion& m : state_.motions) rotation.push_back(m.stepRotation(dt));
     ParticleStore& p = state_.particles;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.motion[i] < 0) continue;
         const PrescribedMotion& m = state_.motions[p.motion[i]];
         p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
@@ -542,11 +601,11 @@ void Simulation::moveWithPrescribedMotion() {
         w.normal = (rotation[w.motion] * w.normal).normalized();
     }
     if (p.hasShapes())
-        for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t i = 0; i < p.owned(); ++i)
             if (p.motion[i] >= 0 && p.shape[i] >= 0)
                 p.orientation[i] = Quat(rotation[p.motion[i]] * p.orientation[i].toRotationMatrix()).normalized();
     for (PrescribedMotion& m : state_.motions) m.advanceCentre(dt);
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.motion[i] < 0) continue;
         const PrescribedMotion& m = state_.motions[p.motion[i]];
         p.velocity[i] = m.pointVelocity(p.position[i]);
@@ -559,7 +618,8 @@ void Simulation::integrate(bool recordContacts) {
     ParticleStore& p = state_.particles;
     const double dt = state_.settings.timeStep;
     const double half = 0.5 * dt;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::size_t owned = p.owned();  // ghosts are their owners' business
+    for (std::size_t i = 0; i < owned; ++i) {
         if (p.fixed[i]) continue;
         p.velocity[i] += half * p.invMass[i] * p.force[i];
         p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
@@ -568,12 +628,12 @@ void Simulation::integrate(bool recordContacts) {
     if (p.hasShapes()) turnShapedParticles(half, dt);
     moveWithPrescribedMotion();
     if (state_.domain.anyPeriodic())
-        for (Vec3& x : p.position) state_.domain.wrap(x);
+        for (std::size_t i = 0; i < owned; ++i) state_.domain.wrap(p.position[i]);
     state_.time += dt;
     ++state_.step;
     for (Boundary* b : boundaries_) b->afterDrift(*this);
     computeForces(recordContacts ? &records_ : nullptr);
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i]) continue;
         p.velocity[i] += half * p.invMass[i] * p.force[i];
         p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
@@ -586,7 +646,7 @@ void Simulation::integrate(bool recordContacts) {
 // orientation over the step; the angular velocity the contacts see follows from both.
 void Simulation::turnShapedParticles(double kick, double drift) {
     ParticleStore& p = state_.particles;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || p.shape[i] < 0) continue;
         kickAngularMomentum(p.angularMomentum[i], p.torque[i], kick);
         if (drift > 0) driftOrientation(p.orientation[i], p.angularMomentum[i], p.principalInertia[i], drift);
@@ -595,6 +655,7 @@ void Simulation::turnShapedParticles(double kick, double drift) {
 }
 
 void Simulation::writeOutput() {
+    if (onRanks()) return writeGatheredOutput();
     if (!files_) return;
     files_->writeFrame(state_, records_, elasticEnergy_);
     saveKeptValues();

@@ -23,6 +23,7 @@
 namespace talus {
 
 class CommandLine;
+class DomainSplit;
 class OutputFiles;
 
 class Simulation {
@@ -102,11 +103,25 @@ public:
                                 int motion = -1);
     std::size_t addMotion(const PrescribedMotion& motion);
 
+    // Under MPI (Parallel/DomainSplit.h, Documentation/Parallel.md) the store holds this rank's
+    // particles (slots below particles().owned()) and then ghosts: loop to owned() and sum over
+    // ranks (sumOverRanks) for anything about the whole scene. Without MPI owned() == size().
     ParticleStore& particles() { return state_.particles; }
     const ParticleStore& particles() const { return state_.particles; }
+    // The ranks of the run (1 without mpirun) and this one; rank 0 writes the files.
+    int rank() const;
+    int ranks() const;
+    // Sums of numbers over the ranks (every rank calls it, with its own values, at the same point).
+    double sumOverRanks(double x) const;
+    void sumOverRanks(std::vector<double>& values) const;
+    // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
+    // done at the start and after every save anyway.
+    void requestRebalance();
+    // Mobile (not fixed) particles in the whole scene.
+    std::size_t mobileParticleCount() const;
     // The current slot of the particle with global id `id` (ids count from 0 in the order of
     // addParticle/addFixedParticle). A linear search: for drivers and tests, not inner loops.
-    std::size_t slotOf(std::uint64_t id) const;
+    std::size_t slotOf(std::uint64_t id) const;  // of an owned particle
     std::vector<Wall>& walls() { return state_.walls; }
     std::vector<PrescribedMotion>& motions() { return state_.motions; }
     std::mt19937_64& random() { return state_.random; }
@@ -148,7 +163,9 @@ protected:
 private:
     void initialise(bool restarted);
     void checkTimeStep() const;
-    void computeForces(std::vector<ContactRecord>* records, bool checkOverlaps = true);
+    void computeForces(std::vector<ContactRecord>* records, bool checkLimit = true);
+    void checkOverlaps(double limit, bool initial);
+    std::size_t slotOf(std::uint64_t id, bool ghosts) const;
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
     void turnShapedParticles(double kick, double drift);
@@ -156,6 +173,13 @@ private:
     std::size_t fixParticle(std::size_t slot, int motion);
     void reorderParticles();
     std::uint64_t saveEvery() const;
+
+    // On more than one rank (Parallel/SimulationOnRanks.cc).
+    bool onRanks() const;
+    void splitScene(bool restarted);
+    bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
+    void agreeOnOverlaps(const std::string& diagnosis);
+    void writeGatheredOutput();
 
     using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;
 
@@ -178,6 +202,10 @@ private:
     void restoreKeptValues(const std::string& restartFile);
     std::vector<Boundary*> boundaries_;
     std::unique_ptr<OutputFiles> files_;
+    std::unique_ptr<DomainSplit> split_;
+    std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
+    double largestRadius_ = 0;                      // over all ranks, for the ghost width
+    bool rebalancePending_ = false;
     RunStatistics lastRun_;
     std::string restartFile_;
 };

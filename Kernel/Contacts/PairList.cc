@@ -11,7 +11,8 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
     double maxDisplacement2 = 0, maxSpeed2 = 0;
     const bool compare = valid && referencePosition.size() == particles.size();
     const PeriodicImage image(domain);
-    for (std::size_t i = 0; i < particles.size(); ++i) {
+    // Ghosts are their owners' business (Parallel/DomainSplit.h).
+    for (std::size_t i = 0; i < particles.owned(); ++i) {
         const Vec3& x = particles.position[i];
         const double speed2 = particles.velocity[i].squaredNorm();
         // One comparison catches NaN and infinity in any component of x or v (the sum is then not
@@ -33,14 +34,6 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
 
 namespace {
 
-// History of one pair, keyed by the global ids (smaller first); the spring is stored as seen
-// from the smaller id.
-struct CarriedHistory {
-    std::uint64_t a, b;
-    ContactHistory history;
-    bool operator<(const CarriedHistory& o) const { return a < o.a || (a == o.a && b < o.b); }
-};
-
 // The same history seen from the other particle: the spring turns round, an approach does not.
 // A superquadric warm start is kept relative to particle i and does not turn round: the pair
 // starts its next solve cold (from the bounding spheres), which costs iterations, not accuracy.
@@ -57,18 +50,15 @@ bool worthCarrying(const ContactHistory& h) {
 
 }  // namespace
 
-void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
-                       HGrid& grid, double dt) {
-    // 1. Remember the history of touching pairs by global ids (a wall w is id ~w, an id that no
-    //    particle can have).
+std::vector<CarriedHistory> PairList::carriedHistories(const ParticleStore& particles, bool firstOwned) const {
     std::vector<CarriedHistory> carried;
-    const std::uint64_t wallKey = ~std::uint64_t{0};
+    const std::size_t firstGhost = firstOwned ? particles.owned() : particles.size();
     // Direct and one-way pairs share the keys: a pair keeps its spring when one of its particles
     // passes the one-way box's face and the pair changes list.
     auto remember = [&](const std::vector<ParticlePair>& list, const ContactHistories& histories) {
         for (std::size_t k = 0; k < list.size(); ++k) {
             const ContactHistory h = histories.get(k);
-            if (!worthCarrying(h)) continue;
+            if (!worthCarrying(h) || list[k].i >= firstGhost) continue;
             std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
             carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
         }
@@ -77,8 +67,20 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     remember(oneWayPairs, oneWayHistory);
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
         if (worthCarrying(wallHistory.get(k)))
-            carried.push_back({particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall, wallHistory.get(k)});
+            carried.push_back({particles.id[wallPairs[k].particle], CarriedHistory::wallKey(wallPairs[k].wall),
+                               wallHistory.get(k)});
     std::sort(carried.begin(), carried.end());
+    return carried;
+}
+
+void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
+                       HGrid& grid, double dt) {
+    rebuild(particles, domain, walls, grid, dt, carriedHistories(particles));
+}
+
+void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
+                       HGrid& grid, double dt, std::vector<CarriedHistory> carried) {
+    // 1. The history of touching pairs by global ids.
     auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedHistory* {
         auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{a, b, {}});
         return it != carried.end() && it->a == a && it->b == b ? &*it : nullptr;
@@ -88,6 +90,13 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     pairs.clear();
     reach = skin + 2 * maxSpeed * dt;
     grid.findPairs(particles, domain, reach, pairs);
+    const std::size_t owned = particles.owned();
+    if (particles.ghostCount > 0) {
+        std::erase_if(pairs, [owned](const ParticlePair& pair) { return pair.i >= owned && pair.j >= owned; });
+        for (ParticlePair& pair : pairs)
+            if ((pair.i >= owned || pair.j >= owned) && particles.id[pair.i] > particles.id[pair.j])
+                std::swap(pair.i, pair.j);
+    }
     auto restore = [&](const std::vector<ParticlePair>& list, ContactHistories& histories) {
         histories.assign(list.size());
         for (std::size_t k = 0; k < list.size(); ++k) {
@@ -101,7 +110,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     restore(oneWayPairs, oneWayHistory);
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
-        for (std::uint32_t i = 0; i < particles.size(); ++i) {
+        for (std::uint32_t i = 0; i < owned; ++i) {
             if (particles.fixed[i]) continue;
             if (walls[w].motion < 0 && walls[w].signedDistance(particles.position[i]) >= particles.radius[i] + reach)
                 continue;
@@ -109,7 +118,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
         }
     wallHistory.assign(wallPairs.size());
     for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (const CarriedHistory* c = find(particles.id[wallPairs[k].particle], wallKey - wallPairs[k].wall))
+        if (const CarriedHistory* c = find(particles.id[wallPairs[k].particle], CarriedHistory::wallKey(wallPairs[k].wall)))
             wallHistory.set(k, c->history);
 
     referencePosition = particles.position;
@@ -152,6 +161,17 @@ void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& dom
             const double limit = particles.radius[i] + particles.radius[j] + reach;
             if (d.squaredNorm() < limit * limit) oneWayPairs.push_back({i, j});
         }
+}
+
+void PairList::clear() {
+    pairs.clear();
+    history.assign(0);
+    wallPairs.clear();
+    wallHistory.assign(0);
+    oneWayPairs.clear();
+    oneWayHistory.assign(0);
+    referencePosition.clear();
+    valid = false;
 }
 
 void PairList::followPermutation(const std::vector<std::size_t>& order) {

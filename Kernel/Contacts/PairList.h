@@ -27,6 +27,16 @@ struct WallCandidate {
     bool operator==(const WallCandidate&) const = default;
 };
 
+// The history of one pair, keyed by the global ids (smaller first; a wall w is b = ~w, an id no
+// particle has); the spring is stored as seen from the smaller id. What a rebuild carries over,
+// and what an MPI split sends along with a particle that changes rank.
+struct CarriedHistory {
+    std::uint64_t a, b;
+    ContactHistory history;
+    bool operator<(const CarriedHistory& o) const { return a < o.a || (a == o.a && b < o.b); }
+    static std::uint64_t wallKey(std::uint32_t wall) { return ~std::uint64_t{0} - wall; }
+};
+
 class PairList {
 public:
     std::vector<ParticlePair> pairs;
@@ -57,8 +67,22 @@ public:
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.
+    // With ghosts (ParticleStore::ghostCount) only pairs with an owned particle are listed, and a
+    // pair with a ghost has the smaller id first, so that the two ranks that list it compute
+    // its force with the same arithmetic; ghosts have no wall contacts.
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt);
+    // The same with the histories given (carriedHistories before the particles changed slots,
+    // sorted, as an MPI split hands them over).
+    void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
+                 HGrid& grid, double dt, std::vector<CarriedHistory> carried);
+
+    // The histories worth keeping (touching, approaching, or with a spring or warm start), by ids,
+    // sorted. firstOwned: only of the pairs whose first particle is owned (not a ghost), so that
+    // ranks together give each pair once.
+    std::vector<CarriedHistory> carriedHistories(const ParticleStore& particles, bool firstOwned = false) const;
+    // Forgets every listed pair and history (the particles are about to change slots).
+    void clear();
 
     // The particles were permuted (new slot k holds old slot order[k], ParticleStore::permute):
     // the listed pairs and wall candidates follow their particles, so that a rebuild still finds

@@ -2,9 +2,12 @@
 
 #include <utility>
 
+#include "Error.h"
+
 namespace talus {
 
 void ParticleStore::removeBySwap(std::size_t i) {
+    require(ghostCount == 0, "removing a particle while the store holds ghosts (an MPI domain split)");
     forEachArray([i](auto& array) {
         if (i + 1 != array.size()) array[i] = std::move(array.back());
         array.pop_back();
@@ -12,12 +15,19 @@ void ParticleStore::removeBySwap(std::size_t i) {
 }
 
 void ParticleStore::permute(const std::vector<std::size_t>& order) {
+    require(ghostCount == 0, "reordering particles while the store holds ghosts (an MPI domain split)");
     forEachArray([&order](auto& array) {
         std::remove_reference_t<decltype(array)> sorted;
         sorted.reserve(order.size());
         for (std::size_t k : order) sorted.push_back(array[k]);
         array.swap(sorted);
     });
+}
+
+void ParticleStore::dropGhosts() {
+    const std::size_t n = owned();
+    forEachArray([n](auto& array) { array.resize(n); });
+    ghostCount = 0;
 }
 
 void ParticleStore::enableShapes() {

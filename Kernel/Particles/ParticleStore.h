@@ -39,7 +39,13 @@ struct ParticleStore {
     std::vector<Vec3> principalInertia;  // about the body axes (0 for spheres and fixed particles)
     std::vector<std::int32_t> shape;
 
-    std::size_t size() const { return position.size(); }
+    // Under an MPI domain split (Parallel/DomainSplit.h) the last ghostCount slots hold copies of
+    // particles that other ranks own, near this rank's part of the domain: the force loop sees
+    // them as partners, nothing integrates or writes them. Without a split ghostCount is 0.
+    std::size_t ghostCount = 0;
+
+    std::size_t size() const { return position.size(); }  // owned particles and ghosts
+    std::size_t owned() const { return position.size() - ghostCount; }
     bool empty() const { return position.empty(); }
     bool hasShapes() const { return shapesEnabled_; }
     bool isShaped(std::size_t i) const { return shapesEnabled_ && shape[i] >= 0; }
@@ -50,15 +56,15 @@ struct ParticleStore {
     // append, removal, reordering and restart cannot forget a field. The arrays of shapes only
     // when the scene has them.
     template <class F>
-    void forEachArray(F&& f) {
-        const bool shapes = hasShapes();
-        f(position); f(velocity); f(angularVelocity); f(force); f(torque);
-        f(radius); f(mass); f(invMass); f(invInertia);
-        f(species); f(id); f(fixed); f(motion);
-        if (shapes) { f(orientation); f(angularMomentum); f(principalInertia); f(shape); }
-    }
+    void forEachArray(F&& f) { forEachArrayOf(*this, f); }
+    template <class F>
+    void forEachArray(F&& f) const { forEachArrayOf(*this, f); }
+
+    // Drops the ghosts (the last ghostCount slots).
+    void dropGhosts();
 
     // Removes slot i by moving the last particle into it (O(1); changes that particle's slot).
+    // Not while there are ghosts (they stay last).
     void removeBySwap(std::size_t i);
 
     // Reorders so that new slot k holds old slot order[k]; order must be a permutation.
@@ -67,6 +73,14 @@ struct ParticleStore {
     void reserve(std::size_t n);
 
 private:
+    template <class Store, class F>
+    static void forEachArrayOf(Store& s, F& f) {
+        f(s.position); f(s.velocity); f(s.angularVelocity); f(s.force); f(s.torque);
+        f(s.radius); f(s.mass); f(s.invMass); f(s.invInertia);
+        f(s.species); f(s.id); f(s.fixed); f(s.motion);
+        if (s.hasShapes()) { f(s.orientation); f(s.angularMomentum); f(s.principalInertia); f(s.shape); }
+    }
+
     bool shapesEnabled_ = false;
 };
 

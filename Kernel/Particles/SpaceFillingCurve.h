@@ -21,7 +21,10 @@ std::uint64_t mortonKey(std::uint32_t x, std::uint32_t y, std::uint32_t z);
 // The permutation that sorts the positions along the Morton curve of cells of side cellSize
 // with a corner at lo: new slot k holds old slot order[k]. Positions below lo or more than
 // 2^21 cells beyond it are clamped to the edge cells. Particles in one cell keep their order, so
-// the result is deterministic and ordering twice changes nothing.
-std::vector<std::size_t> spaceFillingCurveOrder(const std::vector<Vec3>& positions, const Vec3& lo, double cellSize);
+// the result is deterministic and ordering twice changes nothing. With ids, particles in one cell
+// come in the order of their ids instead: the result then depends only on positions and ids,
+// not on the order the particles had (what an MPI split needs, Parallel/DomainSplit.h).
+std::vector<std::size_t> spaceFillingCurveOrder(const std::vector<Vec3>& positions, const Vec3& lo, double cellSize,
+                                                const std::vector<std::uint64_t>* ids = nullptr);
 
 }  // namespace talus

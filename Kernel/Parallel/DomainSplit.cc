@@ -1,0 +1,290 @@
+#include "Parallel/DomainSplit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "Contacts/ContactForces.h"
+#include "Error.h"
+
+namespace talus {
+
+namespace {
+
+void packParticle(const ParticleStore& p, std::size_t i, Packer& out) {
+    p.forEachArray([&](const auto& array) { out.put(array[i]); });
+}
+
+void unpackParticle(ParticleStore& p, Unpacker& in) {
+    p.forEachArray([&](auto& array) {
+        using T = typename std::decay_t<decltype(array)>::value_type;
+        array.push_back(in.template get<T>());
+    });
+}
+
+// An empty store of the same kind (with the arrays of shapes if p has them).
+ParticleStore emptyLike(const ParticleStore& p) {
+    ParticleStore s;
+    if (p.hasShapes()) s.enableShapes();
+    return s;
+}
+
+// Keeps the slots for which keep(i) is true, in their order.
+template <class Keep>
+void keepSlots(ParticleStore& p, Keep keep) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (keep(i)) kept.push_back(i);
+    p.forEachArray([&](auto& array) {
+        for (std::size_t k = 0; k < kept.size(); ++k) array[k] = array[kept[k]];
+        array.resize(kept.size());
+    });
+}
+
+}  // namespace
+
+// A histogram of x over the particles' extent (4096 bins; counts summed over ranks), then each
+// interior boundary where the cumulative count reaches its share, interpolated in its bin.
+// Integer counts make the sum exact, so every rank gets the same boundaries.
+void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool replicated) {
+    const int n = ranks();
+    bounds_.clear();
+    if (n == 1) return;
+    double range[2] = {-INFINITY, -INFINITY};  // -(smallest x), largest x
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        range[0] = std::max(range[0], -p.position[i].x());
+        range[1] = std::max(range[1], p.position[i].x());
+    }
+    if (!replicated) communicator_.allReduce(range, 2, Communicator::Reduction::max);
+    double lo = -range[0], hi = range[1];
+    if (domain.periodic[0]) lo = domain.lo.x(), hi = domain.hi.x();
+    if (!(hi > lo)) {  // no particles, or all at one x: equal lengths of the domain
+        lo = domain.lo.x(), hi = domain.hi.x();
+        for (int r = 1; r < n; ++r) bounds_.push_back(lo + (hi - lo) * r / n);
+        return;
+    }
+    constexpr int bins = 4096;
+    std::vector<double> count(bins, 0.0);
+    const double width = (hi - lo) / bins;
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        const int b = std::clamp(static_cast<int>((p.position[i].x() - lo) / width), 0, bins - 1);
+        count[b] += 1;
+    }
+    if (!replicated) communicator_.allReduce(count.data(), bins, Communicator::Reduction::sum);
+    double total = 0;
+    for (double c : count) total += c;
+    double below = 0;
+    int b = 0;
+    for (int r = 1; r < n; ++r) {
+        const double target = total * r / n;
+        while (b < bins - 1 && below + count[b] < target) below += count[b++];
+        const double fraction = count[b] > 0 ? std::clamp((target - below) / count[b], 0.0, 1.0) : 0.0;
+        bounds_.push_back(lo + (b + fraction) * width);
+    }
+}
+
+int DomainSplit::ownerOf(double x) const {
+    return static_cast<int>(std::upper_bound(bounds_.begin(), bounds_.end(), x) - bounds_.begin());
+}
+
+void DomainSplit::keepOwnShare(ParticleStore& p) const {
+    require(p.ghostCount == 0, "keepOwnShare: the store holds ghosts");
+    keepSlots(p, [&](std::size_t i) { return ownerOf(p.position[i].x()) == rank(); });
+}
+
+void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried) {
+    p.dropGhosts();
+    const int me = rank();
+    std::unordered_map<std::uint64_t, int> leaving;  // id -> new owner
+    std::vector<std::size_t> count(ranks(), 0);
+    std::vector<Bytes> particles(ranks()), histories(ranks());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const int owner = ownerOf(p.position[i].x());
+        if (owner == me) continue;
+        leaving.emplace(p.id[i], owner);
+        Packer to(particles[owner]);
+        packParticle(p, i, to);
+        ++count[owner];
+    }
+    // The histories that involve a leaving particle go with it (to both owners if both leave).
+    std::vector<std::size_t> historyCount(ranks(), 0);
+    auto sendHistory = [&](const CarriedHistory& c, int to) {
+        Packer(histories[to]).put(c);
+        ++historyCount[to];
+    };
+    if (!leaving.empty())
+        for (const CarriedHistory& c : carried) {
+            const auto a = leaving.find(c.a), b = leaving.find(c.b);
+            const int toA = a != leaving.end() ? a->second : -1, toB = b != leaving.end() ? b->second : -1;
+            if (toA >= 0) sendHistory(c, toA);
+            if (toB >= 0 && toB != toA) sendHistory(c, toB);
+        }
+    std::vector<Bytes> outgoing(ranks());
+    for (int r = 0; r < ranks(); ++r) {
+        if (r == me) continue;
+        Packer out(outgoing[r]);
+        out.put(static_cast<std::uint64_t>(count[r]));
+        outgoing[r].insert(outgoing[r].end(), particles[r].begin(), particles[r].end());
+        out.put(static_cast<std::uint64_t>(historyCount[r]));
+        outgoing[r].insert(outgoing[r].end(), histories[r].begin(), histories[r].end());
+    }
+    if (!leaving.empty()) keepSlots(p, [&](std::size_t i) { return !leaving.count(p.id[i]); });
+    const std::vector<Bytes> incoming = communicator_.exchange(outgoing);
+    for (int r = 0; r < ranks(); ++r) {
+        if (r == me || incoming[r].empty()) continue;
+        Unpacker in(incoming[r]);
+        const auto n = in.get<std::uint64_t>();
+        for (std::uint64_t k = 0; k < n; ++k) unpackParticle(p, in);
+        const auto h = in.get<std::uint64_t>();
+        for (std::uint64_t k = 0; k < h; ++k) carried.push_back(in.get<CarriedHistory>());
+    }
+    // A pair across ranks had its history on both: the copies are equal (same arithmetic).
+    std::stable_sort(carried.begin(), carried.end());
+    carried.erase(std::unique(carried.begin(), carried.end(),
+                              [](const CarriedHistory& x, const CarriedHistory& y) { return x.a == y.a && x.b == y.b; }),
+                  carried.end());
+}
+
+void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double width) {
+    require(p.ghostCount == 0, "makeGhosts: the store holds ghosts already");
+    const int me = rank(), n = ranks();
+    const bool periodic = domain.periodic[0];
+    const double L = domain.length(0), lo = domain.lo.x(), hi = domain.hi.x();
+    sendSlots_.assign(n, {});
+    std::vector<int> targets;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        const double x = p.position[i].x();
+        targets.clear();
+        // The ranks whose slabs meet [x - width, x + width], through the periodic images too.
+        for (int image = periodic ? -1 : 0; image <= (periodic ? 1 : 0); ++image) {
+            double from = x + image * L - width, to = x + image * L + width;
+            if (periodic) {
+                from = std::max(from, lo);
+                to = std::min(to, std::nextafter(hi, lo));
+                if (from > to) continue;
+            }
+            for (int r = ownerOf(from); r <= ownerOf(to); ++r)
+                if (r != me && std::find(targets.begin(), targets.end(), r) == targets.end()) targets.push_back(r);
+        }
+        for (int r : targets) sendSlots_[r].push_back(i);
+    }
+    std::vector<Bytes> outgoing(n);
+    for (int r = 0; r < n; ++r) {
+        Packer out(outgoing[r]);
+        for (std::uint32_t i : sendSlots_[r]) packParticle(p, i, out);
+    }
+    const std::vector<Bytes> incoming = communicator_.exchange(outgoing);
+    const std::size_t owned = p.size();
+    sendTo_.clear();
+    receiveFrom_.clear();
+    receiveCount_.clear();
+    std::vector<std::vector<std::uint32_t>> slots;
+    for (int r = 0; r < n; ++r) {
+        if (!sendSlots_[r].empty()) sendTo_.push_back(r), slots.push_back(std::move(sendSlots_[r]));
+        if (incoming[r].empty()) continue;
+        const std::size_t before = p.size();
+        Unpacker in(incoming[r]);
+        while (!in.atEnd()) unpackParticle(p, in);
+        receiveFrom_.push_back(r);
+        receiveCount_.push_back(p.size() - before);
+    }
+    sendSlots_ = std::move(slots);
+    p.ghostCount = p.size() - owned;
+}
+
+namespace {
+
+// What a ghost needs from its owner each step (the force loop's inputs that change).
+template <class F>
+void forEachMovingField(ParticleStore& p, F&& f) {
+    f(p.position); f(p.velocity); f(p.angularVelocity); f(p.force);
+    if (p.hasShapes()) f(p.orientation);
+}
+
+}  // namespace
+
+void DomainSplit::updateGhosts(ParticleStore& p) {
+    if (sendTo_.empty() && receiveFrom_.empty()) return;
+    std::size_t bytesPerParticle = 0;
+    forEachMovingField(p, [&](auto& array) { bytesPerParticle += sizeof(array[0]); });
+    outgoing_.resize(sendTo_.size());
+    for (std::size_t k = 0; k < sendTo_.size(); ++k) {
+        outgoing_[k].clear();
+        outgoing_[k].reserve(sendSlots_[k].size() * bytesPerParticle);
+        Packer out(outgoing_[k]);
+        for (std::uint32_t i : sendSlots_[k]) forEachMovingField(p, [&](auto& array) { out.put(array[i]); });
+    }
+    incoming_.resize(receiveFrom_.size());
+    for (std::size_t k = 0; k < receiveFrom_.size(); ++k) incoming_[k].resize(receiveCount_[k] * bytesPerParticle);
+    communicator_.exchangeWith(sendTo_, outgoing_, receiveFrom_, incoming_);
+    std::size_t slot = p.owned();
+    for (std::size_t k = 0; k < receiveFrom_.size(); ++k) {
+        Unpacker in(incoming_[k]);
+        for (std::size_t g = 0; g < receiveCount_[k]; ++g, ++slot)
+            forEachMovingField(p, [&](auto& array) {
+                using T = typename std::decay_t<decltype(array)>::value_type;
+                array[slot] = in.template get<T>();
+            });
+    }
+}
+
+std::size_t DomainSplit::ghostsSent() const {
+    std::size_t n = 0;
+    for (const auto& s : sendSlots_) n += s.size();
+    return n;
+}
+
+ParticleStore DomainSplit::gatherParticles(const ParticleStore& p) {
+    Bytes mine;
+    Packer out(mine);
+    for (std::size_t i = 0; i < p.owned(); ++i) packParticle(p, i, out);
+    const std::vector<Bytes> all = communicator_.gatherToRoot(mine);
+    ParticleStore gathered = emptyLike(p);
+    for (const Bytes& bytes : all) {
+        Unpacker in(bytes);
+        while (!in.atEnd()) unpackParticle(gathered, in);
+    }
+    return gathered;
+}
+
+std::vector<ContactRecord> DomainSplit::gatherRecords(const ParticleStore& p, const std::vector<ContactRecord>& records,
+                                                      const ParticleStore& gathered) {
+    Bytes mine;
+    Packer out(mine);
+    for (const ContactRecord& r : records) {
+        out.put(r);
+        out.put(p.id[r.i]);
+        out.put(r.j >= 0 ? static_cast<std::int64_t>(p.id[r.j]) : r.j);
+    }
+    const std::vector<Bytes> all = communicator_.gatherToRoot(mine);
+    std::vector<ContactRecord> result;
+    if (all.empty()) return result;
+    std::unordered_map<std::uint64_t, std::uint32_t> slotOf;
+    for (std::uint32_t i = 0; i < gathered.size(); ++i) slotOf.emplace(gathered.id[i], i);
+    for (const Bytes& bytes : all) {
+        Unpacker in(bytes);
+        while (!in.atEnd()) {
+            ContactRecord r = in.get<ContactRecord>();
+            r.i = slotOf.at(in.get<std::uint64_t>());
+            const auto j = in.get<std::int64_t>();
+            r.j = j >= 0 ? static_cast<std::int64_t>(slotOf.at(static_cast<std::uint64_t>(j))) : j;
+            result.push_back(r);
+        }
+    }
+    return result;
+}
+
+std::vector<CarriedHistory> DomainSplit::gatherHistories(const std::vector<CarriedHistory>& mine) {
+    Bytes bytes;
+    Packer out(bytes);
+    for (const CarriedHistory& c : mine) out.put(c);
+    std::vector<CarriedHistory> all;
+    for (const Bytes& b : communicator_.gatherToRoot(bytes)) {
+        Unpacker in(b);
+        while (!in.atEnd()) all.push_back(in.get<CarriedHistory>());
+    }
+    std::sort(all.begin(), all.end());
+    return all;
+}
+
+}  // namespace talus

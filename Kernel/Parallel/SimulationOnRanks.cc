@@ -1,0 +1,146 @@
+// The parts of talus::Simulation that run only on more than one rank (Parallel/DomainSplit.h,
+// Documentation/Parallel.md): splitting the scene, the neighbourhood update of each step, the
+// agreement of all ranks on errors, and output gathered on rank 0.
+#include <algorithm>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "IO/OutputFiles.h"
+#include "Parallel/DomainSplit.h"
+#include "Simulation.h"
+
+namespace talus {
+
+// Every rank set up (or read) the whole scene; each keeps the particles of its slab and the
+// contact histories that involve them. The first step builds the list (and rebalances).
+void Simulation::splitScene(bool restarted) {
+    require(boundaries_.empty(),
+            "this driver has boundaries (insertion, deletion or maser), which do not run on more than one rank yet; "
+            "run it without mpirun (Documentation/Parallel.md lists what runs on ranks)");
+    require(!state_.domain.oneWay.active, "an active maser does not run on more than one rank yet");
+    ParticleStore& p = state_.particles;
+    PairList& list = state_.pairList;
+    (void)restarted;
+    pendingHistories_ = list.carriedHistories(p);
+    for (Vec3& x : p.position) state_.domain.wrap(x);
+    split_->balance(p, state_.domain, /*replicated*/ true);
+    split_->keepOwnShare(p);
+    const std::unordered_set<std::uint64_t> mine(p.id.begin(), p.id.end());
+    std::erase_if(pendingHistories_, [&mine](const CarriedHistory& c) { return !mine.count(c.a) && !mine.count(c.b); });
+    list.clear();
+    rebalancePending_ = true;
+}
+
+void Simulation::requestRebalance() { rebalancePending_ = true; }
+
+// All ranks agree whether to rebuild (any rank's particle moved too far), on the largest speed,
+// and on stopping if a rank found a non-finite position. A rebuild drops the ghosts, rebalances
+// if asked, migrates particles with their histories, reorders, and makes the ghosts anew;
+// otherwise the ghosts are brought up to date.
+bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried) {
+    ParticleStore& p = state_.particles;
+    PairList& list = state_.pairList;
+    const double dt = state_.settings.timeStep;
+    std::string failure;
+    bool rebuild = false;
+    try {
+        rebuild = list.needsRebuild(p, state_.domain, state_.time, dt);
+    } catch (const Error& e) {
+        failure = e.what();
+    }
+    double agreed[3] = {rebuild ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0};
+    split_->communicator().allReduce(agreed, 3, Communicator::Reduction::max);
+    if (agreed[2] > 0)
+        throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
+                                              : failure,
+                              failure.empty());
+    list.maxSpeed = agreed[1];
+    if (agreed[0] == 0) {
+        split_->updateGhosts(p);
+        return false;
+    }
+    carried = list.carriedHistories(p);
+    carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
+    pendingHistories_.clear();
+    list.clear();
+    if (rebalancePending_) split_->balance(p, state_.domain, /*replicated*/ false);
+    rebalancePending_ = false;
+    split_->migrate(p, carried);
+    reorderParticles();
+    split_->makeGhosts(p, state_.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
+    return true;
+}
+
+void Simulation::agreeOnOverlaps(const std::string& diagnosis) {
+    double failed = diagnosis.empty() ? 0.0 : rank() + 1.0;
+    split_->communicator().allReduce(&failed, 1, Communicator::Reduction::max);
+    if (failed > 0)
+        throw CollectiveError(diagnosis.empty() ? "stopped: rank " + std::to_string(int(failed) - 1) +
+                                                      " found overlaps beyond the limit"
+                                                : diagnosis,
+                              diagnosis.empty());
+}
+
+namespace {
+
+// The gathered histories as the pair list of the gathered particles, marked invalid: a run
+// restarted from it (on any number of ranks) builds its list at the first step and finds the
+// histories by ids, as the running one does after every save.
+PairList listOfGathered(const std::vector<CarriedHistory>& histories, const ParticleStore& gathered,
+                        const PairList& running, std::size_t walls) {
+    PairList saved;
+    if (running.history.hasWarmStarts()) saved.enableWarmStarts();
+    saved.skin = running.skin;
+    saved.reach = running.reach;
+    saved.maxSpeed = running.maxSpeed;
+    saved.builds = running.builds;
+    std::unordered_map<std::uint64_t, std::uint32_t> slotOf;
+    for (std::uint32_t i = 0; i < gathered.size(); ++i) slotOf.emplace(gathered.id[i], i);
+    for (const CarriedHistory& c : histories) {
+        const std::uint32_t a = slotOf.at(c.a);
+        if (c.b > CarriedHistory::wallKey(static_cast<std::uint32_t>(walls))) {
+            saved.wallPairs.push_back({a, static_cast<std::uint32_t>(~std::uint64_t{0} - c.b)});
+            saved.wallHistory.push_back(c.history);
+        } else {
+            saved.pairs.push_back({a, slotOf.at(c.b)});
+            saved.history.push_back(c.history);
+        }
+    }
+    return saved;
+}
+
+}  // namespace
+
+// Rank 0 writes the frame and the restart file of the particles, contacts and histories of all
+// ranks, with the same writers as a serial run; then every rank marks its list for a rebuild at
+// the next step, which is what a run restarted from these files does first (exact restarts).
+void Simulation::writeGatheredOutput() {
+    ParticleStore& p = state_.particles;
+    ParticleStore gathered = split_->gatherParticles(p);
+    std::vector<ContactRecord> records = split_->gatherRecords(p, records_, gathered);
+    const std::vector<CarriedHistory> histories =
+        split_->gatherHistories(state_.pairList.carriedHistories(p, /*firstOwned*/ true));
+    saveKeptValues();
+    if (rank() == 0 && files_) {
+        PairList saved = listOfGathered(histories, gathered, state_.pairList, state_.walls.size());
+        std::swap(state_.particles, gathered);
+        std::swap(state_.pairList, saved);
+        auto swapBack = [&] {
+            std::swap(state_.particles, gathered);
+            std::swap(state_.pairList, saved);
+        };
+        try {
+            files_->writeFrame(state_, records, elasticEnergy_);
+            files_->writeRestart(state_);
+        } catch (...) {
+            swapBack();
+            throw;
+        }
+        swapBack();
+    }
+    state_.pairList.valid = false;
+    rebalancePending_ = true;
+}
+
+}  // namespace talus
