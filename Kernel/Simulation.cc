@@ -315,8 +315,10 @@ int Simulation::solve(int argc, char** argv) {
         solveOrThrow(flags);
         return 0;
     } catch (const Error& e) {
+        // Before the scene is split every rank does the same (and fails alike): rank 0 speaks.
         const auto* collective = dynamic_cast<const CollectiveError*>(&e);
-        if (!collective || !collective->silent())
+        const bool replicated = !onRanks() && rank() != 0;
+        if ((!collective || !collective->silent()) && !replicated)
             std::cerr << (argc > 0 ? argv[0] : "talus") << ": error: " << e.what() << std::endl;
         // An error that only this rank saw would leave the others waiting for it: end them all.
         if (!collective && ranks() > 1) worldCommunicator().abort(1);

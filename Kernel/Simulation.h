@@ -114,6 +114,12 @@ public:
     // Sums of numbers over the ranks (every rank calls it, with its own values, at the same point).
     double sumOverRanks(double x) const;
     void sumOverRanks(std::vector<double>& values) const;
+    // The domain split of the run (after solve has set it up; one rank without mpirun).
+    const DomainSplit* domainSplit() const { return split_.get(); }
+    // A driver whose hooks are rank-aware (they loop over owned() particles, sum over ranks and
+    // write files on rank 0 only) says so; any other refuses to start on more than one rank
+    // rather than measure only the particles of one rank.
+    void setRunsOnRanks(bool on) { runsOnRanks_ = on; }
     // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
     // done at the start and after every save anyway.
     void requestRebalance();
@@ -206,6 +212,7 @@ private:
     std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
     double largestRadius_ = 0;                      // over all ranks, for the ghost width
     bool rebalancePending_ = false;
+    bool runsOnRanks_ = false;
     RunStatistics lastRun_;
     std::string restartFile_;
 };

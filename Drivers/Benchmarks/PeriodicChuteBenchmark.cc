@@ -51,6 +51,7 @@ public:
         addFlag("perturbation", "add random velocities up to this speed to the flowing spheres", perturbation);
         addFlag("seed", "seed of the random velocities", seed);
         baselineMemory_ = memoryBytes("VmRSS");
+        setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
@@ -98,21 +99,25 @@ public:
                 }
     }
 
+    // Sums over the ranks under mpirun (the particles of this rank are the slots below owned()).
     void actionsAfterSolve() override {
         const ParticleStore& p = particles();
-        double sumVx = 0;
-        std::size_t flowing = 0;
-        for (std::size_t i = 0; i < p.size(); ++i)
+        std::vector<double> sums = {0, 0, memoryBytes("VmHWM") - baselineMemory_, double(p.owned()),
+                                    double(contactSummary().contacts), double(pairList().pairs.size())};
+        for (std::size_t i = 0; i < p.owned(); ++i)
             if (!p.fixed[i]) {
-                sumVx += p.velocity[i].x();
-                ++flowing;
+                sums[0] += p.velocity[i].x();
+                sums[1] += 1;
             }
+        sumOverRanks(sums);
         const RunStatistics& run = lastRun();
-        std::printf("benchmark: flowing %zu  steps %llu  wall %.3f s  %.4g particle-steps/s  "
-                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %zu  listed pairs %zu  rebuilds %llu\n",
-                    flowing, static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
-                    (memoryBytes("VmHWM") - baselineMemory_) / p.size(), sumVx / flowing, contactSummary().contacts,
-                    pairList().pairs.size(), static_cast<unsigned long long>(pairList().builds));
+        if (rank() != 0) return;
+        std::printf("benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
+                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f  rebuilds %llu  "
+                    "ranks %d\n",
+                    sums[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
+                    sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5],
+                    static_cast<unsigned long long>(pairList().builds), ranks());
     }
 
 private:

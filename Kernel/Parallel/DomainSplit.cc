@@ -102,6 +102,8 @@ void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried
         const int owner = ownerOf(p.position[i].x());
         if (owner == me) continue;
         leaving.emplace(p.id[i], owner);
+        ++migrated;
+        migratedFar += std::abs(owner - me) > 1;
         Packer to(particles[owner]);
         packParticle(p, i, to);
         ++count[owner];

@@ -70,6 +70,9 @@ public:
     std::vector<CarriedHistory> gatherHistories(const std::vector<CarriedHistory>& mine);
 
     std::size_t ghostsSent() const;
+    // Particles this rank sent to other ranks so far, and those of them that went to a rank more
+    // than one slab away (for three or more ranks along a periodic x: across the periodic face).
+    std::uint64_t migrated = 0, migratedFar = 0;
 
 private:
     Communicator& communicator_;

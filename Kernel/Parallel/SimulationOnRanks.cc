@@ -15,6 +15,8 @@ namespace talus {
 // Every rank set up (or read) the whole scene; each keeps the particles of its slab and the
 // contact histories that involve them. The first step builds the list (and rebalances).
 void Simulation::splitScene(bool restarted) {
+    require(runsOnRanks_, "driver '" + name() + "' has not been made rank-aware (setRunsOnRanks): its analysis "
+                          "would see the particles of one rank only; run it without mpirun (Documentation/Parallel.md)");
     require(boundaries_.empty(),
             "this driver has boundaries (insertion, deletion or maser), which do not run on more than one rank yet; "
             "run it without mpirun (Documentation/Parallel.md lists what runs on ranks)");

@@ -1,0 +1,37 @@
+#!/usr/bin/python3
+"""Compares the last frames of .data files (Documentation/FileFormats/data.md) particle by
+particle: prints the largest position and velocity differences from the first file and checks
+them against a tolerance. Usage: compareRuns.py TOLERANCE REFERENCE.data OTHER.data...
+(TOLERANCE 0: the frames must be equal to the last digit.)"""
+import sys
+
+
+def frames(path):
+    with open(path) as f:
+        lines = f.read().split("\n")
+    k, result = 0, []
+    while k < len(lines) and lines[k].strip():
+        n = int(lines[k].split()[0])
+        result.append([[float(x) for x in line.split()] for line in lines[k + 1:k + 1 + n]])
+        k += n + 1
+    if not result:
+        sys.exit(f"{path}: no frames")
+    return result
+
+
+tolerance = float(sys.argv[1])
+reference = frames(sys.argv[2])
+worst = 0.0
+for path in sys.argv[3:]:
+    other = frames(path)
+    if len(other) != len(reference) or len(other[-1]) != len(reference[-1]):
+        sys.exit(f"{path}: {len(other)} frames of {len(other[-1])} particles, "
+                 f"{sys.argv[2]} has {len(reference)} of {len(reference[-1])}")
+    dx = max(abs(a - b) for p, q in zip(reference[-1], other[-1]) for a, b in zip(p[0:3], q[0:3]))
+    dv = max(abs(a - b) for p, q in zip(reference[-1], other[-1]) for a, b in zip(p[3:6], q[3:6]))
+    print(f"{path}: largest difference from {sys.argv[2]}: position {dx:.3g}, velocity {dv:.3g}")
+    worst = max(worst, dx, dv)
+    if tolerance == 0 and other != reference:
+        sys.exit(f"{path}: differs from {sys.argv[2]}")
+if worst > tolerance:
+    sys.exit(f"largest difference {worst:.3g} is above the tolerance {tolerance:.3g}")
