@@ -172,7 +172,14 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     p.invMass.push_back(1.0 / mass);
     p.invInertia.push_back(1.0 / (0.4 * mass * radius * radius));
     p.species.push_back(static_cast<std::uint32_t>(species));
-    p.id.push_back(state_.nextId++);
+    // On ranks a new particle gets a provisional id, unique to this rank, until all ranks number
+    // their new particles together (renumberNewParticles, at the next list build or save).
+    if (onRanks()) {
+        if (p.ghostCount > 0) releaseGhosts();
+        p.id.push_back(provisionalIdBase + (std::uint64_t(rank()) << 40) + provisionalIds_++);
+    } else {
+        p.id.push_back(state_.nextId++);
+    }
     p.fixed.push_back(0);
     p.motion.push_back(-1);
     if (p.hasShapes()) {
@@ -246,7 +253,8 @@ std::size_t Simulation::fixParticle(std::size_t i, int motion) {
 }
 
 void Simulation::removeParticle(std::size_t slot) {
-    require(slot < state_.particles.size(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
+    require(slot < state_.particles.owned(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
+    if (state_.particles.ghostCount > 0) releaseGhosts();
     const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);
     state_.particles.removeBySwap(slot);
     state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);
@@ -295,6 +303,7 @@ int Simulation::ranks() const { return split_ ? split_->ranks() : worldCommunica
 bool Simulation::onRanks() const { return split_ && split_->isParallel(); }
 
 double Simulation::sumOverRanks(double x) const { return onRanks() ? split_->communicator().sum(x) : x; }
+double Simulation::maxOverRanks(double x) const { return onRanks() ? split_->communicator().max(x) : x; }
 void Simulation::sumOverRanks(std::vector<double>& values) const {
     if (onRanks())
         split_->communicator().allReduce(values.data(), static_cast<int>(values.size()), Communicator::Reduction::sum);
@@ -360,9 +369,9 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrate(saving);
         actionsAfterTimeStep();
         if (saving) writeOutput();
-        // Boundaries may add and delete particles: count again when the number changed (they
-        // do not run on more than one rank).
-        if (state_.particles.size() != counted && !onRanks()) {
+        // Boundaries may add and delete particles: count again when the number changed (on
+        // ranks, where that takes all ranks, every 256 steps).
+        if (onRanks() ? (k & 255) == 0 : state_.particles.size() != counted) {
             counted = state_.particles.size();
             mobile = mobileParticleCount();
         }

@@ -123,6 +123,10 @@ public:
     // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
     // done at the start and after every save anyway.
     void requestRebalance();
+    double maxOverRanks(double x) const;
+    // Whether the scene is split over more than one rank (false during setupInitialConditions,
+    // which every rank runs on the whole scene).
+    bool onRanks() const;
     // Mobile (not fixed) particles in the whole scene.
     std::size_t mobileParticleCount() const;
     // The current slot of the particle with global id `id` (ids count from 0 in the order of
@@ -181,7 +185,8 @@ private:
     std::uint64_t saveEvery() const;
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
-    bool onRanks() const;
+    void releaseGhosts();
+    void renumberNewParticles();
     void splitScene(bool restarted);
     bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
     void agreeOnOverlaps(const std::string& diagnosis);
@@ -213,6 +218,8 @@ private:
     double largestRadius_ = 0;                      // over all ranks, for the ghost width
     bool rebalancePending_ = false;
     bool runsOnRanks_ = false;
+    std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
+    static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     RunStatistics lastRun_;
     std::string restartFile_;
 };

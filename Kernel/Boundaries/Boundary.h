@@ -12,6 +12,10 @@ class Boundary {
 public:
     virtual ~Boundary() = default;
     virtual void afterDrift(Simulation& simulation) = 0;
+    // Whether it works under an MPI domain split (Parallel/DomainSplit.h): it then acts on the
+    // particles each rank owns (slots below owned()) and sums what it counts over the ranks.
+    // A boundary that does not refuses to start on more than one rank.
+    virtual bool runsOnRanks() const { return false; }
 };
 
 }  // namespace talus

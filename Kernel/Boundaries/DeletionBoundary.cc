@@ -35,22 +35,33 @@ void DeletionBoundary::setPlane(const Vec3& normal, const Vec3& point) {
 
 std::size_t DeletionBoundary::apply(Simulation& s) {
     const ParticleStore& p = s.particles();
-    std::size_t removed = 0;
+    // What this call removes: count, mass, volume, and per species mass and volume (summed over
+    // the ranks on ranks, where each rank removes the particles it owns).
+    const std::size_t species = speciesMass_.size();
+    std::vector<double> removed(3 + 2 * species, 0.0);
     // From the last slot down: removal moves the last particle into the freed slot.
-    for (std::size_t i = p.size(); i-- > 0;) {
+    for (std::size_t i = p.owned(); i-- > 0;) {
         if (p.fixed[i] || (p.position[i] - point_).dot(normal_) <= 0) continue;
         const double volume = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
-        count_ += 1;
-        mass_ += p.mass[i];
-        volume_ += volume;
-        if (p.species[i] < speciesMass_.size()) {
-            speciesMass_[p.species[i]] += p.mass[i];
-            speciesVolume_[p.species[i]] += volume;
+        removed[0] += 1;
+        removed[1] += p.mass[i];
+        removed[2] += volume;
+        if (p.species[i] < species) {
+            removed[3 + p.species[i]] += p.mass[i];
+            removed[3 + species + p.species[i]] += volume;
         }
         s.removeParticle(i);
-        ++removed;
     }
-    return removed;
+    const auto here = static_cast<std::size_t>(removed[0]);
+    s.sumOverRanks(removed);
+    count_ += removed[0];
+    mass_ += removed[1];
+    volume_ += removed[2];
+    for (std::size_t k = 0; k < species; ++k) {
+        speciesMass_[k] += removed[3 + k];
+        speciesVolume_[k] += removed[3 + species + k];
+    }
+    return here;
 }
 
 }  // namespace talus

@@ -29,7 +29,8 @@ public:
 
     // Removes every mobile particle past the plane; returns how many. Call it from
     // actionsAfterTimeStep() (every step, or every few steps: a particle past the plane of an
-    // open end touches nothing that matters).
+    // open end touches nothing that matters). On ranks every rank calls it at the same step: each
+    // removes the particles it owns (and returns their number), the totals are summed.
     std::size_t apply(Simulation& s);
 
     double count() const { return count_; }

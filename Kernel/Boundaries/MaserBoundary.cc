@@ -54,9 +54,8 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
     require(std::isfinite(chuteEnd) && chuteEnd > hi_,
             "maser: the chute must end downstream of the box (x = " + str(hi_) + "), got " + str(chuteEnd));
     const ParticleStore& p = s.particles();
-    std::size_t mobile = 0;
-    double largest = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    double mobile = 0, largest = 0;
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (!box.isMember(p.species[i])) continue;
         // The one-way pairs across the face and the copies are written for spheres.
         require(!p.isShaped(i), "maser: superquadric particles in the maser box are not supported (particle id " +
@@ -64,21 +63,27 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
         largest = std::max(largest, 2 * p.radius[i]);
         mobile += !p.fixed[i];
     }
+    mobile = s.sumOverRanks(mobile);
+    largest = s.maxOverRanks(largest);
     require(mobile > 0, "maser: activated on a box with no particles (no mobile particle of a maser species)");
     require(hi_ - lo_ >= 2 * largest, "maser: the box (length " + str(hi_ - lo_) +
                                           ") must be longer than two diameters of its largest particle (" +
                                           str(largest) + ")");
     box.active = true;
     if (seedChute) {
-        const std::size_t n = p.size();
+        const std::size_t n = p.owned();
+        std::vector<double> seeded = {0, 0};
         for (std::size_t i = 0; i < n; ++i) {
             if (p.fixed[i] || !box.isMember(p.species[i])) continue;
             const Vec3 x = p.position[i] + Vec3(hi_ - lo_, 0, 0), v = p.velocity[i], w = p.angularVelocity[i];
             const std::size_t copy =
                 s.addParticle(x, p.radius[i], static_cast<std::size_t>(box.outflowSpecies[p.species[i]]), v, w);
-            seeded_ += 1;
-            seededMass_ += p.mass[copy];
+            seeded[0] += 1;
+            seeded[1] += p.mass[copy];
         }
+        s.sumOverRanks(seeded);
+        seeded_ += seeded[0];
+        seededMass_ += seeded[1];
     }
     Vec3 hi = s.domain().hi;
     hi.x() = chuteEnd;
@@ -92,20 +97,24 @@ void MaserBoundary::afterDrift(Simulation& s) {
     const double length = box.length();
     ParticleStore& p = s.particles();
     bool moved = false;
-    const std::size_t n = p.size();  // the copies, appended, are chute particles
+    // What this step added to the totals: crossings, their mass, backward crossings, and per
+    // chute species the count and mass (summed over the ranks on ranks).
+    const std::size_t species = speciesCount_.size();
+    std::vector<double> added(3 + 2 * species, 0.0);
+    const std::size_t n = p.owned();  // the copies, appended, are chute particles
     for (std::size_t i = 0; i < n; ++i) {
         if (p.fixed[i] || !box.isMember(p.species[i])) continue;
         const double x = p.position[i].x();
         if (x >= box.hi) {
-            const auto species = static_cast<std::size_t>(box.outflowSpecies[p.species[i]]);
+            const auto chuteSpecies = static_cast<std::size_t>(box.outflowSpecies[p.species[i]]);
             const std::size_t copy =
-                s.addParticle(p.position[i], p.radius[i], species, p.velocity[i], p.angularVelocity[i]);
+                s.addParticle(p.position[i], p.radius[i], chuteSpecies, p.velocity[i], p.angularVelocity[i]);
             p.force[copy] = p.force[i];  // the last step's force, which the next contact forces start from
-            crossings_ += 1;
-            mass_ += p.mass[copy];
-            if (species < speciesCount_.size()) {
-                speciesCount_[species] += 1;
-                speciesMass_[species] += p.mass[copy];
+            added[0] += 1;
+            added[1] += p.mass[copy];
+            if (chuteSpecies < species) {
+                added[3 + chuteSpecies] += 1;
+                added[3 + species + chuteSpecies] += p.mass[copy];
             }
             p.position[i].x() -= length;
             moved = true;
@@ -114,9 +123,17 @@ void MaserBoundary::afterDrift(Simulation& s) {
             // downstream face meets the particles in front of it there and may be pushed back a
             // little; moved forward at once it would land on its own copy.
             p.position[i].x() += length;
-            backward_ += 1;
+            added[2] += 1;
             moved = true;
         }
+    }
+    s.sumOverRanks(added);
+    crossings_ += added[0];
+    mass_ += added[1];
+    backward_ += added[2];
+    for (std::size_t k = 0; k < species; ++k) {
+        speciesCount_[k] += added[3 + k];
+        speciesMass_[k] += added[3 + species + k];
     }
     // Positions jumped by a box length: the neighbour list must be built anew (addParticle
     // already asks for it when a copy was made).

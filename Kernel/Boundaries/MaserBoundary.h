@@ -73,6 +73,11 @@ public:
     double seededMass() const { return seededMass_; }
 
     void afterDrift(Simulation& s) override;
+    // On ranks each rank copies and moves the box particles it owns; the totals are summed over
+    // the ranks every step, so every rank (and the restart file) has them whole. The box may be
+    // cut by rank boundaries: the pairs across its face are listed through ghosts
+    // (Parallel/DomainSplit.h).
+    bool runsOnRanks() const override { return true; }
 
 private:
     double lo_, hi_;

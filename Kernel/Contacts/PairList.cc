@@ -145,6 +145,9 @@ void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& dom
           << " long (twice the largest diameter plus the reach)";
         throw Error(m.str());
     }
+    // With ghosts (an MPI split) a pair is listed where either particle is owned: i's rank
+    // applies the force on i, j's rank the reaction on j past the reaction overlap.
+    const std::size_t owned = particles.owned();
     std::vector<std::uint32_t> upstream, downstream;
     for (std::uint32_t i = 0; i < particles.size(); ++i) {
         if (!box.isMember(particles.species[i])) continue;
@@ -155,6 +158,7 @@ void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& dom
     const PeriodicImage image(domain);
     for (std::uint32_t i : upstream)
         for (std::uint32_t j : downstream) {
+            if (i >= owned && j >= owned) continue;
             Vec3 d = particles.position[i] - particles.position[j];
             d.x() += box.length();
             d = image.nearest(d);

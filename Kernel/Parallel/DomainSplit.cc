@@ -152,11 +152,22 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
     const int me = rank(), n = ranks();
     const bool periodic = domain.periodic[0];
     const double L = domain.length(0), lo = domain.lo.x(), hi = domain.hi.x();
+    const OneWayPeriodicBox& box = domain.oneWay;
     sendSlots_.assign(n, {});
     std::vector<int> targets;
+    auto addRanksMeeting = [&](double from, double to) {
+        for (int r = ownerOf(from); r <= ownerOf(to); ++r)
+            if (r != me && std::find(targets.begin(), targets.end(), r) == targets.end()) targets.push_back(r);
+    };
     for (std::uint32_t i = 0; i < p.size(); ++i) {
         const double x = p.position[i].x();
         targets.clear();
+        // A particle of an active maser box near one of its faces pairs with those near the other
+        // face through the box's image (PairList::oneWayPairs): its ghosts go there too.
+        if (box.active && box.isMember(p.species[i])) {
+            if (box.hi - x < width) addRanksMeeting(x - box.length() - width, x - box.length() + width);
+            if (x - box.lo < width) addRanksMeeting(x + box.length() - width, x + box.length() + width);
+        }
         // The ranks whose slabs meet [x - width, x + width], through the periodic images too.
         for (int image = periodic ? -1 : 0; image <= (periodic ? 1 : 0); ++image) {
             double from = x + image * L - width, to = x + image * L + width;
@@ -165,8 +176,7 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
                 to = std::min(to, std::nextafter(hi, lo));
                 if (from > to) continue;
             }
-            for (int r = ownerOf(from); r <= ownerOf(to); ++r)
-                if (r != me && std::find(targets.begin(), targets.end(), r) == targets.end()) targets.push_back(r);
+            addRanksMeeting(from, to);
         }
         for (int r : targets) sendSlots_[r].push_back(i);
     }

@@ -3,6 +3,7 @@
 // agreement of all ranks on errors, and output gathered on rank 0.
 #include <algorithm>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -17,10 +18,9 @@ namespace talus {
 void Simulation::splitScene(bool restarted) {
     require(runsOnRanks_, "driver '" + name() + "' has not been made rank-aware (setRunsOnRanks): its analysis "
                           "would see the particles of one rank only; run it without mpirun (Documentation/Parallel.md)");
-    require(boundaries_.empty(),
-            "this driver has boundaries (insertion, deletion or maser), which do not run on more than one rank yet; "
-            "run it without mpirun (Documentation/Parallel.md lists what runs on ranks)");
-    require(!state_.domain.oneWay.active, "an active maser does not run on more than one rank yet");
+    for (const Boundary* b : boundaries_)
+        require(b->runsOnRanks(), "this driver has a boundary that does not run on more than one rank yet; run it "
+                                  "without mpirun (Documentation/Parallel.md lists what runs on ranks)");
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     (void)restarted;
@@ -62,6 +62,7 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
         split_->updateGhosts(p);
         return false;
     }
+    renumberNewParticles();
     carried = list.carriedHistories(p);
     carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
     pendingHistories_.clear();
@@ -72,6 +73,48 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     reorderParticles();
     split_->makeGhosts(p, state_.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
     return true;
+}
+
+// A boundary adds or removes a particle while ghosts sit behind the owned particles: the list's
+// histories are kept by ids until the rebuild that the change forces, and the ghosts go (the
+// rebuild makes them anew).
+void Simulation::releaseGhosts() {
+    std::vector<CarriedHistory> carried = state_.pairList.carriedHistories(state_.particles);
+    pendingHistories_.insert(pendingHistories_.end(), carried.begin(), carried.end());
+    state_.pairList.clear();
+    state_.particles.dropGhosts();
+}
+
+// The particles added on any rank since the last call get their ids: every rank learns the new
+// particles of all (their provisional ids and positions), orders them by position, and numbers
+// them from nextId on, so that the ids do not depend on which rank made which particle.
+void Simulation::renumberNewParticles() {
+    ParticleStore& p = state_.particles;
+    struct Added {
+        double x, y, z;
+        std::uint64_t provisional;
+        bool operator<(const Added& o) const {
+            return std::tie(x, y, z, provisional) < std::tie(o.x, o.y, o.z, o.provisional);
+        }
+    };
+    Bytes mine;
+    Packer out(mine);
+    if (provisionalIds_ > 0)
+        for (std::size_t i = 0; i < p.owned(); ++i)
+            if (p.id[i] >= provisionalIdBase) out.put(Added{p.position[i].x(), p.position[i].y(), p.position[i].z(), p.id[i]});
+    std::vector<Added> all;
+    for (const Bytes& bytes : split_->communicator().allGather(mine)) {
+        Unpacker in(bytes);
+        while (!in.atEnd()) all.push_back(in.get<Added>());
+    }
+    if (all.empty()) return;
+    std::sort(all.begin(), all.end());
+    std::unordered_map<std::uint64_t, std::uint64_t> finalId;
+    for (std::size_t k = 0; k < all.size(); ++k) finalId.emplace(all[k].provisional, state_.nextId + k);
+    for (std::size_t i = 0; i < p.owned(); ++i)
+        if (p.id[i] >= provisionalIdBase) p.id[i] = finalId.at(p.id[i]);
+    state_.nextId += all.size();
+    provisionalIds_ = 0;
 }
 
 void Simulation::agreeOnOverlaps(const std::string& diagnosis) {
@@ -118,6 +161,7 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
 // ranks, with the same writers as a serial run; then every rank marks its list for a rebuild at
 // the next step, which is what a run restarted from these files does first (exact restarts).
 void Simulation::writeGatheredOutput() {
+    renumberNewParticles();
     ParticleStore& p = state_.particles;
     ParticleStore gathered = split_->gatherParticles(p);
     std::vector<ContactRecord> records = split_->gatherRecords(p, records_, gathered);
