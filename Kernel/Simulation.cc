@@ -162,6 +162,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     require(species < state_.species.size(), which + ": species " + std::to_string(species) +
                                                  " does not exist (add species before particles)");
     const double mass = state_.species[species].density * 4.0 / 3.0 * pi * radius * radius * radius;
+    if (p.ghostCount > 0) releaseGhosts();  // new particles go before the ghosts: drop them first
     p.position.push_back(position);
     p.velocity.push_back(velocity);
     p.angularVelocity.push_back(angularVelocity);
@@ -175,7 +176,6 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     // On ranks a new particle gets a provisional id, unique to this rank, until all ranks number
     // their new particles together (renumberNewParticles, at the next list build or save).
     if (onRanks()) {
-        if (p.ghostCount > 0) releaseGhosts();
         p.id.push_back(provisionalIdBase + (std::uint64_t(rank()) << 40) + provisionalIds_++);
     } else {
         p.id.push_back(state_.nextId++);

@@ -2,14 +2,17 @@
 # Self-test: a run restarted from its .restart file writes bitwise the same files as the
 # uninterrupted run (DESIGN.md "Determinism").
 #   RestartIsExact.sh <driver> <work-dir> <end-time> <restart-time> [driver flags...]
+# With TALUS_LAUNCH set (for example "mpirun -np 2") every run is started by it.
 set -euo pipefail
 driver=$1 work=$2 end=$3 middle=$4
 shift 4
+read -r -a launch <<< "${TALUS_LAUNCH:-}"
+run() { "${launch[@]}" "$driver" "$@"; }
 rm -rf "$work" && mkdir -p "$work/whole" "$work/split"
 name=$(basename "$driver")
-(cd "$work/whole" && "$driver" "$@" --end-time "$end" --progress-interval 1000 >/dev/null)
-(cd "$work/split" && "$driver" "$@" --end-time "$middle" --progress-interval 1000 >/dev/null)
-(cd "$work/split" && "$driver" --restart "$name.restart" --end-time "$end" --progress-interval 1000 >/dev/null)
+(cd "$work/whole" && run "$@" --end-time "$end" --progress-interval 1000 >/dev/null)
+(cd "$work/split" && run "$@" --end-time "$middle" --progress-interval 1000 >/dev/null)
+(cd "$work/split" && run --restart "$name.restart" --end-time "$end" --progress-interval 1000 >/dev/null)
 status=0
 for f in "$work/whole"/*; do
   base=$(basename "$f")

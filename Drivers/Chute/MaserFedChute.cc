@@ -54,6 +54,7 @@ public:
         keepInRestart("run.boxParticles", boxParticles_);
         keepInRestart("run.oneWayReactions", oneWayReactions_);
         for (std::size_t s = 0; s < 2; ++s) keepInRestart("run.boxMassDisplacement." + std::to_string(s), boxMassDisplacement_[s]);
+        setRunsOnRanks(true);  // under mpirun: sums over ranks, files and messages from rank 0
     }
 
     void setupInitialConditions() override {
@@ -94,7 +95,7 @@ public:
         for (auto [count, s, d] : {std::tuple{largeCount, maserLarge_, dL}, {smallCount, maserSmall_, dS}}) {
             InsertionBoundary box(Vec3(0, 0, 1), Vec3(maserLength, width, top), SizeDistribution::byNumber().add(s, d / 2));
             const InsertionReport report = box.insertCount(*this, count);
-            std::printf("%s\n", report.describe().c_str());
+            if (rank() == 0) std::printf("%s\n", report.describe().c_str());
             require(report.complete, "could not place the maser's spheres: " + report.describe());
         }
         boxParticles_ = static_cast<double>(largeCount + smallCount);
@@ -104,18 +105,26 @@ public:
     void actionsAfterTimeStep() override {
         outlet.apply(*this);
         if (activatedAt_ >= 0) accumulateBoxFlux();
-        oneWayReactions_ += static_cast<double>(contactSummary().oneWayReactions);
+        unsummed_[2] += static_cast<double>(contactSummary().oneWayReactions);
         if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
-        const ChuteSnapshot box = measureChute(particles(), maserLength, width, maserSmall_, time(), 0, maserLength);
+        // This rank's sums since the last sample join the totals (on ranks: summed over them).
+        sumOverRanks(unsummed_);
+        boxMassDisplacement_[0] += unsummed_[0];
+        boxMassDisplacement_[1] += unsummed_[1];
+        oneWayReactions_ += unsummed_[2];
+        unsummed_.assign(3, 0.0);
+        const ChuteSnapshot box = measureChute(*this, maserLength, width, maserSmall_, 0, maserLength);
         sample(box);
         if (activatedAt_ >= 0) return;
         const bool steady = plateau_.add(time(), {box.kineticEnergy, box.massFlux});
         if ((steady || plateau_.steady()) && time() >= earliestActivation - 0.5 * timeStep()) {
-            std::printf("%s: maser flow steady (kinetic energy %.4g, mass flux %.4g on a plateau for %d samples): "
+            if (rank() == 0)
+                std::printf("%s: maser flow steady (kinetic energy %.4g, mass flux %.4g on a plateau for %d samples): "
                         "activating it at t = %g\n", name().c_str(), box.kineticEnergy, box.massFlux, window, time());
             activate();
         } else if (time() >= latestActivation - 0.5 * timeStep()) {
-            std::printf("%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n",
+            if (rank() == 0)
+                std::printf("%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n",
                         name().c_str(), time());
             activate();
         }
@@ -135,8 +144,8 @@ private:
         outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
         maser.activate(*this, end);
         activatedAt_ = time();
-        const std::size_t n = particles().size();
-        std::size_t added = 0;
+        const std::size_t n = particles().owned();  // on ranks each copies the base it owns
+        double added = 0;
         for (std::size_t i = 0; i < n; ++i) {
             if (particles().species[i] != maserBase_) continue;
             const Vec3 x = particles().position[i];
@@ -144,7 +153,9 @@ private:
             for (int k = 1; x.x() + k * maserLength < end; ++k, ++added)
                 addFixedParticle(x + Vec3(k * maserLength, 0, 0), r, base);
         }
-        std::printf("%s: chute base of %zu spheres up to x = %g; the first %g of the chute seeded with a copy of the "
+        added = sumOverRanks(added);
+        if (rank() == 0)
+            std::printf("%s: chute base of %.0f spheres up to x = %g; the first %g of the chute seeded with a copy of the "
                     "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
     }
 
@@ -152,9 +163,9 @@ private:
     // divided by the box length, it is what should have crossed its downstream face.
     void accumulateBoxFlux() {
         const ParticleStore& p = particles();
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            if (p.species[i] == maserLarge_) boxMassDisplacement_[0] += p.mass[i] * p.velocity[i].x() * timeStep();
-            if (p.species[i] == maserSmall_) boxMassDisplacement_[1] += p.mass[i] * p.velocity[i].x() * timeStep();
+        for (std::size_t i = 0; i < p.owned(); ++i) {
+            if (p.species[i] == maserLarge_) unsummed_[0] += p.mass[i] * p.velocity[i].x() * timeStep();
+            if (p.species[i] == maserSmall_) unsummed_[1] += p.mass[i] * p.velocity[i].x() * timeStep();
         }
     }
 
@@ -163,29 +174,32 @@ private:
         double chuteMass = 0, front = 0;
     };
     Census census() const {
-        Census c;
         const ParticleStore& p = particles();
-        for (std::size_t i = 0; i < p.size(); ++i) {
+        std::vector<double> sum(3, 0.0);  // box, chute, chute mass
+        double front = 0;
+        for (std::size_t i = 0; i < p.owned(); ++i) {
             if (p.fixed[i]) continue;
             if (p.species[i] == maserLarge_ || p.species[i] == maserSmall_) {
-                ++c.box;
+                sum[0] += 1;
                 continue;
             }
-            ++c.chute;
-            c.chuteMass += p.mass[i];
-            c.front = std::max(c.front, p.position[i].x());
+            sum[1] += 1;
+            sum[2] += p.mass[i];
+            front = std::max(front, p.position[i].x());
         }
-        return c;
+        sumOverRanks(sum);
+        return {static_cast<std::size_t>(sum[0]), static_cast<std::size_t>(sum[1]), sum[2], maxOverRanks(front)};
     }
 
     void sample(const ChuteSnapshot& box) {
+        const Census c = census();
+        if (rank() != 0) return;
         if (!series_.is_open()) {  // appended to, so that a restarted run continues it
             series_.open(name() + ".series", std::ios::app);
             if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
                 series_ << "# t active maserKineticEnergy maserMassFlux maserMeanVelocity maserHeight maserSmallConcentration"
                            " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front\n";
         }
-        const Census c = census();
         series_ << time() << ' ' << (activatedAt_ >= 0) << ' ' << box.kineticEnergy << ' ' << box.massFlux << ' '
                 << box.meanVelocity << ' ' << box.height << ' ' << box.smallConcentration << ' ' << maser.crossings() << ' '
                 << maser.createdMass(large) << ' ' << maser.createdMass(small) << ' ' << c.chute << ' ' << c.chuteMass
@@ -195,16 +209,23 @@ private:
     // Created = in the chute + deleted, to the particle; the maser keeps its spheres.
     void checkConservation() {
         if (activatedAt_ < 0) {
-            std::printf("%s: the maser was not activated by t = %g\n", name().c_str(), time());
+            if (rank() == 0)
+                std::printf("%s: the maser was not activated by t = %g\n", name().c_str(), time());
             return;
         }
         const Census c = census();
         const double created = maser.seeded() + maser.crossings(), deleted = outlet.count();
+        if (!conservationReported(c, created, deleted)) throw CollectiveError("mass is not conserved between the maser, the chute and the outlet", rank() != 0);
+    }
+
+    // Prints the balance (on rank 0); returns whether it holds.
+    bool conservationReported(const Census& c, double created, double deleted) const {
         const double createdMass = maser.seededMass() + maser.createdMass();
         const double massError = std::abs(createdMass - (c.chuteMass + outlet.mass()));
         const bool conserved = created == static_cast<double>(c.chute) + deleted &&
                                c.box == static_cast<std::size_t>(boxParticles_) &&
                                massError <= 1e-12 * std::max(1.0, createdMass);
+        if (rank() != 0) return conserved;
         std::printf("%s: created %.0f (seeded %.0f + crossed %.0f) = in the chute %zu + deleted %.0f; maser holds %zu of "
                     "%.0f; created mass %.10g, in the chute + deleted %.10g: mass conserved: %s\n", name().c_str(), created,
                     maser.seeded(), maser.crossings(), c.chute, deleted, c.box, boxParticles_, createdMass,
@@ -219,12 +240,13 @@ private:
                     carried[1] / std::max(1e-300, carried[0] + carried[1]));
         std::printf("%s: pairs across the maser's face beyond the one-way overlap limit (%g of the radius): %.0f pair-steps\n",
                     name().c_str(), OneWayPeriodicBox::reactionOverlap, oneWayReactions_);
-        if (!conserved) throw Error("mass is not conserved between the maser, the chute and the outlet");
+        return conserved;
     }
 
     std::size_t maserLarge_ = 3, maserSmall_ = 4, maserBase_ = 5;
     double activatedAt_ = -1, boxParticles_ = 0, boxMassDisplacement_[2] = {0, 0};
     double oneWayReactions_ = 0;  // pair-steps across the maser's face past the reaction overlap
+    std::vector<double> unsummed_ = std::vector<double>(3, 0.0);  // this rank's sums since the last sample
     PlateauDetector plateau_{50, 0.02};
     std::ofstream series_;
 };

@@ -41,6 +41,7 @@ public:
         addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         addFlag("window", "samples on a plateau that make the flow steady", window);
         addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
+        setRunsOnRanks(true);  // under mpirun: sums over ranks, files and messages from rank 0
     }
 
     void setupInitialConditions() override {
@@ -65,7 +66,7 @@ public:
             InsertionBoundary box(Vec3(0, 0, 1), Vec3(length, width, top),
                                   SizeDistribution::byNumber().add(species, diameter / 2));
             const InsertionReport report = box.insertCount(*this, static_cast<std::size_t>(count));
-            std::printf("%s\n", report.describe().c_str());
+            if (rank() == 0) std::printf("%s\n", report.describe().c_str());
             require(report.complete, "could not place the start configuration: " + report.describe());
         }
         plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
@@ -75,21 +76,22 @@ public:
     void actionsAfterTimeStep() override {
         // At the multiples of the sample interval (so also after a restart).
         if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
-        const ChuteSnapshot s = measureChute(particles(), length, width, smallSpecies_, time());
-        if (!series_.is_open()) {  // appended to, so that a restarted run continues it
+        const ChuteSnapshot s = measureChute(*this, length, width, smallSpecies_);
+        if (!series_.is_open() && rank() == 0) {  // appended to, so that a restarted run continues it
             series_.open(name() + ".series", std::ios::app);
             if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
                 series_ << "# t kineticEnergy massFlux meanVelocity height smallConcentration (per unit area/width)\n";
         }
-        series_ << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height
+        if (rank() == 0)
+            series_ << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height
                 << ' ' << s.smallConcentration << std::endl;
         // No sphere may pass through the base (its centres lie within +-0.25 of z = 0).
-        for (std::size_t i = 0; i < particles().size(); ++i)
+        for (std::size_t i = 0; i < particles().owned(); ++i)
             if (!particles().fixed[i] && particles().position[i].z() < -0.5)
                 throw Error("particle id " + std::to_string(particles().id[i]) + " fell through the base (z = " +
                             std::to_string(particles().position[i].z()) + " at t = " + std::to_string(time()) + ")");
         if (!plateau_.steady()) {
-            if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}))
+            if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}) && rank() == 0)
                 std::printf("%s: steady flow at t = %g (kinetic energy %.4g and mass flux %.4g per unit area and width "
                             "on a plateau for %d samples)\n", name().c_str(), time(), s.kineticEnergy, s.massFlux, window);
             return;
@@ -100,7 +102,8 @@ public:
 
     void actionsAfterSolve() override {
         if (steadySamples_.empty()) {
-            std::printf("%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
+            if (rank() == 0)
+                std::printf("%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
                         name().c_str(), time(), plateau_.samples());
             return;
         }
@@ -112,7 +115,8 @@ public:
             concentration.push_back(s.smallConcentration);
         }
         const MeanAndError u = batchMean(velocity), h = batchMean(height), q = batchMean(flux);
-        profile_.write(name() + ".profile");
+        profile_.write(name() + ".profile", this);
+        if (rank() != 0) return;
         std::ofstream out(name() + ".steady");
         out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
             << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";

@@ -5,25 +5,35 @@
 
 #include "Error.h"
 #include "Math/Vector.h"
+#include "Simulation.h"
 
 namespace talus {
 
-ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
-                           double xMin, double xMax) {
-    ChuteSnapshot s;
-    s.time = time;
-    double mass = 0, massZ = 0, volume = 0, smallVolume = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+namespace {
+
+// The sums a snapshot is made of: mass, m z, m vx, kinetic energy, volume, small volume.
+std::vector<double> chuteSums(const ParticleStore& p, std::size_t smallSpecies, double xMin, double xMax) {
+    std::vector<double> sum(6, 0.0);
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || !(p.position[i].x() >= xMin && p.position[i].x() < xMax)) continue;
         const double m = p.mass[i], v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
-        mass += m;
-        massZ += m * p.position[i].z();
-        s.massFlux += m * p.velocity[i].x();
-        s.kineticEnergy += 0.5 * m * p.velocity[i].squaredNorm() +
-                           (p.invInertia[i] > 0 ? 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i] : 0);
-        volume += v;
-        if (p.species[i] == smallSpecies) smallVolume += v;
+        sum[0] += m;
+        sum[1] += m * p.position[i].z();
+        sum[2] += m * p.velocity[i].x();
+        sum[3] += 0.5 * m * p.velocity[i].squaredNorm() +
+                  (p.invInertia[i] > 0 ? 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i] : 0);
+        sum[4] += v;
+        if (p.species[i] == smallSpecies) sum[5] += v;
     }
+    return sum;
+}
+
+ChuteSnapshot snapshotOf(const std::vector<double>& sum, double length, double width, double time) {
+    ChuteSnapshot s;
+    s.time = time;
+    const double mass = sum[0], massZ = sum[1], volume = sum[4], smallVolume = sum[5];
+    s.massFlux = sum[2];
+    s.kineticEnergy = sum[3];
     if (mass > 0) {
         s.meanVelocity = s.massFlux / mass;
         s.height = 2 * massZ / mass;
@@ -32,6 +42,20 @@ ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, 
     s.kineticEnergy /= length * width;
     s.smallConcentration = volume > 0 ? smallVolume / volume : 0;
     return s;
+}
+
+}  // namespace
+
+ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
+                           double xMin, double xMax) {
+    return snapshotOf(chuteSums(p, smallSpecies, xMin, xMax), length, width, time);
+}
+
+ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies, double xMin,
+                           double xMax) {
+    std::vector<double> sum = chuteSums(s.particles(), smallSpecies, xMin, xMax);
+    s.sumOverRanks(sum);
+    return snapshotOf(sum, length, width, s.time());
 }
 
 PlateauDetector::PlateauDetector(std::size_t window, double tolerance) : window_(window), tolerance_(tolerance) {
@@ -95,7 +119,7 @@ DepthProfile::DepthProfile(double bin, double top, double length, double width, 
 
 void DepthProfile::add(const ParticleStore& p) {
     ++samples_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || p.position[i].z() < 0) continue;
         const auto k = static_cast<std::size_t>(p.position[i].z() / bin_);
         if (k >= volume_.size()) continue;
@@ -107,7 +131,13 @@ void DepthProfile::add(const ParticleStore& p) {
     }
 }
 
-void DepthProfile::write(const std::string& path) const {
+void DepthProfile::write(const std::string& path, const Simulation* s) const {
+    if (s && s->onRanks()) {
+        DepthProfile all = *this;
+        for (auto* sums : {&all.volume_, &all.smallVolume_, &all.mass_, &all.momentum_}) s->sumOverRanks(*sums);
+        if (s->rank() == 0) all.write(path);
+        return;
+    }
     std::ofstream out(path);
     if (!out) throw Error("cannot write depth profile " + path);
     out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";

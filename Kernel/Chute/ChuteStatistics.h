@@ -14,6 +14,8 @@
 
 namespace talus {
 
+class Simulation;
+
 // Bulk state of the flowing (not fixed) particles of a chute of the given length and width.
 struct ChuteSnapshot {
     double time = 0;
@@ -26,6 +28,10 @@ struct ChuteSnapshot {
 // Over the mobile particles with xMin <= x < xMax (all by default); length and width are those
 // of the region measured.
 ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
+                           double xMin = -INFINITY, double xMax = INFINITY);
+// The same over the particles of every rank of a simulation (all ranks call it together; on one
+// rank it is the one above).
+ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies,
                            double xMin = -INFINITY, double xMax = INFINITY);
 
 // The plateau of time series sampled at equal intervals: steady once, over the last `window`
@@ -63,9 +69,10 @@ MeanAndError batchMean(const std::vector<double>& samples, std::size_t batches =
 class DepthProfile {
 public:
     DepthProfile(double bin, double top, double length, double width, std::size_t smallSpecies);
-    void add(const ParticleStore& p);
-    // Columns z, volume fraction, vx, small concentration; one line per slab.
-    void write(const std::string& path) const;
+    void add(const ParticleStore& p);  // the owned particles (Parallel/DomainSplit.h)
+    // Columns z, volume fraction, vx, small concentration; one line per slab. With a simulation
+    // on ranks, all ranks call it: the sums of all ranks are written, by rank 0.
+    void write(const std::string& path, const Simulation* s = nullptr) const;
     std::size_t samples() const { return samples_; }
 
 private:
