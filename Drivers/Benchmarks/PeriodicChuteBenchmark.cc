@@ -18,6 +18,7 @@
 #include <string>
 
 #include "IO/LammpsDataFile.h"
+#include "Parallel/DomainSplit.h"
 #include "Simulation.h"
 
 using namespace talus;
@@ -103,7 +104,9 @@ public:
     void actionsAfterSolve() override {
         const ParticleStore& p = particles();
         std::vector<double> sums = {0, 0, memoryBytes("VmHWM") - baselineMemory_, double(p.owned()),
-                                    double(contactSummary().contacts), double(pairList().pairs.size())};
+                                    double(contactSummary().contacts), double(pairList().pairs.size()),
+                                    domainSplit()->seconds.total(), double(p.ghostCount),
+                                    domainSplit()->seconds.ghosts, domainSplit()->seconds.agreement};
         for (std::size_t i = 0; i < p.owned(); ++i)
             if (!p.fixed[i]) {
                 sums[0] += p.velocity[i].x();
@@ -114,10 +117,13 @@ public:
         if (rank() != 0) return;
         std::printf("benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
                     "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f  rebuilds %llu  "
-                    "ranks %d\n",
+                    "ranks %d  communication %.1f%%  ghosts %.0f  (ghost exchange %.1f%%, agreement %.1f%%)\n",
                     sums[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
                     sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5],
-                    static_cast<unsigned long long>(pairList().builds), ranks());
+                    static_cast<unsigned long long>(pairList().builds), ranks(),
+                    100 * sums[6] / ranks() / std::max(run.wallSeconds, 1e-300), sums[7],
+                    100 * sums[8] / ranks() / std::max(run.wallSeconds, 1e-300),
+                    100 * sums[9] / ranks() / std::max(run.wallSeconds, 1e-300));
     }
 
 private:

@@ -93,6 +93,7 @@ void DomainSplit::keepOwnShare(ParticleStore& p) const {
 }
 
 void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried) {
+    const Stopwatch watch(seconds.rebuild);
     p.dropGhosts();
     const int me = rank();
     std::unordered_map<std::uint64_t, int> leaving;  // id -> new owner
@@ -148,6 +149,7 @@ void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried
 }
 
 void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double width) {
+    const Stopwatch watch(seconds.rebuild);
     require(p.ghostCount == 0, "makeGhosts: the store holds ghosts already");
     const int me = rank(), n = ranks();
     const bool periodic = domain.periodic[0];
@@ -217,6 +219,7 @@ void forEachMovingField(ParticleStore& p, F&& f) {
 
 void DomainSplit::updateGhosts(ParticleStore& p) {
     if (sendTo_.empty() && receiveFrom_.empty()) return;
+    const Stopwatch watch(seconds.ghosts);
     std::size_t bytesPerParticle = 0;
     forEachMovingField(p, [&](auto& array) { bytesPerParticle += sizeof(array[0]); });
     outgoing_.resize(sendTo_.size());

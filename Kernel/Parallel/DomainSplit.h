@@ -18,6 +18,7 @@
 // which a particle's contact forces are summed (round-off; Documentation/Parallel.md).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +74,23 @@ public:
     // Particles this rank sent to other ranks so far, and those of them that went to a rank more
     // than one slab away (for three or more ranks along a periodic x: across the periodic face).
     std::uint64_t migrated = 0, migratedFar = 0;
+
+    // Wall seconds this rank spent on the split (Documentation/Parallel.md): sending ghosts each
+    // step, agreeing with the other ranks each step (which includes waiting for the slowest:
+    // load imbalance shows here), and migration with ghost making at list builds.
+    struct Timings {
+        double ghosts = 0, agreement = 0, rebuild = 0;
+        double total() const { return ghosts + agreement + rebuild; }
+    } seconds;
+    class Stopwatch {
+    public:
+        explicit Stopwatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+        ~Stopwatch() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+    private:
+        double& total_;
+        std::chrono::steady_clock::time_point start_;
+    };
 
 private:
     Communicator& communicator_;

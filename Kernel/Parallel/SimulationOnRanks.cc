@@ -52,7 +52,10 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
         failure = e.what();
     }
     double agreed[3] = {rebuild ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0};
-    split_->communicator().allReduce(agreed, 3, Communicator::Reduction::max);
+    {
+        const DomainSplit::Stopwatch watch(split_->seconds.agreement);
+        split_->communicator().allReduce(agreed, 3, Communicator::Reduction::max);
+    }
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
                                               : failure,
@@ -119,7 +122,10 @@ void Simulation::renumberNewParticles() {
 
 void Simulation::agreeOnOverlaps(const std::string& diagnosis) {
     double failed = diagnosis.empty() ? 0.0 : rank() + 1.0;
-    split_->communicator().allReduce(&failed, 1, Communicator::Reduction::max);
+    {
+        const DomainSplit::Stopwatch watch(split_->seconds.agreement);
+        split_->communicator().allReduce(&failed, 1, Communicator::Reduction::max);
+    }
     if (failed > 0)
         throw CollectiveError(diagnosis.empty() ? "stopped: rank " + std::to_string(int(failed) - 1) +
                                                       " found overlaps beyond the limit"
@@ -161,13 +167,15 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
 // ranks, with the same writers as a serial run; then every rank marks its list for a rebuild at
 // the next step, which is what a run restarted from these files does first (exact restarts).
 void Simulation::writeGatheredOutput() {
+    saveKeptValues();
+    const RunSettings& c = state_.settings;
+    if (!(c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart)) return;  // nothing to gather
     renumberNewParticles();
     ParticleStore& p = state_.particles;
     ParticleStore gathered = split_->gatherParticles(p);
     std::vector<ContactRecord> records = split_->gatherRecords(p, records_, gathered);
     const std::vector<CarriedHistory> histories =
         split_->gatherHistories(state_.pairList.carriedHistories(p, /*firstOwned*/ true));
-    saveKeptValues();
     if (rank() == 0 && files_) {
         PairList saved = listOfGathered(histories, gathered, state_.pairList, state_.walls.size());
         std::swap(state_.particles, gathered);
@@ -185,6 +193,7 @@ void Simulation::writeGatheredOutput() {
         }
         swapBack();
     }
+    if (!c.writeRestart) return;
     state_.pairList.valid = false;
     rebalancePending_ = true;
 }
