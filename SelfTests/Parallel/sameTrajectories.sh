@@ -6,7 +6,9 @@
 #     steps just as reordering the particles of a serial run does (about 1e-11 in position and
 #     2e-9 in velocity, which .data writes to 10 digits). Tolerance 1e-8, five times the latter;
 #  2. bitwise the same files run to run on the same number of ranks;
-#  3. a restart on the same number of ranks continues bitwise, on another to round-off.
+#  3. a restart on the same number of ranks continues bitwise, on another to round-off: saved on
+#     2 ranks and restarted on 1, 2 and 3; saved on 4 and restarted on 2; saved on 1 and
+#     restarted on 4.
 # Usage: sameTrajectories.sh MPIRUN BENCHMARK compareRuns.py
 set -euo pipefail
 mpirun=("$1" --oversubscribe)
@@ -40,4 +42,13 @@ done
 for f in data fstat ene; do cmp whole.$f restart2/part.$f; done
 echo "saved on 2 ranks, restarted on 2: bitwise the same files as the uninterrupted run"
 $compare 1e-8 whole.data restart1/part.data restart3/part.data
+for saved in 4 1; do
+  restarted=$((saved == 4 ? 2 : 4))
+  mkdir -p from$saved && cd from$saved
+  "${mpirun[@]}" -np $saved "$benchmark" --files on --vtu off --name part --end-time 0.1 --output-interval 0.05 > run.log
+  "${mpirun[@]}" -np $restarted "$benchmark" --restart part.restart --end-time 0.2 > run.log
+  cd ..
+  echo "saved on $saved ranks, restarted on $restarted:"
+  $compare 1e-8 whole.data from$saved/part.data
+done
 echo "parallel trajectories ok"
