@@ -46,6 +46,13 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("files", "on|off", "write any output files at all",
            [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
+    cl.add("rebalance-interval", "T",
+           "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
+           "(0: at the start, at saves and on request only)",
+           [this](const std::string& v) {
+               rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
+               require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
+           });
     cl.add("progress-interval", "S", "wall seconds between progress lines", [&c](const std::string& v) {
         c.progressInterval = CommandLine::toDouble("progress-interval", v);
         require(c.progressInterval > 0, "flag --progress-interval must be positive");

@@ -186,6 +186,7 @@ private:
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
     void releaseGhosts();
+    void rebalance();
     void renumberNewParticles();
     void splitScene(bool restarted);
     bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
@@ -217,6 +218,9 @@ private:
     std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
     double largestRadius_ = 0;                      // over all ranks, for the ghost width
     bool rebalancePending_ = false;
+    // Rank boundaries by particle count (Documentation/Parallel.md), at the start, at saves, on
+    // request, and every rebalanceInterval_ of simulated time.
+    double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
     bool runsOnRanks_ = false;
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;

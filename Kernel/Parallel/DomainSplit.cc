@@ -81,6 +81,9 @@ void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool rep
         const double fraction = count[b] > 0 ? std::clamp((target - below) / count[b], 0.0, 1.0) : 0.0;
         bounds_.push_back(lo + (b + fraction) * width);
     }
+    // The ranks must agree on the boundaries to the bit, or a particle would have two owners or
+    // none: whole-number counts make the sums exact, and the maximum over ranks makes sure.
+    if (!replicated) communicator_.allReduce(bounds_.data(), n - 1, Communicator::Reduction::max);
 }
 
 int DomainSplit::ownerOf(double x) const {

@@ -51,7 +51,9 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     } catch (const Error& e) {
         failure = e.what();
     }
-    double agreed[3] = {rebuild ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0};
+    // A rebalance that is due (the same step on every rank) needs a list build to act.
+    const bool due = rebalanceInterval_ > 0 && state_.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
+    double agreed[3] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0};
     {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
         split_->communicator().allReduce(agreed, 3, Communicator::Reduction::max);
@@ -70,12 +72,18 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
     pendingHistories_.clear();
     list.clear();
-    if (rebalancePending_) split_->balance(p, state_.domain, /*replicated*/ false);
-    rebalancePending_ = false;
+    if (rebalancePending_ || due) rebalance();
     split_->migrate(p, carried);
     reorderParticles();
     split_->makeGhosts(p, state_.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
     return true;
+}
+
+// Equal particle counts (a function of the positions only, so runs stay repeatable).
+void Simulation::rebalance() {
+    split_->balance(state_.particles, state_.domain, /*replicated*/ false);
+    lastBalanceTime_ = state_.time;
+    rebalancePending_ = false;
 }
 
 // A boundary adds or removes a particle while ghosts sit behind the owned particles: the list's
