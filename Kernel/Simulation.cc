@@ -46,6 +46,10 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("files", "on|off", "write any output files at all",
            [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
+    cl.add("id-ordered-sums", "on|off",
+           "sum each particle's contact forces in the order of its partners' ids: the same result to the bit on "
+           "any number of ranks, for a second pass over the pairs (spheres, no maser)",
+           [this](const std::string& v) { idOrderedSums_ = CommandLine::toBool("id-ordered-sums", v); });
     cl.add("rebalance-interval", "T",
            "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
            "(0: at the start, at saves and on request only)",
@@ -426,6 +430,12 @@ void Simulation::initialise(bool restarted) {
         c.skin = std::isfinite(rmin) ? 0.2 * rmin : 0;
     }
     state_.pairList.skin = c.skin;
+    if (idOrderedSums_) {
+        require(!state_.particles.hasShapes() && state_.domain.oneWay.outflowSpecies.empty(),
+                "--id-ordered-sums is for scenes of spheres without a maser");
+        state_.pairList.valid = false;  // the list is built anew with every pair oriented by ids
+    }
+    state_.pairList.orientById = idOrderedSums_;
     largestRadius_ = 0;
     for (double r : state_.particles.radius) largestRadius_ = std::max(largestRadius_, r);
     files_.reset();
@@ -525,15 +535,18 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkLi
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
+    if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
+    PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
     if (records) records->clear();
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
                              state_.settings.timeStep, state_.pairList.maxSpeed, previousForce_, summary_, records,
-                             &state_.shapes);
+                             &state_.shapes, perPair);
         },
         laws_);
+    if (idOrderedSums_) idOrderedForceSums_.addTo(p);
     if (records) {
         // A pair across ranks is computed on both: its record is kept where its first particle
         // is owned (PairList::rebuild puts the smaller id first).

@@ -201,6 +201,8 @@ private:
     ContactSummary summary_;
     double elasticEnergy_ = 0;
     std::vector<ContactRecord> records_;
+    bool idOrderedSums_ = false;  // --id-ordered-sums (Contacts/IdOrderedForceSums.h)
+    IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
     std::unique_ptr<CommandLine> commandLine_;
     struct KeptValue {

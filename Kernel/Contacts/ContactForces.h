@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Boundaries/Domain.h"
+#include "Contacts/IdOrderedForceSums.h"
 #include "Contacts/PairList.h"
 #include "Contacts/PairSweep.h"
 #include "Contacts/ShapedContactGeometry.h"
@@ -148,9 +149,10 @@ class ContactForceLoop {
 public:
     ContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt, double maxSpeed,
                      const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                     std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr)
+                     std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr,
+                     PairContribution* perPair = nullptr)
         : p_(p), laws_(laws), dt_(dt), closing_(2 * maxSpeed * dt), previousForce_(previousForce), summary_(summary),
-          records_(records), shapes_(p.hasShapes() ? shapes : nullptr) {}
+          records_(records), shapes_(p.hasShapes() ? shapes : nullptr), perPair_(perPair) {}
 
     void particlePairs(PairList& list, const Domain& domain) {
         const PeriodicImage image(domain);
@@ -169,6 +171,8 @@ public:
     // Pair k of the list, whose separation xi - xj (nearest image) is d.
     [[gnu::always_inline]] void pairContact(PairList& list, std::size_t k, const Vec3& d) {
         const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
+        if (perPair_) [[unlikely]]
+            currentPair_ = k;
         if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
             shapedPair(list, k, i, j, d);
             return;
@@ -432,6 +436,13 @@ private:
                                       const Arms& arms) {
         const Vec3 force = f.normalForce * n + f.tangentialForce;
         const Vec3 turn = n.cross(f.tangentialForce);  // n x force
+        if (perPair_ && j >= 0 && !oneWay_) [[unlikely]] {  // kept for the sums in id order
+            PairContribution& c = perPair_[currentPair_];
+            c.force += force;
+            c.torqueI -= arms.i * turn;
+            c.torqueJ -= arms.j * turn;
+            return;
+        }
         p_.force[i] += force;
         p_.torque[i] -= arms.i * turn;
         if (j >= 0 && !oneWay_) {
@@ -489,10 +500,14 @@ private:
         for (int l = 0; l < b.count; ++l) {
             const std::uint32_t i = b.i[l], j = b.j[l];
             const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
-            p_.force[i] += force;
-            p_.force[j] -= force;
-            p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
-            p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
+            if (perPair_) [[unlikely]] {
+                perPair_[b.k[l]] = {force, Vec3(b.tix[l], b.tiy[l], b.tiz[l]), Vec3(b.tjx[l], b.tjy[l], b.tjz[l])};
+            } else {
+                p_.force[i] += force;
+                p_.force[j] -= force;
+                p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
+                p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
+            }
             const Vec3 spring(b.sx[l], b.sy[l], b.sz[l]);
             list.history.set(b.k[l], {spring, b.fn[l], ContactHistory::touching});
             const double smallerRadius = std::min(b.ri[l], b.rj[l]);
@@ -524,15 +539,18 @@ private:
     ContactSummary& summary_;
     std::vector<ContactRecord>* records_;
     const std::vector<Superquadric>* shapes_;  // null in scenes of spheres only
+    PairContribution* perPair_;  // non-null: pair forces kept for sums in id order (IdOrderedForceSums.h)
+    std::size_t currentPair_ = 0;
 };
 
 template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                      std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr) {
+                      std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr,
+                      PairContribution* perPair = nullptr) {
     if (shapes && p.hasShapes()) placeShapedParticles(p, *shapes, list.shapedFrameScratch);
-    ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes);
+    ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair);
     loop.particlePairs(list, domain);
     loop.oneWayPairs(list, domain);
     loop.wallPairs(list, walls, motions);

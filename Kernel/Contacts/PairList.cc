@@ -91,12 +91,12 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     reach = skin + 2 * maxSpeed * dt;
     grid.findPairs(particles, domain, reach, pairs);
     const std::size_t owned = particles.owned();
-    if (particles.ghostCount > 0) {
+    if (particles.ghostCount > 0)
         std::erase_if(pairs, [owned](const ParticlePair& pair) { return pair.i >= owned && pair.j >= owned; });
+    if (particles.ghostCount > 0 || orientById)
         for (ParticlePair& pair : pairs)
-            if ((pair.i >= owned || pair.j >= owned) && particles.id[pair.i] > particles.id[pair.j])
+            if ((orientById || pair.i >= owned || pair.j >= owned) && particles.id[pair.i] > particles.id[pair.j])
                 std::swap(pair.i, pair.j);
-    }
     auto restore = [&](const std::vector<ParticlePair>& list, ContactHistories& histories) {
         histories.assign(list.size());
         for (std::size_t k = 0; k < list.size(); ++k) {

@@ -53,6 +53,7 @@ public:
     double skin = 0;
     double reach = 0;  // skin + 2 vmax dt at the last build
     bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
+    bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
 

@@ -2,8 +2,27 @@
 """Compares the last frames of .data files (Documentation/FileFormats/data.md) particle by
 particle: prints the largest position and velocity differences from the first file and checks
 them against a tolerance. Usage: compareRuns.py TOLERANCE REFERENCE.data OTHER.data...
-(TOLERANCE 0: the frames must be equal to the last digit.)"""
+(TOLERANCE 0: the frames must be equal to the last digit.)
+With .restart files (tolerance 0 only): the particles' whole states, 17 digits, by id, must be
+the same (Documentation/FileFormats/restart.md)."""
 import sys
+
+
+def restartParticles(path):
+    with open(path) as f:
+        lines = f.read().split("\n")
+    k = next(i for i, line in enumerate(lines) if line.startswith("particles "))
+    n = int(lines[k].split()[1])
+    return sorted(lines[k + 1:k + 1 + n], key=lambda line: int(line.split()[0]))
+
+
+if sys.argv[2].endswith(".restart"):
+    reference = restartParticles(sys.argv[2])
+    for path in sys.argv[3:]:
+        if restartParticles(path) != reference:
+            sys.exit(f"{path}: particle states differ from {sys.argv[2]}")
+        print(f"{path}: the same particle states as {sys.argv[2]}, to the bit ({len(reference)} particles)")
+    sys.exit(0)
 
 
 def frames(path):

@@ -8,7 +8,10 @@
 #  2. bitwise the same files run to run on the same number of ranks;
 #  3. a restart on the same number of ranks continues bitwise, on another to round-off: saved on
 #     2 ranks and restarted on 1, 2 and 3; saved on 4 and restarted on 2; saved on 1 and
-#     restarted on 4.
+#     restarted on 4;
+#  4. with --id-ordered-sums on: the same particle states to the bit on 1, 2, 3 and 4 ranks and
+#     in a serial run in another particle order, and a run saved on 2 ranks and restarted on 3
+#     writes bitwise the files of the uninterrupted run.
 # Usage: sameTrajectories.sh MPIRUN BENCHMARK compareRuns.py
 set -euo pipefail
 mpirun=("$1" --oversubscribe)
@@ -51,4 +54,16 @@ for saved in 4 1; do
   echo "saved on $saved ranks, restarted on $restarted:"
   $compare 1e-8 whole.data from$saved/part.data
 done
+
+for ranks in 1 2 3 4; do run $ranks ordered$ranks --end-time 0.2 --id-ordered-sums on; done
+"$benchmark" --files on --vtu off --name orderedReordered --reorder off --id-ordered-sums on --end-time 0.2 > orderedReordered.log
+echo "--id-ordered-sums on, 1 to 4 ranks and another particle order:"
+$compare 0 ordered1.data ordered2.data ordered3.data ordered4.data orderedReordered.data
+$compare 0 ordered1.restart ordered2.restart ordered3.restart ordered4.restart orderedReordered.restart
+run 2 orderedWhole --end-time 0.2 --output-interval 0.05 --id-ordered-sums on
+run 2 orderedPart --end-time 0.1 --output-interval 0.05 --id-ordered-sums on
+mkdir -p orderedRestart3 && cp orderedPart.* orderedRestart3/
+(cd orderedRestart3 && "${mpirun[@]}" -np 3 "$benchmark" --restart orderedPart.restart --end-time 0.2 --id-ordered-sums on > run.log)
+for f in data ene; do cmp orderedWhole.$f orderedRestart3/orderedPart.$f; done
+echo "--id-ordered-sums on, saved on 2 ranks, restarted on 3: bitwise the same .data and .ene"
 echo "parallel trajectories ok"
