@@ -441,7 +441,7 @@ void Simulation::initialise(bool restarted) {
     files_.reset();
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
     if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
-    if (onRanks()) splitScene(restarted);
+    if (onRanks()) splitScene();
     if (restarted) return;
 
     // Initial forces, and overlaps checked against the stricter initial limit.

@@ -188,7 +188,7 @@ private:
     void releaseGhosts();
     void rebalance();
     void renumberNewParticles();
-    void splitScene(bool restarted);
+    void splitScene();
     bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
     void agreeOnOverlaps(const std::string& diagnosis);
     void writeGatheredOutput();

@@ -15,7 +15,7 @@ namespace talus {
 
 // Every rank set up (or read) the whole scene; each keeps the particles of its slab and the
 // contact histories that involve them. The first step builds the list (and rebalances).
-void Simulation::splitScene(bool restarted) {
+void Simulation::splitScene() {
     require(runsOnRanks_, "driver '" + name() + "' has not been made rank-aware (setRunsOnRanks): its analysis "
                           "would see the particles of one rank only; run it without mpirun (Documentation/Parallel.md)");
     for (const Boundary* b : boundaries_)
@@ -23,7 +23,6 @@ void Simulation::splitScene(bool restarted) {
                                   "without mpirun (Documentation/Parallel.md lists what runs on ranks)");
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
-    (void)restarted;
     pendingHistories_ = list.carriedHistories(p);
     for (Vec3& x : p.position) state_.domain.wrap(x);
     split_->balance(p, state_.domain, /*replicated*/ true);
