@@ -1,7 +1,7 @@
 // The force loop's first pass (Contacts/PairSweep.h): the pairs it picks are exactly those a
 // direct evaluation of the rule picks (nearest periodic image closer than ri + rj + closing, or
 // a pending contact), in order, with their separations to the bit, whether the AVX-512 lanes or
-// the scalar loop decide.
+// the scalar loop decide (both forms are swept; without AVX-512 in the build both are the loop).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,17 +60,24 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             states.push_back(static_cast<ContactHistory::State>(random() % 7 == 0 ? 1 + random() % 2 : 0));
         }
         const double closing = 0.01;
-        std::vector<std::uint32_t> picked;
-        std::vector<Vec3> separations;
-        SweptPairs swept;
-        for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
-            sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(), n,
-                       radius.data(), states.data(), image, closing, swept);
-            for (std::size_t a = 0; a < swept.count; ++a) {
-                picked.push_back(swept.pair[a]);
-                separations.push_back(swept.separation(a));
+        std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> sweeps[2];
+        for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
+            std::vector<std::uint32_t> picked;
+            std::vector<Vec3> separations;
+            SweptPairs swept;
+            for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
+                sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(),
+                           n, radius.data(), states.data(), image, closing, swept, form);
+                for (std::size_t a = 0; a < swept.count; ++a) {
+                    picked.push_back(swept.pair[a]);
+                    separations.push_back(swept.separation(a));
+                }
             }
+            sweeps[form == SweepForm::lanes] = {picked, separations};
         }
+        const auto& [picked, separations] = sweeps[1];
+        EXPECT_EQ(sweeps[0].first, picked) << "the two forms pick the same pairs";
+        EXPECT_EQ(sweeps[0].second, separations) << "with the same separations";
         std::vector<std::uint32_t> expected;
         std::vector<Vec3> expectedSeparations;
         for (std::size_t k = 0; k < pairs.size(); ++k) {

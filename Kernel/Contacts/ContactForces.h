@@ -160,6 +160,9 @@ public:
         // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
         // next step, or just separated), then the contacts are computed for those alone.
         SweptPairs swept;
+        if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
+            chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), p_.radius.data(),
+                            list.history.states(), image, closing_, swept);
         for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
             sweepPairs(list.pairs.data(), begin, std::min(list.pairs.size(), begin + SweptPairs::capacity),
                        p_.position.data(), p_.size(), p_.radius.data(), list.history.states(), image, closing_, swept);
@@ -174,7 +177,7 @@ public:
         if (perPair_) [[unlikely]]
             currentPair_ = k;
         if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
-            shapedPair(list, k, i, j, d);
+            shapedPair(list, k, i, j, d.x(), d.y(), d.z());
             return;
         }
         const double sumR = p_.radius[i] + p_.radius[j];
@@ -321,8 +324,10 @@ private:
     // the step); while it stays positive the pair cannot touch and is not solved. Such a pair is
     // marked "approaching", so that the force loop's sweep visits it every step, also while its
     // bounding spheres are apart: the bound is then never stale.
-    [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& d) {
-        const Vec3 xj = p_.position[i] - d;  // j's image next to i
+    // (The separation comes as three numbers, in registers: a Vec3 would go through memory.)
+    [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
+                                      double dy, double dz) {
+        const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
         ContactHistory history = list.history.get(k);
         if (history.isApproaching() && history.gapBound() > 0) {
             const double closing = (p_.velocity[i] - p_.velocity[j]).norm() + p_.angularVelocity[i].norm() * p_.radius[i] +
@@ -381,11 +386,11 @@ private:
         c.otherAcceleration = 0;  // (only the treatment of contact ends uses it)
         c.effectiveRadius = g.effectiveRadius;
         c.inverseDistance = 0;  // the spring is projected (below), not rotated as for spheres
-        if (history.isTouching()) {
-            const double length = history.spring.norm();
+        if (history.isTouching()) {  // (one square root: the length ratio from the squared lengths)
+            const double length2 = history.spring.squaredNorm();
             history.spring -= history.spring.dot(n) * n;
-            const double projected = history.spring.norm();
-            if (projected > 0) history.spring *= length / projected;
+            const double projected2 = history.spring.squaredNorm();
+            if (projected2 > 0) history.spring *= std::sqrt(length2 / projected2);
         } else {
             history.spring.setZero();
         }

@@ -11,11 +11,20 @@
 // image by the same compare-and-shift as PeriodicImage::nearest, and compress-stores of the
 // picked indices and separations. Both versions make the same decisions and give the same
 // separations, bit for bit (the same operations in the same order).
+//
+// Which of the two runs is decided per process by timing (chooseSweepForm): the lanes' gathers
+// are fast on some processors and slow on others (on the AMD Zen 5 hosts of 2026-12-01 the
+// scalar loop made the whole step 6-7% faster; on the Intel-like host before, the lanes made
+// the sweep 1.5x faster).
 #pragma once
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define TALUS_AVX512_SWEEP 1
@@ -39,16 +48,35 @@ struct SweptPairs {
     Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
 };
 
-// Pairs [begin, end) of the list, at most SweptPairs::capacity of them.
+// The form of the sweep this process uses: the scalar loop, or the AVX-512 lanes where the
+// build has them. Undecided until chooseSweepForm has timed both; the environment variable
+// TALUS_SWEEP=scalar or TALUS_SWEEP=lanes fixes it (for measurements).
+enum class SweepForm { undecided, scalar, lanes };
+inline SweepForm& sweepForm() {
+#ifdef TALUS_AVX512_SWEEP
+    static SweepForm form = [] {
+        const char* fixed = std::getenv("TALUS_SWEEP");
+        if (fixed && std::strcmp(fixed, "scalar") == 0) return SweepForm::scalar;
+        if (fixed && std::strcmp(fixed, "lanes") == 0) return SweepForm::lanes;
+        return SweepForm::undecided;
+    }();
+#else
+    static SweepForm form = SweepForm::scalar;
+#endif
+    return form;
+}
+
+// Pairs [begin, end) of the list, at most SweptPairs::capacity of them, in the given form
+// (lanes: the AVX-512 lanes if the build has them, for as many whole groups of eight as fit).
 inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const Vec3* position,
                        [[maybe_unused]] std::size_t particleCount, const double* radius,
                        const ContactHistory::State* states, const PeriodicImage& image, double closing,
-                       SweptPairs& out) {
+                       SweptPairs& out, [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, k = begin;
 #ifdef TALUS_AVX512_SWEEP
     // (The gathers index the coordinates with 32-bit 3 i; GCC 12 warns about the intrinsics' own
     // undefined pass-through operands.)
-    const std::size_t vectorEnd = particleCount < (std::size_t{1} << 31) / 3 ? end : begin;
+    const std::size_t vectorEnd = form == SweepForm::lanes && particleCount < (std::size_t{1} << 31) / 3 ? end : begin;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
     static_assert(sizeof(ParticlePair) == 8 && sizeof(Vec3) == 24 && sizeof(ContactHistory::State) == 1);
@@ -100,6 +128,27 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
     }
     out.count = picked;
+}
+
+// Decides sweepForm() if undecided: sweeps the first chunk of a list both ways, alternating,
+// and keeps the faster (the fastest of 30 sweeps each, so that a busy machine's interruptions
+// do not decide). Called by the force loop on the first list long enough (a few chunks) for
+// the sweep to matter; the picks are the same either way, so only the speed depends on it.
+inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const Vec3* position,
+                            std::size_t particleCount, const double* radius, const ContactHistory::State* states,
+                            const PeriodicImage& image, double closing, SweptPairs& scratch) {
+    if (sweepForm() != SweepForm::undecided) return;
+    using Clock = std::chrono::steady_clock;
+    const std::size_t end = std::min(count, SweptPairs::capacity);
+    Clock::duration fastest[2] = {Clock::duration::max(), Clock::duration::max()};
+    for (int round = 0; round < 30; ++round)
+        for (int form = 0; form < 2; ++form) {
+            const Clock::time_point start = Clock::now();
+            sweepPairs(pairs, 0, end, position, particleCount, radius, states, image, closing, scratch,
+                       form == 0 ? SweepForm::scalar : SweepForm::lanes);
+            fastest[form] = std::min(fastest[form], Clock::now() - start);
+        }
+    sweepForm() = fastest[1] < fastest[0] ? SweepForm::lanes : SweepForm::scalar;
 }
 
 }  // namespace talus

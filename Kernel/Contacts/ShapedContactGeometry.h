@@ -47,18 +47,21 @@ inline void placeShapedParticles(const ParticleStore& p, const std::vector<Super
             frames[i] = {&shapes[static_cast<std::size_t>(p.shape[i])], p.position[i], p.orientation[i].toRotationMatrix()};
 }
 
-// A particle as a placed superquadric at `centre` (its own position or a periodic image); a
-// sphere partner becomes a sphere-shaped superquadric (kept in `sphere`, which must outlive the
-// result).
-inline PlacedSuperquadric placed(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames, std::size_t i,
-                                 const Vec3& centre, std::optional<Superquadric>& sphere) {
+// A particle as a placed superquadric at `centre` (its own position or a periodic image): its
+// frame itself if it is there, else a copy moved there (`moved`); a sphere partner becomes a
+// sphere-shaped superquadric (kept in `sphere`). The result refers to frames, moved or sphere.
+inline const PlacedSuperquadric& placed(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
+                                        std::size_t i, const Vec3& centre, std::optional<PlacedSuperquadric>& moved,
+                                        std::optional<Superquadric>& sphere) {
     if (p.shape[i] >= 0) {
-        PlacedSuperquadric body = frames[i];
-        body.centre = centre;
-        return body;
+        if (frames[i].centre == centre) return frames[i];
+        moved = frames[i];
+        moved->centre = centre;
+        return *moved;
     }
     sphere = Superquadric::sphere(p.radius[i]);
-    return {&*sphere, centre, Mat3::Identity()};
+    moved.emplace(&*sphere, centre, Mat3::Identity());
+    return *moved;
 }
 
 // Particles i and j, j at xj (its periodic image next to i); `history` holds the warm start.
@@ -67,7 +70,9 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
                                                 std::size_t i, std::size_t j, const Vec3& xj,
                                                 const ContactHistory& history, bool withRadius) {
     std::optional<Superquadric> sphereI, sphereJ;
-    const PlacedSuperquadric a = placed(p, frames, i, p.position[i], sphereI), b = placed(p, frames, j, xj, sphereJ);
+    std::optional<PlacedSuperquadric> movedI, movedJ;
+    const PlacedSuperquadric& a = placed(p, frames, i, p.position[i], movedI, sphereI);
+    const PlacedSuperquadric& b = placed(p, frames, j, xj, movedJ, sphereJ);
     SuperquadricContactPoint start{p.position[i] + history.warmPoint, history.warmMultiplier};
     const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr);
     ShapedContactGeometry g;

@@ -50,9 +50,15 @@ Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, cons
 Vec4 newtonStep(const Residual& r, double mu, double scale) {
     const Mat3 A = scale * (r.i.hessian + mu * mu * r.j.hessian);
     const Vec3 b = scale * 2 * mu * r.j.gradient, c = r.i.gradient - r.j.gradient;
-    const double determinant = A.determinant(), size = A.norm();
-    if (std::abs(determinant) > 1e-12 * size * size * size) {
-        const Mat3 inverse = A.inverse();
+    // A^-1 = adj(A) / det A with the cofactors computed once; the test |det A| > 1e-12 |A|^3
+    // (Frobenius norm) squared, so that no square root is taken.
+    Mat3 adjugate;
+    adjugate.col(0) = A.col(1).cross(A.col(2));
+    adjugate.col(1) = A.col(2).cross(A.col(0));
+    adjugate.col(2) = A.col(0).cross(A.col(1));
+    const double determinant = A.col(0).dot(adjugate.col(0)), size2 = A.squaredNorm();
+    if (determinant * determinant > 1e-24 * size2 * size2 * size2) {
+        const Mat3 inverse = adjugate.transpose() / determinant;
         const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.head<3>();
         const double dmu = (r.phi[3] - c.dot(inverseR)) / c.dot(inverseB);
         Vec4 step;
@@ -75,6 +81,8 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
     Vec3 x = start.point;
     double mu = start.multiplier;
     Residual r = residual(i, j, x, mu, scale);
+    double residual2 = r.phi.squaredNorm();  // (squared norms throughout: no square roots)
+    const double tolerance2 = settings.tolerance * settings.tolerance;
     for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
         result.iterations = iteration;
         const Vec4 step = newtonStep(r, mu, scale);
@@ -82,27 +90,29 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
         // Halve the step while the residual does not decrease.
         double t = 1;
         Residual next = residual(i, j, x + step.head<3>(), mu + step[3], scale);
-        while (!(next.phi.norm() < r.phi.norm()) && t > 1e-10) {
+        double next2 = next.phi.squaredNorm();
+        while (!(next2 < residual2) && t > 1e-10) {
             t *= 0.5;
             next = residual(i, j, x + t * step.head<3>(), mu + t * step[3], scale);
+            next2 = next.phi.squaredNorm();
         }
-        if (!(next.phi.norm() < r.phi.norm())) {
+        if (!(next2 < residual2)) {
             // No decrease along the Newton direction: at the solution to round-off, or stuck.
-            result.converged = r.phi.norm() <= settings.tolerance * 10;
+            result.converged = residual2 <= 100 * tolerance2;
             break;
         }
         x += t * step.head<3>();
         mu += t * step[3];
         r = next;
+        residual2 = next2;
         // Converged when the step was small and the residual is, or when the residual alone is a
         // hundred times below the tolerance (Newton's next step would be smaller still: a warm
         // start then ends after one iteration).
         const double gradientScale = 1 + scale * r.i.gradient.norm();
-        const bool residualSmall = std::abs(r.phi[3]) <= settings.tolerance &&
-                                   r.phi.head<3>().norm() <= settings.tolerance * gradientScale;
-        const bool residualTiny = std::abs(r.phi[3]) <= 0.01 * settings.tolerance &&
-                                  r.phi.head<3>().norm() <= 0.01 * settings.tolerance * gradientScale;
-        if ((residualSmall && t * step.head<3>().norm() <= settings.tolerance * scale) || residualTiny) {
+        const double gradient2 = r.phi.head<3>().squaredNorm(), limit2 = tolerance2 * gradientScale * gradientScale;
+        const bool residualSmall = std::abs(r.phi[3]) <= settings.tolerance && gradient2 <= limit2;
+        const bool residualTiny = std::abs(r.phi[3]) <= 0.01 * settings.tolerance && gradient2 <= 1e-4 * limit2;
+        if ((residualSmall && t * t * step.head<3>().squaredNorm() <= tolerance2 * scale * scale) || residualTiny) {
             result.converged = true;
             break;
         }

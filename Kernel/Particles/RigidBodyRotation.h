@@ -88,12 +88,25 @@ inline double rotationalKineticEnergy(const Quat& orientation, const Vec3& angul
 
 namespace detail {
 
+// sin x and cos x. A step turns a particle by a small angle (|omega| dt ~ 1e-3), where the
+// Taylor series to x^9 and x^10 is exact to rounding (the next terms are below 1e-22 relative
+// for |x| <= 1/16) and several times cheaper than the library's sin and cos.
+inline void sinCos(double x, double& s, double& c) {
+    if (!(std::abs(x) <= 0.0625)) {
+        s = std::sin(x), c = std::cos(x);
+        return;
+    }
+    const double x2 = x * x;
+    s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880)))));
+    c = 1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800)))));
+}
+
 // The exact flow of T_k = c M_k^2 / 2 (k a body axis) for a time t: the body turns about its own
 // axis k at the constant rate c M_k, so q <- q (cos(phi/2), sin(phi/2) e_k) with phi = c M_k t,
 // and the body components of the lab-fixed L turn the other way, M <- R_k(-phi) M, as in DLM.
 inline void rotateAboutBodyAxis(Quat& q, Vec3& bodyMomentum, int k, double rate, double t) {
-    const double halfAngle = 0.5 * rate * bodyMomentum[k] * t;
-    const double c = std::cos(halfAngle), s = std::sin(halfAngle);
+    double s, c;
+    sinCos(0.5 * rate * bodyMomentum[k] * t, s, c);
     Quat turn(c, 0, 0, 0);
     turn.vec()[k] = s;
     q = q * turn;
@@ -125,7 +138,8 @@ inline void rotateAboutBodyAxis(Quat& q, Vec3& bodyMomentum, int k, double rate,
 //   - a body of revolution (I1 = I2 or I2 = I3: spheroids, most superquadrics in practice) has one
 //     residual rate zero, the remaining pieces commute, and the step is exact: the precession is
 //     right to round-off at any dt; a sphere-like body (I1 = I2 = I3) turns exactly about L;
-//   - four trigonometric pairs per step instead of five;
+//   - four trigonometric pairs per step instead of five (two for a body of revolution: with the
+//     inner rate zero, the two outer half-steps about the same axis are one whole step);
 //   - for 25 random triaxial ellipsoids (semi-axes 0.5-2, random omega, |omega| dt ~ 0.02, 2e4
 //     steps) the energy error was 60 times smaller than DLM's x y z y x (geometric mean 1.9e-7 vs
 //     1.2e-5) and 18 times smaller than DLM with its best axis order for each body (3.3e-6). Only
@@ -148,8 +162,12 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
 
     // Isotropic part: about the lab L, i.e. a left (lab-frame) multiplication.
     const double momentum = angularMomentum.norm();
-    if (momentum > 0)
-        orientation = Quat(Eigen::AngleAxisd(momentum * medianRate * dt, angularMomentum / momentum)) * orientation;
+    if (momentum > 0) {
+        double s, c;
+        detail::sinCos(0.5 * momentum * medianRate * dt, s, c);
+        const Vec3 axis = (s / momentum) * angularMomentum;
+        orientation = Quat(c, axis.x(), axis.y(), axis.z()) * orientation;
+    }
 
     int outer = (median + 1) % 3, inner = (median + 2) % 3;
     double outerRate = 1 / I[outer] - medianRate, innerRate = 1 / I[inner] - medianRate;
@@ -157,7 +175,11 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
         std::swap(outer, inner);
         std::swap(outerRate, innerRate);
     }
-    if (outerRate != 0) {  // a residual rate is exactly zero for a body of revolution: skip it
+    // A residual rate is exactly zero for a body of revolution: skip it (both, for a sphere-like body).
+    if (outerRate != 0 && innerRate == 0) {
+        Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;
+        detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, dt);
+    } else if (outerRate != 0) {
         Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;
         detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
         detail::rotateAboutBodyAxis(orientation, bodyMomentum, inner, innerRate, dt);
