@@ -194,12 +194,20 @@ public:
                 }
             }
         }
+        const Vec3 relativeVelocity = p_.velocity[i] - p_.velocity[j];
+        const bool apartBefore = !touching && list.history.state(k) == ContactHistory::apart;
+        // Apart with nothing pending and moving apart (v.d >= 0, so v.n >= 0: decided before
+        // any square root; in a fast flow most picked pairs are such): no force, and no work
+        // beyond noting that the pair applied no force this step.
+        if (apartBefore && !(relativeVelocity.dot(d) < 0)) {
+            list.history.clearLastNormalForce(k);
+            return;
+        }
         const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
-        const Vec3 n = d * inverseDistance, relativeVelocity = p_.velocity[i] - p_.velocity[j];
-        // Apart with nothing pending, and not closing the gap within the next step at the
-        // present speed: no force (approachForce would push nothing), and no work beyond
-        // noting that the pair applied no force this step.
-        if (!touching && list.history.state(k) == ContactHistory::apart) {
+        const Vec3 n = d * inverseDistance;
+        // Apart and approaching, but not closing the gap within the next step at the present
+        // speed: likewise (approachForce would push nothing).
+        if (apartBefore) {
             const double u = relativeVelocity.dot(n);
             if (!(u < 0 && distance - sumR < -u * dt_)) {
                 list.history.clearLastNormalForce(k);
