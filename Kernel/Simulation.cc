@@ -57,6 +57,13 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
                rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
                require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
            });
+    cl.add("max-overlap", "F",
+           "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
+           "blow-up (default 0.25)",
+           [&c](const std::string& v) {
+               c.maxOverlapFraction = CommandLine::toDouble("max-overlap", v);
+               require(c.maxOverlapFraction > 0, "flag --max-overlap must be positive");
+           });
     cl.add("progress-interval", "S", "wall seconds between progress lines", [&c](const std::string& v) {
         c.progressInterval = CommandLine::toDouble("progress-interval", v);
         require(c.progressInterval > 0, "flag --progress-interval must be positive");
@@ -446,12 +453,12 @@ void Simulation::initialise(bool restarted) {
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
-    computeForces(&records_, /*checkOverlaps*/ false);
+    computeForces(&records_, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
     writeOutput();
 }
 
-void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkLimit) {
+void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck check) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
@@ -494,7 +501,8 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, bool checkLi
         for (const ContactRecord& r : *records) elasticEnergy_ += r.elasticEnergy;
         if (onRanks()) elasticEnergy_ = sumOverRanks(elasticEnergy_);
     }
-    if (checkLimit) checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false);
+    if (check != OverlapCheck::none)
+        checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, check == OverlapCheck::now);
 }
 
 std::size_t Simulation::slotOf(std::uint64_t id) const { return slotOf(id, false); }
@@ -572,7 +580,8 @@ void Simulation::integrate(bool recordContacts) {
     state_.time += dt;
     ++state_.step;
     for (Boundary* b : boundaries_) b->afterDrift(*this);
-    computeForces(recordContacts ? &records_ : nullptr);
+    computeForces(recordContacts ? &records_ : nullptr,
+                  recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep);
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i]) continue;
         p.velocity[i] += half * p.invMass[i] * p.force[i];

@@ -173,8 +173,13 @@ protected:
 private:
     void initialise(bool restarted);
     void checkTimeStep() const;
-    void computeForces(std::vector<ContactRecord>* records, bool checkLimit = true);
-    void checkOverlaps(double limit, bool initial);
+    // How computeForces checks the overlaps against their limit: not at all (the caller checks),
+    // agreed by all ranks at once, or (on ranks) agreed with the next step's neighbourhood: one
+    // collective per step instead of two. Output steps and the last step agree at once, so that
+    // no file holds a state past a blow-up that a rank has found.
+    enum class OverlapCheck { none, now, withNextStep };
+    void computeForces(std::vector<ContactRecord>* records, OverlapCheck check = OverlapCheck::now);
+    void checkOverlaps(double limit, bool initial, bool agreeNow = true);
     std::size_t slotOf(std::uint64_t id, bool ghosts) const;
     void integrate(bool recordContacts);
     void moveWithPrescribedMotion();
@@ -191,6 +196,7 @@ private:
     void splitScene();
     bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
     void agreeOnOverlaps(const std::string& diagnosis);
+    std::string overlapsToAgree_;  // this rank's overlap blow-up, for the next step's agreement
     void writeGatheredOutput();
 
     using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;

@@ -70,7 +70,7 @@ void Simulation::checkTimeStep() const {
 
 // Overlaps beyond the limit stop the run with the worst pair named: at the start (initial) they
 // are bad input, during the run a blow-up.
-void Simulation::checkOverlaps(double limit, bool initial) {
+void Simulation::checkOverlaps(double limit, bool initial, bool agreeNow) {
     std::string diagnosis;
     if (summary_.maxOverlapFraction > limit) {
         std::ostringstream m;
@@ -92,8 +92,10 @@ void Simulation::checkOverlaps(double limit, bool initial) {
             m << "%); the contact is too soft for the impact speed, or the time step too large";
         diagnosis = m.str();
     }
-    if (onRanks())
+    if (onRanks() && agreeNow)
         agreeOnOverlaps(diagnosis);
+    else if (onRanks())
+        overlapsToAgree_ = diagnosis;  // (updateNeighbourhoodOnRanks agrees on it)
     else if (!diagnosis.empty())
         throw Error(diagnosis);
 }

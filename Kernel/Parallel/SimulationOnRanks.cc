@@ -36,19 +36,22 @@ void Simulation::splitScene() {
 void Simulation::requestRebalance() { rebalancePending_ = true; }
 
 // All ranks agree whether to rebuild (any rank's particle moved too far), on the largest speed,
-// and on stopping if a rank found a non-finite position. A rebuild drops the ghosts, rebalances
+// and on stopping if a rank found a non-finite position now or overlaps beyond the limit at the
+// end of the last step (Simulation::OverlapCheck): the one collective of a step that writes no
+// output. A rebuild drops the ghosts, rebalances
 // if asked, migrates particles with their histories, reorders, and makes the ghosts anew;
 // otherwise the ghosts are brought up to date.
 bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     const double dt = state_.settings.timeStep;
-    std::string failure;
+    std::string failure = std::move(overlapsToAgree_);  // the earlier of two diagnoses
+    overlapsToAgree_.clear();
     bool rebuild = false;
     try {
         rebuild = list.needsRebuild(p, state_.domain, state_.time, dt);
     } catch (const Error& e) {
-        failure = e.what();
+        if (failure.empty()) failure = e.what();
     }
     // A rebalance that is due (the same step on every rank) needs a list build to act.
     const bool due = rebalanceInterval_ > 0 && state_.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
