@@ -23,53 +23,6 @@ void requireWord(const std::string& word, const std::string& what) {
 
 }  // namespace
 
-Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
-    RunSettings& c = state_.settings;
-    CommandLine& cl = *commandLine_;
-    cl.add("end-time", "T", "simulated time at which the run stops",
-           [this](const std::string& v) { setEndTime(CommandLine::toDouble("end-time", v)); });
-    cl.add("dt", "DT", "time step",
-           [this](const std::string& v) { setTimeStep(CommandLine::toDouble("dt", v)); });
-    cl.add("output-interval", "T", "simulated time between saved frames (0: first and last)",
-           [this](const std::string& v) { setOutputInterval(CommandLine::toDouble("output-interval", v)); });
-    cl.add("name", "NAME", "output file name (NAME.data, NAME.fstat, ...)",
-           [this](const std::string& v) { setName(v); });
-    cl.add("restart", "FILE", "continue the run saved in FILE (a .restart file)",
-           [this](const std::string& v) { restartFile_ = v; });
-    cl.add("skin", "S", "neighbour-list skin distance",
-           [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
-    cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
-           [this](const std::string& v) { setCellSizeRatio(CommandLine::toDouble("cell-size-ratio", v)); });
-    cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
-           [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
-    cl.add("vtu", "on|off", "write ParaView .vtu frames",
-           [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
-    cl.add("files", "on|off", "write any output files at all",
-           [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
-    cl.add("id-ordered-sums", "on|off",
-           "sum each particle's contact forces in the order of its partners' ids: the same result to the bit on "
-           "any number of ranks, for a second pass over the pairs (spheres, no maser)",
-           [this](const std::string& v) { idOrderedSums_ = CommandLine::toBool("id-ordered-sums", v); });
-    cl.add("rebalance-interval", "T",
-           "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
-           "(0: at the start, at saves and on request only)",
-           [this](const std::string& v) {
-               rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
-               require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
-           });
-    cl.add("max-overlap", "F",
-           "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
-           "blow-up (default 0.25)",
-           [&c](const std::string& v) {
-               c.maxOverlapFraction = CommandLine::toDouble("max-overlap", v);
-               require(c.maxOverlapFraction > 0, "flag --max-overlap must be positive");
-           });
-    cl.add("progress-interval", "S", "wall seconds between progress lines", [&c](const std::string& v) {
-        c.progressInterval = CommandLine::toDouble("progress-interval", v);
-        require(c.progressInterval > 0, "flag --progress-interval must be positive");
-    });
-}
-
 Simulation::~Simulation() = default;
 
 // --- settings ---
