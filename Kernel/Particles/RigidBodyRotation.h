@@ -175,15 +175,18 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
         std::swap(outer, inner);
         std::swap(outerRate, innerRate);
     }
-    // A residual rate is exactly zero for a body of revolution: skip it (both, for a sphere-like body).
-    if (outerRate != 0 && innerRate == 0) {
+    // A residual rate is exactly zero for a body of revolution (both for a sphere-like body): its
+    // rotation is skipped, and the two outer half-steps, then about the same axis with nothing
+    // between them, are one whole step.
+    if (outerRate != 0) {
         Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;
-        detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, dt);
-    } else if (outerRate != 0) {
-        Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;
-        detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
-        detail::rotateAboutBodyAxis(orientation, bodyMomentum, inner, innerRate, dt);
-        detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
+        if (innerRate == 0) {
+            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, dt);
+        } else {
+            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
+            detail::rotateAboutBodyAxis(orientation, bodyMomentum, inner, innerRate, dt);
+            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
+        }
     }
     orientation.normalize();
 }
