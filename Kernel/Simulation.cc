@@ -383,6 +383,7 @@ void Simulation::initialise(bool restarted) {
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
     split_ = std::make_unique<DomainSplit>(worldCommunicator());
+    if (rankGrid_[0] > 0) split_->setGrid(rankGrid_);
     grid_ = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
         double rmin = INFINITY;

@@ -6,6 +6,7 @@
 // wrap, boundaries (addBoundary), neighbour-list update when needed, forces, half kick.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -229,6 +230,7 @@ private:
     // Rank boundaries by particle count (Documentation/Parallel.md), at the start, at saves, on
     // request, and every rebalanceInterval_ of simulated time.
     double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
+    std::array<int, 3> rankGrid_{0, 0, 0};  // --rank-grid; zeros: all ranks along x
     bool runsOnRanks_ = false;
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;

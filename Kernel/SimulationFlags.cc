@@ -43,6 +43,10 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
                rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
                require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
            });
+    cl.add("rank-grid", "GXxGYxGZ",
+           "under mpirun: the ranks along x, y and z, e.g. 2x2x1 (their product is the number of ranks; default: "
+           "all along x)",
+           [this](const std::string& v) { rankGrid_ = CommandLine::toGrid("rank-grid", v); });
     cl.add("max-overlap", "F",
            "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
            "blow-up (default 0.25)",

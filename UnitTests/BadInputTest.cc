@@ -127,6 +127,10 @@ TEST(BadInput, CommandLineFlags) {
         {{"--layers", "99999999999"}, {"--layers", "not an integer"}},
         {{"--name", "two words"}, {"name", "one word"}},
         {{"stray"}, {"unexpected argument 'stray'"}},
+        {{"--rank-grid", "2x2"}, {"--rank-grid", "'2x2'", "three positive whole numbers"}},
+        {{"--rank-grid", "0x1x1"}, {"--rank-grid", "'0x1x1'"}},
+        {{"--rank-grid", "2x1x1x"}, {"--rank-grid", "'2x1x1x'"}},
+        {{"--rank-grid", "-1x1x1"}, {"--rank-grid", "'-1x1x1'"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.flags.front());
@@ -141,6 +145,15 @@ TEST(BadInput, CommandLineFlags) {
         expectError([&] { s.solveOrThrow(c.flags); }, c.expected);
         EXPECT_FALSE(setUp) << "bad flags must be rejected before the scene is built";
     }
+}
+
+// A rank grid that does not multiply to the number of ranks (one, here) stops the run at its
+// start, naming the flag and both numbers.
+TEST(BadInput, RankGridMustMatchTheRanks) {
+    SceneSimulation s;
+    s.setup = smallScene;
+    expectError([&] { s.solveOrThrow({"--rank-grid", "2x1x1", "--end-time", "0.001", "--files", "off"}); },
+                {"rank grid 2x1x1 has 2 cells", "the run has 1 ranks", "--rank-grid"});
 }
 
 // The other side of the checks above: unusual but valid values pass.

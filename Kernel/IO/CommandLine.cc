@@ -80,6 +80,20 @@ int CommandLine::toInt(const std::string& flag, const std::string& value) {
     return static_cast<int>(x);
 }
 
+std::array<int, 3> CommandLine::toGrid(const std::string& flag, const std::string& value) {
+    std::array<int, 3> grid{0, 0, 0};
+    std::size_t from = 0;
+    for (int a = 0; a < 3; ++a) {
+        const std::size_t to = a < 2 ? value.find('x', from) : value.size();
+        const std::string part = to == std::string::npos ? "" : value.substr(from, to - from);
+        const bool digits = !part.empty() && part.size() < 9 && part.find_first_not_of("0123456789") == std::string::npos;
+        if (to == std::string::npos || !digits || (grid[a] = std::stoi(part)) < 1)
+            throw Error("flag --" + flag + ": '" + value + "' is not three positive whole numbers joined by x (e.g. 2x2x1)");
+        from = to + 1;
+    }
+    return grid;
+}
+
 bool CommandLine::toBool(const std::string& flag, const std::string& value) {
     if (value == "on" || value == "1" || value == "true" || value == "yes") return true;
     if (value == "off" || value == "0" || value == "false" || value == "no") return false;

@@ -2,6 +2,7 @@
 // ones a driver adds. Unknown flags, missing values and bad values are errors naming the flag.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -24,6 +25,8 @@ public:
     static double toDouble(const std::string& flag, const std::string& value);
     static int toInt(const std::string& flag, const std::string& value);
     static bool toBool(const std::string& flag, const std::string& value);
+    // Three positive whole numbers joined by 'x', e.g. 2x2x1.
+    static std::array<int, 3> toGrid(const std::string& flag, const std::string& value);
 
 private:
     struct Flag {

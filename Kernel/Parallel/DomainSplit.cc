@@ -43,56 +43,79 @@ void keepSlots(ParticleStore& p, Keep keep) {
 
 }  // namespace
 
-// A histogram of x over the particles' extent (4096 bins; counts summed over ranks), then each
-// interior boundary where the cumulative count reaches its share, interpolated in its bin.
-// Integer counts make the sum exact, so every rank gets the same boundaries.
-void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool replicated) {
-    const int n = ranks();
-    bounds_.clear();
-    if (n == 1) return;
-    double range[2] = {-INFINITY, -INFINITY};  // -(smallest x), largest x
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        range[0] = std::max(range[0], -p.position[i].x());
-        range[1] = std::max(range[1], p.position[i].x());
-    }
-    if (!replicated) communicator_.allReduce(range, 2, Communicator::Reduction::max);
-    double lo = -range[0], hi = range[1];
-    if (domain.periodic[0]) lo = domain.lo.x(), hi = domain.hi.x();
-    if (!(hi > lo)) {  // no particles, or all at one x: equal lengths of the domain
-        lo = domain.lo.x(), hi = domain.hi.x();
-        for (int r = 1; r < n; ++r) bounds_.push_back(lo + (hi - lo) * r / n);
-        return;
-    }
-    constexpr int bins = 4096;
-    std::vector<double> count(bins, 0.0);
-    const double width = (hi - lo) / bins;
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        const int b = std::clamp(static_cast<int>((p.position[i].x() - lo) / width), 0, bins - 1);
-        count[b] += 1;
-    }
-    if (!replicated) communicator_.allReduce(count.data(), bins, Communicator::Reduction::sum);
-    double total = 0;
-    for (double c : count) total += c;
-    double below = 0;
-    int b = 0;
-    for (int r = 1; r < n; ++r) {
-        const double target = total * r / n;
-        while (b < bins - 1 && below + count[b] < target) below += count[b++];
-        const double fraction = count[b] > 0 ? std::clamp((target - below) / count[b], 0.0, 1.0) : 0.0;
-        bounds_.push_back(lo + (b + fraction) * width);
-    }
-    // The ranks must agree on the boundaries to the bit, or a particle would have two owners or
-    // none: whole-number counts make the sums exact, and the maximum over ranks makes sure.
-    if (!replicated) communicator_.allReduce(bounds_.data(), n - 1, Communicator::Reduction::max);
+void DomainSplit::setGrid(const std::array<int, 3>& ranksPerAxis) {
+    const auto [gx, gy, gz] = ranksPerAxis;
+    require(gx >= 1 && gy >= 1 && gz >= 1 && gx * gy * gz == ranks(),
+            "rank grid " + std::to_string(gx) + "x" + std::to_string(gy) + "x" + std::to_string(gz) + " has " +
+                std::to_string(gx * gy * gz) + " cells, but the run has " + std::to_string(ranks()) +
+                " ranks (mpirun -np): --rank-grid must multiply to the number of ranks");
+    grid_ = ranksPerAxis;
+    for (auto& b : bounds_) b.clear();
 }
 
-int DomainSplit::ownerOf(double x) const {
-    return static_cast<int>(std::upper_bound(bounds_.begin(), bounds_.end(), x) - bounds_.begin());
+// Along each split axis: a histogram of the coordinate over the particles' extent (4096 bins;
+// counts summed over ranks), then each interior boundary where the cumulative count reaches its
+// share, interpolated in its bin. Integer counts make the sum exact, so every rank gets the same
+// boundaries.
+void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool replicated) {
+    for (int a = 0; a < 3; ++a) {
+        const int n = grid_[a];
+        std::vector<double>& bounds = bounds_[a];
+        bounds.clear();
+        if (n == 1) continue;
+        double range[2] = {-INFINITY, -INFINITY};  // -(smallest coordinate), largest
+        for (std::size_t i = 0; i < p.owned(); ++i) {
+            range[0] = std::max(range[0], -p.position[i][a]);
+            range[1] = std::max(range[1], p.position[i][a]);
+        }
+        if (!replicated) communicator_.allReduce(range, 2, Communicator::Reduction::max);
+        double lo = -range[0], hi = range[1];
+        if (domain.periodic[a]) lo = domain.lo[a], hi = domain.hi[a];
+        if (!(hi > lo)) {  // no particles, or all at one coordinate: equal lengths of the domain
+            lo = domain.lo[a], hi = domain.hi[a];
+            for (int r = 1; r < n; ++r) bounds.push_back(lo + (hi - lo) * r / n);
+            continue;
+        }
+        constexpr int bins = 4096;
+        std::vector<double> count(bins, 0.0);
+        const double width = (hi - lo) / bins;
+        for (std::size_t i = 0; i < p.owned(); ++i) {
+            const int b = std::clamp(static_cast<int>((p.position[i][a] - lo) / width), 0, bins - 1);
+            count[b] += 1;
+        }
+        if (!replicated) communicator_.allReduce(count.data(), bins, Communicator::Reduction::sum);
+        double total = 0;
+        for (double c : count) total += c;
+        double below = 0;
+        int b = 0;
+        for (int r = 1; r < n; ++r) {
+            const double target = total * r / n;
+            while (b < bins - 1 && below + count[b] < target) below += count[b++];
+            const double fraction = count[b] > 0 ? std::clamp((target - below) / count[b], 0.0, 1.0) : 0.0;
+            bounds.push_back(lo + (b + fraction) * width);
+        }
+        // The ranks must agree on the boundaries to the bit, or a particle would have two owners
+        // or none: whole-number counts make the sums exact, and the maximum over ranks makes sure.
+        if (!replicated) communicator_.allReduce(bounds.data(), n - 1, Communicator::Reduction::max);
+    }
+}
+
+int DomainSplit::cellAlong(int axis, double x) const {
+    const std::vector<double>& b = bounds_[axis];
+    return static_cast<int>(std::upper_bound(b.begin(), b.end(), x) - b.begin());
+}
+
+std::array<int, 3> DomainSplit::cellOf(int rank) const {
+    return {rank % grid_[0], rank / grid_[0] % grid_[1], rank / (grid_[0] * grid_[1])};
+}
+
+int DomainSplit::ownerOf(const Vec3& x) const {
+    return rankAt(cellAlong(0, x.x()), cellAlong(1, x.y()), cellAlong(2, x.z()));
 }
 
 void DomainSplit::keepOwnShare(ParticleStore& p) const {
     require(p.ghostCount == 0, "keepOwnShare: the store holds ghosts");
-    keepSlots(p, [&](std::size_t i) { return ownerOf(p.position[i].x()) == rank(); });
+    keepSlots(p, [&](std::size_t i) { return ownerOf(p.position[i]) == rank(); });
 }
 
 void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried) {
@@ -102,12 +125,19 @@ void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried
     std::unordered_map<std::uint64_t, int> leaving;  // id -> new owner
     std::vector<std::size_t> count(ranks(), 0);
     std::vector<Bytes> particles(ranks()), histories(ranks());
+    const std::array<int, 3> here = cellOf(me);
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const int owner = ownerOf(p.position[i].x());
+        const int owner = ownerOf(p.position[i]);
         if (owner == me) continue;
         leaving.emplace(p.id[i], owner);
         ++migrated;
-        migratedFar += std::abs(owner - me) > 1;
+        const std::array<int, 3> there = cellOf(owner);
+        bool far = false;
+        for (int a = 0; a < 3; ++a) {
+            migratedAlong[a] += there[a] != here[a];
+            far = far || std::abs(there[a] - here[a]) > 1;
+        }
+        migratedFar += far;
         Packer to(particles[owner]);
         packParticle(p, i, to);
         ++count[owner];
@@ -155,25 +185,17 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
     const Stopwatch watch(seconds.rebuild);
     require(p.ghostCount == 0, "makeGhosts: the store holds ghosts already");
     const int me = rank(), n = ranks();
-    const bool periodic = domain.periodic[0];
-    const double L = domain.length(0), lo = domain.lo.x(), hi = domain.hi.x();
     const OneWayPeriodicBox& box = domain.oneWay;
     sendSlots_.assign(n, {});
-    std::vector<int> targets;
-    auto addRanksMeeting = [&](double from, double to) {
-        for (int r = ownerOf(from); r <= ownerOf(to); ++r)
-            if (r != me && std::find(targets.begin(), targets.end(), r) == targets.end()) targets.push_back(r);
+    // The cells along an axis that meet [from, to], each once.
+    auto addCellsMeeting = [&](int a, double from, double to, std::vector<int>& cells) {
+        for (int c = cellAlong(a, from); c <= cellAlong(a, to); ++c)
+            if (std::find(cells.begin(), cells.end(), c) == cells.end()) cells.push_back(c);
     };
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-        const double x = p.position[i].x();
-        targets.clear();
-        // A particle of an active maser box near one of its faces pairs with those near the other
-        // face through the box's image (PairList::oneWayPairs): its ghosts go there too.
-        if (box.active && box.isMember(p.species[i])) {
-            if (box.hi - x < width) addRanksMeeting(x - box.length() - width, x - box.length() + width);
-            if (x - box.lo < width) addRanksMeeting(x + box.length() - width, x + box.length() + width);
-        }
-        // The ranks whose slabs meet [x - width, x + width], through the periodic images too.
+    // The cells along an axis that meet [x - width, x + width], through the periodic images too.
+    auto cellsNear = [&](int a, double x, std::vector<int>& cells) {
+        const bool periodic = domain.periodic[a];
+        const double L = domain.length(a), lo = domain.lo[a], hi = domain.hi[a];
         for (int image = periodic ? -1 : 0; image <= (periodic ? 1 : 0); ++image) {
             double from = x + image * L - width, to = x + image * L + width;
             if (periodic) {
@@ -181,9 +203,31 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
                 to = std::min(to, std::nextafter(hi, lo));
                 if (from > to) continue;
             }
-            addRanksMeeting(from, to);
+            addCellsMeeting(a, from, to, cells);
         }
-        for (int r : targets) sendSlots_[r].push_back(i);
+    };
+    // The ranks meeting the cube [x - width, x + width]^3 (and its images) are the products of
+    // the cells meeting each of its sides.
+    std::array<std::vector<int>, 3> cells;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        const Vec3& x = p.position[i];
+        for (int a = 0; a < 3; ++a) {
+            cells[a].clear();
+            if (grid_[a] == 1)
+                cells[a].push_back(0);
+            else
+                cellsNear(a, x[a], cells[a]);
+        }
+        // A particle of an active maser box near one of its faces pairs with those near the other
+        // face through the box's image (PairList::oneWayPairs): its ghosts go there too.
+        if (box.active && box.isMember(p.species[i]) && grid_[0] > 1) {
+            if (box.hi - x.x() < width) addCellsMeeting(0, x.x() - box.length() - width, x.x() - box.length() + width, cells[0]);
+            if (x.x() - box.lo < width) addCellsMeeting(0, x.x() + box.length() - width, x.x() + box.length() + width, cells[0]);
+        }
+        for (int cz : cells[2])
+            for (int cy : cells[1])
+                for (int cx : cells[0])
+                    if (const int r = rankAt(cx, cy, cz); r != me) sendSlots_[r].push_back(i);
     }
     std::vector<Bytes> outgoing(n);
     for (int r = 0; r < n; ++r) {

@@ -1,7 +1,9 @@
-// The MPI domain split (DESIGN.md "Parallel", Documentation/Parallel.md): each rank owns the
-// particles in its slab of the domain along x, and holds as ghosts copies of the particles of
-// other ranks within the ghost width (the largest interaction distance plus the list's reach)
-// of its slab.
+// The MPI domain split (DESIGN.md "Parallel", Documentation/Parallel.md): the ranks form a
+// Cartesian grid of gx x gy x gz cells (all along x unless set otherwise: a long chute splits
+// along its flow); each rank owns the particles in its cell of the domain, and holds as ghosts
+// copies of the particles of other ranks within the ghost width (the largest interaction
+// distance plus the list's reach) of its cell. The cell boundaries along each axis are placed
+// for equal particle counts along that axis.
 //
 // The pair list is built over owned particles and ghosts and lasts as long as in a serial run:
 // between rebuilds a particle moves less than half the reach, so every pair that can touch is
@@ -18,6 +20,7 @@
 // which a particle's contact forces are summed (round-off; Documentation/Parallel.md).
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -40,15 +43,20 @@ public:
     int ranks() const { return communicator_.size(); }
     bool isParallel() const { return communicator_.size() > 1; }
 
-    // Places the slab boundaries so that each rank owns an equal share of the particles (a
-    // histogram of x; the same result on every rank, whatever the particles' order).
-    // replicated: every rank holds the whole scene (after setup or a restart read), so nothing
-    // needs to be summed over ranks.
+    // The ranks per axis (their product is ranks()); rank r sits in the cell (r mod gx,
+    // (r / gx) mod gy, r / (gx gy)). Before the first balance.
+    void setGrid(const std::array<int, 3>& ranksPerAxis);
+    const std::array<int, 3>& grid() const { return grid_; }
+    // Places the cell boundaries along each split axis so that each layer of cells holds an equal
+    // share of the particles (a histogram along the axis; the same result on every rank,
+    // whatever the particles' order). replicated: every rank holds the whole scene (after setup
+    // or a restart read), so nothing needs to be summed over ranks.
     void balance(const ParticleStore& particles, const Domain& domain, bool replicated);
-    // The rank whose slab holds x: slabs are [bound(r), bound(r + 1)) with the outer ends open.
-    int ownerOf(double x) const;
-    // The interior slab boundaries, rank r's slab starting at boundaries()[r - 1].
-    const std::vector<double>& boundaries() const { return bounds_; }
+    // The rank whose cell holds x: along each axis, cells are [bound(c), bound(c + 1)) with the
+    // outer ends open.
+    int ownerOf(const Vec3& x) const;
+    // The interior cell boundaries along an axis, cell c starting at boundaries(axis)[c - 1].
+    const std::vector<double>& boundaries(int axis) const { return bounds_[axis]; }
 
     // Every rank holds the whole scene (after setup or a restart read): keeps its own particles.
     void keepOwnShare(ParticleStore& particles) const;
@@ -71,9 +79,11 @@ public:
     std::vector<CarriedHistory> gatherHistories(const std::vector<CarriedHistory>& mine);
 
     std::size_t ghostsSent() const;
-    // Particles this rank sent to other ranks so far, and those of them that went to a rank more
-    // than one slab away (for three or more ranks along a periodic x: across the periodic face).
+    // Particles this rank sent to other ranks so far; those that changed cell along each axis;
+    // and those that went more than one cell away along an axis (for three or more ranks along
+    // a periodic axis: across the periodic face).
     std::uint64_t migrated = 0, migratedFar = 0;
+    std::array<std::uint64_t, 3> migratedAlong{0, 0, 0};
 
     // Wall seconds this rank spent on the split (Documentation/Parallel.md): sending ghosts each
     // step, agreeing with the other ranks each step (which includes waiting for the slowest:
@@ -93,8 +103,13 @@ public:
     };
 
 private:
+    int cellAlong(int axis, double x) const;
+    std::array<int, 3> cellOf(int rank) const;
+    int rankAt(int x, int y, int z) const { return x + grid_[0] * (y + grid_[1] * z); }
+
     Communicator& communicator_;
-    std::vector<double> bounds_;  // ranks() - 1 interior boundaries, ascending
+    std::array<int, 3> grid_{communicator_.size(), 1, 1};
+    std::array<std::vector<double>, 3> bounds_;  // grid_[a] - 1 interior boundaries along a, ascending
     // Ghost exchange of the current list: slots sent to each partner, ghosts received from each.
     std::vector<int> sendTo_, receiveFrom_;
     std::vector<std::vector<std::uint32_t>> sendSlots_;

@@ -8,8 +8,8 @@
 // the mass and the momentum must equal their initial values: the count and id sums exactly, the
 // mass to round-off, and the momentum to round-off of the sum of |m v| (contact forces come in
 // equal and opposite pairs, also across ranks, so momentum is conserved up to summation order).
-// The run fails unless particles did change rank, and, on three ranks or more, across the
-// periodic face too.
+// The run fails unless particles did change rank along every split axis (--rank-grid), and,
+// with three ranks or more along x, across the periodic face too.
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -72,17 +72,23 @@ public:
     }
 
     void actionsAfterSolve() override {
-        std::vector<double> moved = {double(domainSplit()->migrated), double(domainSplit()->migratedFar),
-                                     double(domainSplit()->ghostsSent())};
+        const DomainSplit& split = *domainSplit();
+        std::vector<double> moved = {double(split.migrated), double(split.migratedFar), double(split.ghostsSent()),
+                                     double(split.migratedAlong[0]), double(split.migratedAlong[1]),
+                                     double(split.migratedAlong[2])};
         sumOverRanks(moved);
+        const auto [gx, gy, gz] = split.grid();
         if (rank() == 0)
-            std::printf("ParallelConservation: %d ranks, %llu steps: count, ids, mass and momentum kept every step "
-                        "(worst momentum change %.2g of sum |m v|); %.0f particles changed rank, %.0f of them across "
-                        "the periodic face, %.0f ghosts at the end\n",
-                        ranks(), static_cast<unsigned long long>(lastRun().steps), worstMomentumError_, moved[0],
-                        moved[1], moved[2]);
+            std::printf("ParallelConservation: %d ranks (%dx%dx%d), %llu steps: count, ids, mass and momentum kept every "
+                        "step (worst momentum change %.2g of sum |m v|); %.0f particles changed rank (cell along x, "
+                        "y, z: %.0f, %.0f, %.0f), %.0f of them across the periodic face, %.0f ghosts at the end\n",
+                        ranks(), gx, gy, gz, static_cast<unsigned long long>(lastRun().steps), worstMomentumError_,
+                        moved[0], moved[3], moved[4], moved[5], moved[1], moved[2]);
         if (ranks() > 1 && moved[0] == 0) throw CollectiveError("no particle changed rank: the test tested nothing", rank() != 0);
-        if (ranks() > 2 && moved[1] == 0)
+        for (int a = 0; a < 3; ++a)
+            if (split.grid()[a] > 1 && moved[3 + a] == 0)
+                throw CollectiveError("no particle changed cell along axis " + std::to_string(a), rank() != 0);
+        if (gx > 2 && moved[1] == 0)
             throw CollectiveError("no particle crossed the periodic face between ranks", rank() != 0);
     }
 

@@ -9,7 +9,9 @@
 #  3. a restart on the same number of ranks continues bitwise, on another to round-off: saved on
 #     2 ranks and restarted on 1, 2 and 3; saved on 4 and restarted on 2; saved on 1 and
 #     restarted on 4;
-#  4. with --id-ordered-sums on: the same particle states to the bit on 1, 2, 3 and 4 ranks and
+#  4. the same to round-off with the ranks in a grid (--rank-grid 1x2x1, 2x2x1, 1x2x2: cells cut
+#     across the chute and along its height, which is not periodic);
+#  5. with --id-ordered-sums on: the same particle states to the bit on 1, 2, 3 and 4 ranks and
 #     in a serial run in another particle order, and a run saved on 2 ranks and restarted on 3
 #     writes bitwise the files of the uninterrupted run.
 # Usage: sameTrajectories.sh MPIRUN BENCHMARK compareRuns.py
@@ -30,6 +32,11 @@ echo "round-off of a serial run (particles in another order):"
 $compare 1 serial.data reordered.data
 echo "1 to 4 ranks:"
 $compare 1e-8 serial.data ranks2.data ranks3.data ranks4.data
+run 2 grid1x2x1 --end-time 0.2 --rank-grid 1x2x1
+run 4 grid2x2x1 --end-time 0.2 --rank-grid 2x2x1
+run 4 grid1x2x2 --end-time 0.2 --rank-grid 1x2x2
+echo "ranks in grids 1x2x1, 2x2x1, 1x2x2:"
+$compare 1e-8 serial.data grid1x2x1.data grid2x2x1.data grid1x2x2.data
 
 run 2 again2 --end-time 0.2
 for f in data fstat ene; do cmp ranks2.$f again2.$f; done
@@ -56,10 +63,11 @@ for saved in 4 1; do
 done
 
 for ranks in 1 2 3 4; do run $ranks ordered$ranks --end-time 0.2 --id-ordered-sums on; done
+run 4 orderedGrid --end-time 0.2 --id-ordered-sums on --rank-grid 2x2x1
 "$benchmark" --files on --vtu off --name orderedReordered --reorder off --id-ordered-sums on --end-time 0.2 > orderedReordered.log
-echo "--id-ordered-sums on, 1 to 4 ranks and another particle order:"
-$compare 0 ordered1.data ordered2.data ordered3.data ordered4.data orderedReordered.data
-$compare 0 ordered1.restart ordered2.restart ordered3.restart ordered4.restart orderedReordered.restart
+echo "--id-ordered-sums on, 1 to 4 ranks, a 2x2x1 grid and another particle order:"
+$compare 0 ordered1.data ordered2.data ordered3.data ordered4.data orderedGrid.data orderedReordered.data
+$compare 0 ordered1.restart ordered2.restart ordered3.restart ordered4.restart orderedGrid.restart orderedReordered.restart
 run 2 orderedWhole --end-time 0.2 --output-interval 0.05 --id-ordered-sums on
 run 2 orderedPart --end-time 0.1 --output-interval 0.05 --id-ordered-sums on
 mkdir -p orderedRestart3 && cp orderedPart.* orderedRestart3/
