@@ -128,6 +128,30 @@ TEST(ChuteStatistics, SnapshotOfKnownParticles) {
     const double rotational = 0.5 * 4 * (0.4 * m1 * 0.25 + 0.4 * m2 * 0.0625);
     EXPECT_NEAR(s.kineticEnergy, (0.5 * m1 * 4 + 0.5 * m2 * 2 + rotational) / 8, 1e-15);
     EXPECT_DOUBLE_EQ(s.smallConcentration, 0.015625 / (0.125 + 0.015625));
+    // One sphere of each kind: the large at z = 1, the small at z = 3 (small on top).
+    EXPECT_DOUBLE_EQ(s.segregation, (1.0 - 3.0) / (s.height / 2));
+}
+
+// The segregation index of layers built to be mixed, segregated and inverted.
+TEST(ChuteStatistics, SegregationIndexOfLayeredBeds) {
+    // A column of 2n equal spheres at heights 0.5, 1.5, ...; which are small decides the index.
+    auto bed = [](auto isSmall) {
+        ParticleStore p;
+        const int n = 10;
+        for (int k = 0; k < 2 * n; ++k) {
+            p.position.push_back(Vec3(0.5, 0.5, k + 0.5)); p.velocity.push_back(Vec3::Zero());
+            p.angularVelocity.push_back(Vec3::Zero()); p.force.push_back(Vec3::Zero());
+            p.torque.push_back(Vec3::Zero()); p.radius.push_back(0.5); p.mass.push_back(1);
+            p.invMass.push_back(1); p.invInertia.push_back(10); p.species.push_back(isSmall(k, n) ? 1 : 0);
+            p.id.push_back(p.id.size()); p.fixed.push_back(false); p.motion.push_back(-1);
+        }
+        return measureChute(p, 1, 1, 1, 0).segregation;
+    };
+    // Height 2 * mean z = 2n; small below: mean heights n/2 and 3n/2, index (3n/2 - n/2) / n = 1.
+    EXPECT_NEAR(bed([](int k, int n) { return k < n; }), 1.0, 1e-14);
+    EXPECT_NEAR(bed([](int k, int n) { return k >= n; }), -1.0, 1e-14);
+    EXPECT_NEAR(bed([](int k, int) { return k % 4 == 0 || k % 4 == 3; }), 0.0, 1e-14);  // alternating pairs: mixed
+    EXPECT_EQ(bed([](int, int) { return false; }), 0.0);  // one kind only
 }
 
 TEST(ChuteStatistics, PlateauDetectorFindsAPlateauAndNotARamp) {

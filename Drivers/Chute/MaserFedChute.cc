@@ -7,7 +7,8 @@
 // type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
 // 0.375 between them (a sphere on the base: its own). dt = 1e-4.
 // Phase 1: the maser, a periodic box [0, 20] (--maser-length), holds the spheres for an inflow
-// height h (--inflow-height, default 6: a solids volume of 0.6 h 20 6) and develops a flow. It
+// height h (--inflow-height, default 6: a solids volume of 0.6 h 20 6), mixed or, with
+// --segregated-start 1, small under large, and develops a flow. It
 // is sampled every time unit; once its kinetic energy and mass flux have been on a plateau for
 // --window samples (trend below --tolerance of the mean) and t >= --earliest-activation, or at
 // --latest-activation at the latest, the maser is activated. Phase 2: the base is copied
@@ -34,7 +35,7 @@ class MaserFedChute : public Chute {
 public:
     double angle = 23, sizeRatio = 1.5, inflowHeight = 6, maserLength = 20, chuteLength = 100, width = 6;
     double sampleInterval = 1, tolerance = 0.02, earliestActivation = 50, latestActivation = 200;
-    int seed = 1, window = 50;
+    int seed = 1, window = 50, segregatedStart = 0;
     enum ChuteSpecies : std::size_t { large, small, base, chuteSpeciesCount };
 
     MaserFedChute() {
@@ -50,6 +51,7 @@ public:
         addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
         addFlag("earliest-activation", "the maser is not activated before this time", earliestActivation);
         addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
+        addFlag("segregated-start", "1: the maser's small spheres start below its large ones", segregatedStart);
         keepInRestart("run.activatedAt", activatedAt_);
         keepInRestart("run.boxParticles", boxParticles_);
         keepInRestart("run.oneWayReactions", oneWayReactions_);
@@ -86,14 +88,18 @@ public:
         maserSmall_ = maser.maserSpecies(*this, small);
         maserBase_ = maser.maserSpecies(*this, base);
         addBase(ChuteBase::disordered, 1, maserBase_, static_cast<std::uint64_t>(seed));
-        // The maser's spheres, at rest at random places in a loose layer (packing fraction 0.2).
+        // The maser's spheres, at rest at random places in a loose layer (packing fraction 0.2),
+        // mixed, or with --segregated-start the small ones in its lower half: a steady flow is
+        // segregated (large on top), and a mixed start takes hundreds of time units to get there.
+        require(segregatedStart == 0 || segregatedStart == 1, "--segregated-start must be 0 or 1, got " + str(segregatedStart));
         random().seed(static_cast<std::uint64_t>(seed));
         const double solids = 0.6 * inflowHeight * maserLength * width;
         const auto largeCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dL * dL * dL)));
         const auto smallCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dS * dS * dS)));
-        const double top = 1 + solids / (0.2 * maserLength * width);
-        for (auto [count, s, d] : {std::tuple{largeCount, maserLarge_, dL}, {smallCount, maserSmall_, dS}}) {
-            InsertionBoundary box(Vec3(0, 0, 1), Vec3(maserLength, width, top), SizeDistribution::byNumber().add(s, d / 2));
+        const double top = 1 + solids / (0.2 * maserLength * width), middle = segregatedStart ? (1 + top) / 2 : 1;
+        for (auto [count, s, d, bottom, ceiling] : {std::tuple{largeCount, maserLarge_, dL, middle, top},
+                                                    {smallCount, maserSmall_, dS, 1.0, segregatedStart ? middle : top}}) {
+            InsertionBoundary box(Vec3(0, 0, bottom), Vec3(maserLength, width, ceiling), SizeDistribution::byNumber().add(s, d / 2));
             const InsertionReport report = box.insertCount(*this, count);
             if (rank() == 0) std::printf("%s\n", report.describe().c_str());
             require(report.complete, "could not place the maser's spheres: " + report.describe());
@@ -198,12 +204,13 @@ private:
             series_.open(name() + ".series", std::ios::app);
             if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
                 series_ << "# t active maserKineticEnergy maserMassFlux maserMeanVelocity maserHeight maserSmallConcentration"
-                           " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front\n";
+                           " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front"
+                           " maserSegregation\n";
         }
         series_ << time() << ' ' << (activatedAt_ >= 0) << ' ' << box.kineticEnergy << ' ' << box.massFlux << ' '
                 << box.meanVelocity << ' ' << box.height << ' ' << box.smallConcentration << ' ' << maser.crossings() << ' '
                 << maser.createdMass(large) << ' ' << maser.createdMass(small) << ' ' << c.chute << ' ' << c.chuteMass
-                << ' ' << outlet.count() << ' ' << outlet.mass() << ' ' << c.front << std::endl;
+                << ' ' << outlet.count() << ' ' << outlet.mass() << ' ' << c.front << ' ' << box.segregation << std::endl;
     }
 
     // Created = in the chute + deleted, to the particle; the maser keeps its spheres.

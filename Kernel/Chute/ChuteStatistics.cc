@@ -11,9 +11,10 @@ namespace talus {
 
 namespace {
 
-// The sums a snapshot is made of: mass, m z, m vx, kinetic energy, volume, small volume.
+// The sums a snapshot is made of: mass, m z, m vx, kinetic energy, volume, small volume, and
+// the volume-weighted heights v z of the small and of the other particles.
 std::vector<double> chuteSums(const ParticleStore& p, std::size_t smallSpecies, double xMin, double xMax) {
-    std::vector<double> sum(6, 0.0);
+    std::vector<double> sum(8, 0.0);
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || !(p.position[i].x() >= xMin && p.position[i].x() < xMax)) continue;
         const double m = p.mass[i], v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
@@ -23,7 +24,9 @@ std::vector<double> chuteSums(const ParticleStore& p, std::size_t smallSpecies, 
         sum[3] += 0.5 * m * p.velocity[i].squaredNorm() +
                   (p.invInertia[i] > 0 ? 0.5 * p.angularVelocity[i].squaredNorm() / p.invInertia[i] : 0);
         sum[4] += v;
-        if (p.species[i] == smallSpecies) sum[5] += v;
+        const bool small = p.species[i] == smallSpecies;
+        if (small) sum[5] += v;
+        sum[small ? 6 : 7] += v * p.position[i].z();
     }
     return sum;
 }
@@ -41,6 +44,9 @@ ChuteSnapshot snapshotOf(const std::vector<double>& sum, double length, double w
     s.massFlux /= length * width;
     s.kineticEnergy /= length * width;
     s.smallConcentration = volume > 0 ? smallVolume / volume : 0;
+    const double otherVolume = volume - smallVolume;
+    if (smallVolume > 0 && otherVolume > 0 && s.height > 0)
+        s.segregation = (sum[7] / otherVolume - sum[6] / smallVolume) / (s.height / 2);
     return s;
 }
 

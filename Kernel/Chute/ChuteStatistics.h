@@ -24,6 +24,11 @@ struct ChuteSnapshot {
     double meanVelocity = 0;    // mass-weighted mean vx
     double height = 0;          // flow height: twice the mass-weighted mean z (a uniform layer on z = 0)
     double smallConcentration = 0;  // volume fraction of the particles of the small species
+    // How far the sizes have separated: (zOthers - zSmall) / (height / 2), with z the
+    // volume-weighted mean height of the small species and of all other particles. 0 for a mixed
+    // layer, 1 for a layer of small particles under an equal volume of others, negative for
+    // small on top; 0 without both kinds.
+    double segregation = 0;
 };
 // Over the mobile particles with xMin <= x < xMax (all by default); length and width are those
 // of the region measured.
