@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <unordered_map>
 
 #include "IO/CommandLine.h"
 #include "IO/OutputFiles.h"
@@ -68,8 +69,13 @@ void Simulation::addFlag(const std::string& name, const std::string& help, int& 
     keepInRestart("flag." + name, value);
 }
 
-void Simulation::keepInRestart(const std::string& name, double& value) { addKept({name, &value, nullptr}); }
-void Simulation::keepInRestart(const std::string& name, int& value) { addKept({name, nullptr, &value}); }
+void Simulation::keepInRestart(const std::string& name, double& value) { addKept({name, &value, nullptr, {}, {}}); }
+void Simulation::keepInRestart(const std::string& name, int& value) { addKept({name, nullptr, &value, {}, {}}); }
+void Simulation::keepInRestart(const std::string& name, std::function<std::vector<double>()> save,
+                               std::function<void(const std::vector<double>&)> restore) {
+    require(save && restore, "keepInRestart: '" + name + "' needs both a save and a restore function");
+    addKept({name, nullptr, nullptr, std::move(save), std::move(restore)});
+}
 
 void Simulation::addKept(KeptValue value) {
     require(!value.name.empty() && value.name.find_first_of(" \t\n") == std::string::npos,
@@ -81,21 +87,39 @@ void Simulation::addKept(KeptValue value) {
 
 void Simulation::saveKeptValues() {
     state_.keptValues.clear();
-    for (const KeptValue& k : kept_) state_.keptValues.emplace_back(k.name, k.real ? *k.real : *k.integer);
+    for (const KeptValue& k : kept_) {
+        if (!k.saveList) {
+            state_.keptValues.emplace_back(k.name, k.real ? *k.real : *k.integer);
+            continue;
+        }
+        const std::vector<double> values = k.saveList();
+        state_.keptValues.emplace_back(k.name + ".size", static_cast<double>(values.size()));
+        for (std::size_t i = 0; i < values.size(); ++i) state_.keptValues.emplace_back(k.name + "." + std::to_string(i), values[i]);
+    }
 }
 
 // Every kept value must be in the file: a restart file of another driver (or of an older build
 // of this one) would otherwise continue with values that were never saved.
 void Simulation::restoreKeptValues(const std::string& restartFile) {
+    const std::unordered_map<std::string, double> values(state_.keptValues.begin(), state_.keptValues.end());
+    auto saved = [&](const std::string& name) {
+        const auto it = values.find(name);
+        require(it != values.end(), restartFile + ": no value '" + name + "' (a restart file of another driver?)");
+        return it->second;
+    };
     for (const KeptValue& k : kept_) {
-        const auto it = std::find_if(state_.keptValues.begin(), state_.keptValues.end(),
-                                     [&k](const auto& saved) { return saved.first == k.name; });
-        require(it != state_.keptValues.end(),
-                restartFile + ": no value '" + k.name + "' (a restart file of another driver?)");
         if (k.real)
-            *k.real = it->second;
-        else
-            *k.integer = static_cast<int>(it->second);
+            *k.real = saved(k.name);
+        else if (k.integer)
+            *k.integer = static_cast<int>(saved(k.name));
+        else {
+            const double size = saved(k.name + ".size");
+            require(size >= 0 && size == std::floor(size) && size <= static_cast<double>(state_.keptValues.size()),
+                    restartFile + ": '" + k.name + ".size' is not a list length");
+            std::vector<double> list(static_cast<std::size_t>(size));
+            for (std::size_t i = 0; i < list.size(); ++i) list[i] = saved(k.name + "." + std::to_string(i));
+            k.restoreList(list);
+        }
     }
 }
 

@@ -62,6 +62,12 @@ public:
     // and unique.
     void keepInRestart(const std::string& name, double& value);
     void keepInRestart(const std::string& name, int& value);
+    // A list of numbers kept the same way (a detector's recent samples, running sums): `save`
+    // gives it at every save (on every rank at once, so it may sum over ranks), `restore` takes
+    // it back when the run restarts (on every rank: what is summed over ranks must be put back
+    // on one of them only). Saved as NAME.size and NAME.0, NAME.1, ...
+    void keepInRestart(const std::string& name, std::function<std::vector<double>()> save,
+                       std::function<void(const std::vector<double>&)> restore);
 
     // --- the scene ---
     void setGravity(const Vec3& g) { state_.gravity = g; }
@@ -216,6 +222,8 @@ private:
         std::string name;
         double* real = nullptr;
         int* integer = nullptr;
+        std::function<std::vector<double>()> saveList;  // a list, when set
+        std::function<void(const std::vector<double>&)> restoreList;
     };
     std::vector<KeptValue> kept_;
     void addKept(KeptValue value);

@@ -154,6 +154,22 @@ TEST(ChuteStatistics, SegregationIndexOfLayeredBeds) {
     EXPECT_EQ(bed([](int, int) { return false; }), 0.0);  // one kind only
 }
 
+// A detector saved half-way and restored into another (as a restart does) decides as the
+// original does from then on.
+TEST(ChuteStatistics, PlateauDetectorStateRoundTrip) {
+    PlateauDetector original(10, 0.01), restored(4, 0.5);
+    auto sample = [](int k) { return std::vector<double>{k < 15 ? 1.0 + 0.01 * k : 1.15, 2.0}; };
+    for (int k = 1; k <= 12; ++k) original.add(k, sample(k));
+    restored.restore(original.state());
+    EXPECT_EQ(restored.samples(), 12u);
+    EXPECT_EQ(restored.state(), original.state());
+    for (int k = 13; k <= 40; ++k) EXPECT_EQ(restored.add(k, sample(k)), original.add(k, sample(k))) << "sample " << k;
+    EXPECT_TRUE(original.steady());
+    EXPECT_EQ(restored.steadySince(), original.steadySince());
+    test::expectError([&] { restored.restore({10, 0.01, 3}); }, {"at least 5 numbers"});
+    test::expectError([&] { restored.restore({4, 0.01, 3, -1, 2, 1, 2, 3}); }, {"do not fit its window"});
+}
+
 TEST(ChuteStatistics, PlateauDetectorFindsAPlateauAndNotARamp) {
     PlateauDetector constant(10, 0.01), ramp(10, 0.01), late(10, 0.01);
     for (int k = 1; k <= 9; ++k) EXPECT_FALSE(constant.add(k, {3.0, -2.0}));

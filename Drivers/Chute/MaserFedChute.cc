@@ -56,6 +56,9 @@ public:
         keepInRestart("run.boxParticles", boxParticles_);
         keepInRestart("run.oneWayReactions", oneWayReactions_);
         for (std::size_t s = 0; s < 2; ++s) keepInRestart("run.boxMassDisplacement." + std::to_string(s), boxMassDisplacement_[s]);
+        // A maser saved before activation goes on watching for its plateau where it stopped.
+        keepInRestart("run.plateau", [this] { return plateau_.state(); },
+                      [this](const std::vector<double>& v) { plateau_.restore(v); });
         setRunsOnRanks(true);  // under mpirun: sums over ranks, files and messages from rank 0
     }
 

@@ -42,6 +42,16 @@ public:
         addFlag("window", "samples on a plateau that make the flow steady", window);
         addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
         setRunsOnRanks(true);  // under mpirun: sums over ranks, files and messages from rank 0
+        // A restarted run goes on detecting the plateau and averaging where it stopped.
+        keepInRestart("run.plateau", [this] { return plateau_.state(); },
+                      [this](const std::vector<double>& v) { plateau_.restore(v); });
+        keepInRestart("run.steadySamples", [this] { return snapshotNumbers(steadySamples_); },
+                      [this](const std::vector<double>& v) { steadySamples_ = snapshotsFromNumbers(v); });
+        keepInRestart("run.profile", [this] { return profile_.state(); },
+                      [this](const std::vector<double>& v) {
+                          profile_ = profileOfThisChute();  // (the flags are back already)
+                          profile_.restore(v);
+                      });
     }
 
     void setupInitialConditions() override {
@@ -70,7 +80,7 @@ public:
             require(report.complete, "could not place the start configuration: " + report.describe());
         }
         plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
-        profile_ = DepthProfile(0.25, 40, length, width, smallSpecies_);
+        profile_ = profileOfThisChute();
     }
 
     void actionsAfterTimeStep() override {
@@ -97,7 +107,7 @@ public:
             return;
         }
         steadySamples_.push_back(s);
-        profile_.add(particles());
+        profile_.add(particles(), this);
     }
 
     void actionsAfterSolve() override {
@@ -129,6 +139,8 @@ public:
     }
 
 private:
+    DepthProfile profileOfThisChute() const { return DepthProfile(0.25, 40, length, width, smallSpecies_); }
+
     static constexpr double smallDiameter = 0.79370052598409979;  // 2^(-1/3): half the volume
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
     PlateauDetector plateau_{200, 0.02};

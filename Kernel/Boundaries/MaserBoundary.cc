@@ -11,6 +11,8 @@ MaserBoundary::MaserBoundary(Simulation& s, double lo, double hi, std::size_t sp
     : speciesCount_(species, 0), speciesMass_(species, 0) {
     setBox(lo, hi);
     s.addBoundary(*this);
+    s.keepInRestart(name + ".lo", lo_);  // (a driver sets the box in its set-up, which a restart skips)
+    s.keepInRestart(name + ".hi", hi_);
     s.keepInRestart(name + ".crossings", crossings_);
     s.keepInRestart(name + ".mass", mass_);
     s.keepInRestart(name + ".backward", backward_);

@@ -1,5 +1,6 @@
 #include "Chute/ChuteStatistics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -64,6 +65,34 @@ ChuteSnapshot measureChute(const Simulation& s, double length, double width, std
     return snapshotOf(sum, length, width, s.time());
 }
 
+namespace {
+
+template <class Snapshot, class F>
+void forEachField(Snapshot& s, F&& f) {
+    for (auto* field : {&s.time, &s.kineticEnergy, &s.massFlux, &s.meanVelocity, &s.height, &s.smallConcentration,
+                        &s.segregation})
+        f(*field);
+}
+constexpr std::size_t snapshotFields = 7;
+
+}  // namespace
+
+std::vector<double> snapshotNumbers(const std::vector<ChuteSnapshot>& snapshots) {
+    std::vector<double> numbers;
+    numbers.reserve(snapshots.size() * snapshotFields);
+    for (const ChuteSnapshot& s : snapshots) forEachField(s, [&](double x) { numbers.push_back(x); });
+    return numbers;
+}
+
+std::vector<ChuteSnapshot> snapshotsFromNumbers(const std::vector<double>& numbers) {
+    require(numbers.size() % snapshotFields == 0, "chute snapshots: " + std::to_string(numbers.size()) +
+                                                      " numbers are not a whole number of snapshots");
+    std::vector<ChuteSnapshot> snapshots(numbers.size() / snapshotFields);
+    std::size_t at = 0;
+    for (ChuteSnapshot& s : snapshots) forEachField(s, [&](double& x) { x = numbers[at++]; });
+    return snapshots;
+}
+
 PlateauDetector::PlateauDetector(std::size_t window, double tolerance) : window_(window), tolerance_(tolerance) {
     require(window >= 4, "steady-state window must be at least 4 samples, got " + std::to_string(window));
     require(tolerance > 0, "steady-state tolerance must be positive");
@@ -73,8 +102,10 @@ bool PlateauDetector::add(double time, const std::vector<double>& values) {
     require(history_.empty() || values.size() == history_.front().size(),
             "steady-state detector: every sample must have the same number of series");
     history_.push_back(values);
+    ++samples_;
+    if (history_.size() > window_) history_.erase(history_.begin());
     if (steady() || history_.size() < window_) return steady();
-    const std::size_t start = history_.size() - window_;
+    const std::size_t start = 0;
     const double n = static_cast<double>(window_), meanIndex = 0.5 * (n - 1);
     for (std::size_t q = 0; q < values.size(); ++q) {
         double mean = 0;
@@ -90,6 +121,24 @@ bool PlateauDetector::add(double time, const std::vector<double>& values) {
     }
     steadySince_ = time;
     return true;
+}
+
+std::vector<double> PlateauDetector::state() const {
+    std::vector<double> v = {static_cast<double>(window_), tolerance_, static_cast<double>(samples_), steadySince_,
+                             static_cast<double>(history_.empty() ? 0 : history_.front().size())};
+    for (const std::vector<double>& sample : history_) v.insert(v.end(), sample.begin(), sample.end());
+    return v;
+}
+
+void PlateauDetector::restore(const std::vector<double>& v) {
+    require(v.size() >= 5, "steady-state detector: a saved state needs at least 5 numbers");
+    const auto series = static_cast<std::size_t>(v[4]);
+    require(series == 0 ? v.size() == 5 : (v.size() - 5) % series == 0 && (v.size() - 5) / series <= v[0],
+            "steady-state detector: the saved samples do not fit its window");
+    *this = PlateauDetector(static_cast<std::size_t>(v[0]), v[1]);
+    samples_ = static_cast<std::size_t>(v[2]);
+    steadySince_ = v[3];
+    for (std::size_t at = 5; at < v.size(); at += series) history_.emplace_back(v.begin() + at, v.begin() + at + series);
 }
 
 MeanAndError batchMean(const std::vector<double>& samples, std::size_t batches) {
@@ -123,27 +172,44 @@ DepthProfile::DepthProfile(double bin, double top, double length, double width, 
     momentum_.assign(n, 0);
 }
 
-void DepthProfile::add(const ParticleStore& p) {
+void DepthProfile::add(const ParticleStore& p, const Simulation* s) {
     ++samples_;
+    const std::size_t n = volume_.size();
+    std::vector<double> sample(4 * n, 0.0);  // volume, small volume, mass, momentum per slab
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || p.position[i].z() < 0) continue;
         const auto k = static_cast<std::size_t>(p.position[i].z() / bin_);
-        if (k >= volume_.size()) continue;
+        if (k >= n) continue;
         const double v = 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
-        volume_[k] += v;
-        if (p.species[i] == smallSpecies_) smallVolume_[k] += v;
-        mass_[k] += p.mass[i];
-        momentum_[k] += p.mass[i] * p.velocity[i].x();
+        sample[k] += v;
+        if (p.species[i] == smallSpecies_) sample[n + k] += v;
+        sample[2 * n + k] += p.mass[i];
+        sample[3 * n + k] += p.mass[i] * p.velocity[i].x();
     }
+    if (s && s->onRanks()) s->sumOverRanks(sample);
+    std::size_t at = 0;
+    for (auto* sums : {&volume_, &smallVolume_, &mass_, &momentum_})
+        for (std::size_t k = 0; k < n; ++k) (*sums)[k] += sample[at++];
+}
+
+std::vector<double> DepthProfile::state() const {
+    std::vector<double> v = {static_cast<double>(samples_)};
+    for (const auto* sums : {&volume_, &smallVolume_, &mass_, &momentum_}) v.insert(v.end(), sums->begin(), sums->end());
+    return v;
+}
+
+void DepthProfile::restore(const std::vector<double>& v) {
+    const std::size_t n = volume_.size();
+    require(v.size() == 1 + 4 * n, "depth profile: the saved sums have " + std::to_string(v.size()) + " numbers, not " +
+                                       std::to_string(1 + 4 * n));
+    samples_ = static_cast<std::size_t>(v[0]);
+    std::size_t at = 1;
+    for (auto* sums : {&volume_, &smallVolume_, &mass_, &momentum_})
+        for (std::size_t k = 0; k < n; ++k) (*sums)[k] = v[at++];
 }
 
 void DepthProfile::write(const std::string& path, const Simulation* s) const {
-    if (s && s->onRanks()) {
-        DepthProfile all = *this;
-        for (auto* sums : {&all.volume_, &all.smallVolume_, &all.mass_, &all.momentum_}) s->sumOverRanks(*sums);
-        if (s->rank() == 0) all.write(path);
-        return;
-    }
+    if (s && s->rank() != 0) return;
     std::ofstream out(path);
     if (!out) throw Error("cannot write depth profile " + path);
     out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";

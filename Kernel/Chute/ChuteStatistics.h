@@ -34,6 +34,9 @@ struct ChuteSnapshot {
 // of the region measured.
 ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
                            double xMin = -INFINITY, double xMax = INFINITY);
+// Snapshots as a list of numbers and back (for a restart file: Simulation::keepInRestart).
+std::vector<double> snapshotNumbers(const std::vector<ChuteSnapshot>& snapshots);
+std::vector<ChuteSnapshot> snapshotsFromNumbers(const std::vector<double>& numbers);
 // The same over the particles of every rank of a simulation (all ranks call it together; on one
 // rank it is the one above).
 ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies,
@@ -52,12 +55,17 @@ public:
     bool add(double time, const std::vector<double>& values);
     bool steady() const { return steadySince_ >= 0; }
     double steadySince() const { return steadySince_; }  // time of the sample that made it steady
-    std::size_t samples() const { return history_.size(); }
+    std::size_t samples() const { return samples_; }
+    // Everything it knows as numbers (window, tolerance, samples, steady time, the last window
+    // of samples), for a restart file (Simulation::keepInRestart), and back.
+    std::vector<double> state() const;
+    void restore(const std::vector<double>& state);
 
 private:
     std::size_t window_;
     double tolerance_;
-    std::vector<std::vector<double>> history_;
+    std::vector<std::vector<double>> history_;  // the last window_ samples
+    std::size_t samples_ = 0;
     double steadySince_ = -1;
 };
 
@@ -74,11 +82,17 @@ MeanAndError batchMean(const std::vector<double>& samples, std::size_t batches =
 class DepthProfile {
 public:
     DepthProfile(double bin, double top, double length, double width, std::size_t smallSpecies);
-    void add(const ParticleStore& p);  // the owned particles (Parallel/DomainSplit.h)
-    // Columns z, volume fraction, vx, small concentration; one line per slab. With a simulation
-    // on ranks, all ranks call it: the sums of all ranks are written, by rank 0.
+    // One sample of the owned particles. With a simulation on ranks, all ranks call it: the
+    // sample's sums over ranks are added to totals that every rank holds (so they do not depend
+    // on which rank owned which particle when, and a restart continues them exactly).
+    void add(const ParticleStore& p, const Simulation* s = nullptr);
+    // Columns z, volume fraction, vx, small concentration; one line per slab. On ranks, rank 0
+    // writes.
     void write(const std::string& path, const Simulation* s = nullptr) const;
     std::size_t samples() const { return samples_; }
+    // The totals as numbers, for a restart file (Simulation::keepInRestart), and back.
+    std::vector<double> state() const;
+    void restore(const std::vector<double>& state);
 
 private:
     double bin_, length_, width_;
