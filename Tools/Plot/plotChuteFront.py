@@ -7,7 +7,8 @@ solids), which single spheres bouncing ahead of the flow hardly change. The fron
 the last window, counted from the inflow, whose height is at least 1. The script prints the
 inflow height (the mean over the first box length of the chute), the front, the highest window
 within 30 behind the front and the large share there: a bulbous head is a front higher than
-the inflow, made mostly of large spheres.
+the inflow, made mostly of large spheres. A second line gives the highest window anywhere past
+the chute's first box length and where the flow turns to large spheres only (share above 0.9).
 
     /usr/bin/python3 Tools/Plot/plotChuteFront.py NAME.data out.png [time]
         [--large S,S] [--small S,S] [--box LENGTH]
@@ -72,6 +73,17 @@ def main():
           f"({height[k_head] / inflow:.2f} x the inflow); large share {share[k_head]:.2f} there, "
           f"{np.nanmean(share[inflowWindows]):.2f} at the inflow; "
           f"{np.count_nonzero(mobile & (x > front))} spheres ahead of the front")
+    # Behind the front: the highest window past the first box length of the chute, and where the
+    # flow turns to large spheres only (share above 0.9): a head forms where the large front,
+    # slower than the inflow, holds the flow back.
+    past = centres > 2 * args.box
+    if past.any():
+        k_max = np.flatnonzero(past)[np.argmax(height[past])]
+        pure = np.flatnonzero(past & (share > 0.9) & (height > 0.5))
+        where = (f"large spheres only from x = {edges[pure[0]]:.0f} (height {height[pure[0]]:.2f} there)"
+                 if len(pure) else "no window of large spheres only")
+        print(f"plotChuteFront: t = {time:g}: highest past x = {2 * args.box:g}: {height[k_max]:.2f} at x = "
+              f"{centres[k_max]:.1f} ({height[k_max] / inflow:.3f} x the inflow), large share {share[k_max]:.2f}; {where}")
 
     figure, axes = plt.subplots(3, 1, figsize=(12, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1, 1]})
     colours = np.where(large, "tab:red", "tab:blue")
