@@ -51,6 +51,15 @@ ChuteSnapshot snapshotOf(const std::vector<double>& sum, double length, double w
     return s;
 }
 
+// The fields of a snapshot, in the order of snapshotNumbers.
+template <class Snapshot, class F>
+void forEachField(Snapshot& s, F&& f) {
+    for (auto* field : {&s.time, &s.kineticEnergy, &s.massFlux, &s.meanVelocity, &s.height, &s.smallConcentration,
+                        &s.segregation})
+        f(*field);
+}
+constexpr std::size_t snapshotFields = 7;
+
 }  // namespace
 
 ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
@@ -64,18 +73,6 @@ ChuteSnapshot measureChute(const Simulation& s, double length, double width, std
     s.sumOverRanks(sum);
     return snapshotOf(sum, length, width, s.time());
 }
-
-namespace {
-
-template <class Snapshot, class F>
-void forEachField(Snapshot& s, F&& f) {
-    for (auto* field : {&s.time, &s.kineticEnergy, &s.massFlux, &s.meanVelocity, &s.height, &s.smallConcentration,
-                        &s.segregation})
-        f(*field);
-}
-constexpr std::size_t snapshotFields = 7;
-
-}  // namespace
 
 std::vector<double> snapshotNumbers(const std::vector<ChuteSnapshot>& snapshots) {
     std::vector<double> numbers;
@@ -105,15 +102,14 @@ bool PlateauDetector::add(double time, const std::vector<double>& values) {
     ++samples_;
     if (history_.size() > window_) history_.erase(history_.begin());
     if (steady() || history_.size() < window_) return steady();
-    const std::size_t start = 0;
     const double n = static_cast<double>(window_), meanIndex = 0.5 * (n - 1);
     for (std::size_t q = 0; q < values.size(); ++q) {
         double mean = 0;
-        for (std::size_t k = 0; k < window_; ++k) mean += history_[start + k][q];
+        for (std::size_t k = 0; k < window_; ++k) mean += history_[k][q];
         mean /= n;
         double covariance = 0, variance = 0;  // of the series with the sample index
         for (std::size_t k = 0; k < window_; ++k) {
-            covariance += (k - meanIndex) * (history_[start + k][q] - mean);
+            covariance += (k - meanIndex) * (history_[k][q] - mean);
             variance += (k - meanIndex) * (k - meanIndex);
         }
         const double changeOverWindow = covariance / variance * (n - 1);
