@@ -3,7 +3,7 @@
 // Methods. Spheres of mean diameter 1 and size ratio S = dL/dS (--size-ratio, default 1.5; dL =
 // 2S/(1+S), dS = 2/(1+S)), equal volumes of each size, density 6/pi, flow down a chute inclined
 // at 23 degrees, periodic across (width 6), with a disordered rough base of fixed spheres of
-// diameter 1. Contacts are linear spring-dashpots with e = 0.88 and tc = 0.005 for every pair
+// diameter 1 (--base-diameter). Contacts are linear spring-dashpots with e = 0.88 and tc = 0.005 for every pair
 // type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
 // 0.375 between them (a sphere on the base: its own). dt = 1e-4.
 // Phase 1: the maser, a periodic box [0, 20] (--maser-length), holds the spheres for an inflow
@@ -34,7 +34,7 @@ using namespace talus;
 class MaserFedChute : public Chute {
 public:
     double angle = 23, sizeRatio = 1.5, inflowHeight = 6, maserLength = 20, chuteLength = 100, width = 6;
-    double sampleInterval = 1, tolerance = 0.02, earliestActivation = 50, latestActivation = 200;
+    double sampleInterval = 1, tolerance = 0.02, earliestActivation = 50, latestActivation = 200, baseDiameter = 1;
     int seed = 1, window = 50, segregatedStart = 0;
     enum ChuteSpecies : std::size_t { large, small, base, chuteSpeciesCount };
 
@@ -45,6 +45,7 @@ public:
         addFlag("maser-length", "length of the maser box along x", maserLength);
         addFlag("chute-length", "length of the open chute downstream of the maser", chuteLength);
         addFlag("width", "periodic width along y", width);
+        addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
         addFlag("seed", "seed of the base and of the start positions", seed);
         addFlag("sample-interval", "time between samples", sampleInterval);
         addFlag("window", "samples on a plateau that make the maser's flow steady", window);
@@ -90,7 +91,7 @@ public:
         maserLarge_ = maser.maserSpecies(*this, large);
         maserSmall_ = maser.maserSpecies(*this, small);
         maserBase_ = maser.maserSpecies(*this, base);
-        addBase(ChuteBase::disordered, 1, maserBase_, static_cast<std::uint64_t>(seed));
+        addBase(ChuteBase::disordered, baseDiameter, maserBase_, static_cast<std::uint64_t>(seed));
         // The maser's spheres, at rest at random places in a loose layer (packing fraction 0.2),
         // mixed, or with --segregated-start the small ones in its lower half: a steady flow is
         // segregated (large on top), and a mixed start takes hundreds of time units to get there.

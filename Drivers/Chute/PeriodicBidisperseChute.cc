@@ -1,8 +1,8 @@
 // The periodic calibration chute of SPEC.md 2 with the mixture of seed Table 3.C.1.
 //
 // Methods. A chute inclined at 24 degrees, periodic in x (length 20) and y (width 10), has a
-// disordered rough base of fixed spheres of diameter 1. 1000 large spheres (d = 1) and 2000
-// small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random above it and
+// disordered rough base of fixed spheres of diameter 1 (--base-diameter). 1000 large spheres
+// (d = 1) and 2000 small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random above it and
 // flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with Coulomb
 // friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same e and
 // tc ~ sqrt(d) for every pair type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
@@ -28,7 +28,7 @@ using namespace talus;
 
 class PeriodicBidisperseChute : public Chute {
 public:
-    double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02;
+    double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02, baseDiameter = 1;
     int large = 1000, small = 2000, seed = 1, window = 200;
 
     PeriodicBidisperseChute() {
@@ -37,6 +37,7 @@ public:
         addFlag("width", "periodic width along y", width);
         addFlag("large", "number of large spheres (d = 1)", large);
         addFlag("small", "number of small spheres (d = 0.7937)", small);
+        addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
         addFlag("seed", "seed of the base and of the start positions", seed);
         addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         addFlag("window", "samples on a plateau that make the flow steady", window);
@@ -66,7 +67,7 @@ public:
         applyBidisperseRule(species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
                                         .smallDiameter = smallDiameter, .largeCollisionTime = largeLaw.collisionTime(0.5),
                                         .restitution = largeLaw.restitution(0.5), .mixedFriction = 0.375});
-        addBase(ChuteBase::disordered, 1, largeSpecies_, static_cast<std::uint64_t>(seed));
+        addBase(ChuteBase::disordered, baseDiameter, largeSpecies_, static_cast<std::uint64_t>(seed));
         // The spheres start at rest at random places in a loose layer above the base (packing
         // fraction about 0.2, so the insertion never jams).
         random().seed(static_cast<std::uint64_t>(seed));
