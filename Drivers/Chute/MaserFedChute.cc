@@ -13,7 +13,8 @@
 // --window samples (trend below --tolerance of the mean) and t >= --earliest-activation, or at
 // --latest-activation at the latest, the maser is activated. Phase 2: the base is copied
 // downstream to x = 20 + L (--chute-length, default 100; the thesis's full scale is 2000), every
-// sphere leaving the box is copied into the chute, and spheres past the end are deleted.
+// sphere leaving the box is copied into the chute, and spheres past the end are deleted. A run
+// restarted after activation with a larger --chute-length extends the chute (base and outlet).
 // NAME.series records, every sample, the maser's state, the inflow (crossings and mass per
 // size), the chute's contents, what left it, and the front. At the end the run checks mass
 // conservation to the particle (created = in the chute + deleted) and compares the inflow's
@@ -112,6 +113,10 @@ public:
         plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
     }
 
+    void actionsBeforeTimeStep() override {
+        if (activatedAt_ >= 0 && maserLength + chuteLength != outlet.point().x()) extendChute();
+    }
+
     void actionsAfterTimeStep() override {
         outlet.apply(*this);
         if (activatedAt_ >= 0) accumulateBoxFlux();
@@ -154,19 +159,46 @@ private:
         outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
         maser.activate(*this, end);
         activatedAt_ = time();
-        const std::size_t n = particles().owned();  // on ranks each copies the base it owns
+        const double added = layBase(0, end);
+        if (rank() == 0)
+            std::printf("%s: chute base of %.0f spheres up to x = %g; the first %g of the chute seeded with a copy of the "
+                    "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
+    }
+
+    // A run restarted after activation with another --chute-length: a longer chute gets the base
+    // copied on to its new end, and the outlet and the domain move there. The spheres that left
+    // through the old outlet stay counted as deleted. A chute is not shortened: the spheres past
+    // a new outlet would vanish uncounted as outflow of a chute they never reached the end of.
+    void extendChute() {
+        const double oldEnd = outlet.point().x(), end = maserLength + chuteLength;
+        require(end > oldEnd, "--chute-length " + str(chuteLength) + " is shorter than the chute of the restart file (" +
+                                  str(oldEnd - maserLength) + "): a chute can be extended, not shortened");
+        const double added = layBase(oldEnd, end);
+        outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
+        Vec3 hi = domain().hi;
+        hi.x() = end;
+        setDomain(domain().lo, hi);
+        if (rank() == 0)
+            std::printf("%s: chute extended from x = %g to %g at t = %g (%.0f base spheres added)\n", name().c_str(),
+                    oldEnd, end, time(), added);
+    }
+
+    // Copies of the maser's base spheres, shifted downstream by whole box lengths, that fall in
+    // [from, to); returns their number (summed over ranks: each rank copies the base it owns).
+    double layBase(double from, double to) {
+        const std::size_t n = particles().owned();
         double added = 0;
         for (std::size_t i = 0; i < n; ++i) {
             if (particles().species[i] != maserBase_) continue;
             const Vec3 x = particles().position[i];
             const double r = particles().radius[i];
-            for (int k = 1; x.x() + k * maserLength < end; ++k, ++added)
+            for (int k = 1; x.x() + k * maserLength < to; ++k) {
+                if (x.x() + k * maserLength < from) continue;
                 addFixedParticle(x + Vec3(k * maserLength, 0, 0), r, base);
+                ++added;
+            }
         }
-        added = sumOverRanks(added);
-        if (rank() == 0)
-            std::printf("%s: chute base of %.0f spheres up to x = %g; the first %g of the chute seeded with a copy of the "
-                    "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
+        return sumOverRanks(added);
     }
 
     // The mass that the maser's flow carries through a section, per size, integrated over time:

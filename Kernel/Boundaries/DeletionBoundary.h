@@ -33,6 +33,8 @@ public:
     // removes the particles it owns (and returns their number), the totals are summed.
     std::size_t apply(Simulation& s);
 
+    const Vec3& normal() const { return normal_; }
+    const Vec3& point() const { return point_; }
     double count() const { return count_; }
     double mass() const { return mass_; }
     double volume() const { return volume_; }
