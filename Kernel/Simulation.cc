@@ -12,6 +12,7 @@
 #include "IO/RestartFile.h"
 #include "Parallel/DomainSplit.h"
 #include "Particles/SpaceFillingCurve.h"
+#include "Particles/VelocityVerlet.h"
 
 namespace talus {
 
@@ -545,26 +546,17 @@ void Simulation::integrate(bool recordContacts) {
     const double dt = state_.settings.timeStep;
     const double half = 0.5 * dt;
     const std::size_t owned = p.owned();  // ghosts are their owners' business
-    for (std::size_t i = 0; i < owned; ++i) {
-        if (p.fixed[i]) continue;
-        p.velocity[i] += half * p.invMass[i] * p.force[i];
-        p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
-        p.position[i] += dt * p.velocity[i];
-    }
+    halfKick(p, owned, half);
+    drift(p, owned, dt);
     if (p.hasShapes()) turnShapedParticles(half, dt);
     moveWithPrescribedMotion();
-    if (state_.domain.anyPeriodic())
-        for (std::size_t i = 0; i < owned; ++i) state_.domain.wrap(p.position[i]);
+    if (state_.domain.anyPeriodic()) state_.domain.wrap(p.position.data(), owned);
     state_.time += dt;
     ++state_.step;
     for (Boundary* b : boundaries_) b->afterDrift(*this);
     computeForces(recordContacts ? &records_ : nullptr,
                   recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep);
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        if (p.fixed[i]) continue;
-        p.velocity[i] += half * p.invMass[i] * p.force[i];
-        p.angularVelocity[i] += half * p.invInertia[i] * p.torque[i];
-    }
+    halfKick(p, p.owned(), half);
     if (p.hasShapes()) turnShapedParticles(half, 0);
 }
 

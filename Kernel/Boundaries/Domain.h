@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -48,17 +49,26 @@ struct Domain {
 
     // Moves x into [lo, hi) along the periodic axes.
     void wrap(Vec3& x) const {
+        for (int a = 0; a < 3; ++a)
+            if (periodic[a]) wrapCoordinate(x[a], lo[a], hi[a], length(a));
+    }
+    // The same for the first n of an array of positions, an axis at a time with the box read
+    // once (the compiler cannot keep lo and hi in registers across stores into a Vec3&).
+    void wrap(Vec3* x, std::size_t n) const {
         for (int a = 0; a < 3; ++a) {
             if (!periodic[a]) continue;
-            const double L = length(a);
-            if (x[a] >= hi[a]) {
-                x[a] -= L;
-                if (x[a] >= hi[a]) x[a] = lo[a] + std::fmod(x[a] - lo[a], L);  // moved more than a box length
-            } else if (x[a] < lo[a]) {
-                x[a] += L;
-                if (x[a] < lo[a]) x[a] = hi[a] - std::fmod(hi[a] - x[a], L);
-                if (x[a] >= hi[a]) x[a] = lo[a];
-            }
+            const double l = lo[a], h = hi[a], L = length(a);
+            for (std::size_t i = 0; i < n; ++i) wrapCoordinate(x[i][a], l, h, L);
+        }
+    }
+    static void wrapCoordinate(double& c, double lo, double hi, double L) {
+        if (c >= hi) {
+            c -= L;
+            if (c >= hi) c = lo + std::fmod(c - lo, L);  // moved more than a box length
+        } else if (c < lo) {
+            c += L;
+            if (c < lo) c = hi - std::fmod(hi - c, L);
+            if (c >= hi) c = lo;
         }
     }
 

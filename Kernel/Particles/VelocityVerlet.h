@@ -1,0 +1,60 @@
+// The kicks and the drift of the velocity Verlet (kick-drift-kick) step of the mobile particles
+// (DESIGN.md "Data layout and the time step"): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v.
+// Fixed particles are left alone (prescribed motions move them elsewhere).
+//
+// The loops run over the coordinates as plain arrays. Written over std::vector<Vec3>, the
+// compiler has to assume that every store into a particle's coordinates may change the vectors'
+// own data pointers, reloads them for every particle and keeps the loops scalar: they took 15%
+// of a dilute chute flow's step (Documentation/Performance.md). Here they vectorise, with the
+// same arithmetic per particle as before (the results are the same to the bit).
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+namespace detail {
+// x[c] += step * scale[i] * rate[c] (without scale: step * rate[c]) for the three coordinates c
+// of every particle i in [0, n) that is not fixed.
+// x unless keep (all bits set), then `moved`. The fixed particles keep x by this bit mask: with a
+// branch or a conditional expression GCC 12 does not vectorise the loop, and with a zero step
+// instead x + 0 r would turn -0 into +0.
+inline double unlessKept(double x, double moved, std::uint64_t keep) {
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(x) & keep) | (std::bit_cast<std::uint64_t>(moved) & ~keep));
+}
+
+template <bool scaled>
+inline void advanceMobile(double* __restrict x, const double* __restrict rate, const double* __restrict scale,
+                          const std::uint8_t* __restrict fixed, std::size_t n, double step) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = scaled ? step * scale[i] : step;
+        const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
+        // (Three statements, not a loop of three: GCC would vectorise that inner loop instead.)
+        double* xi = x + 3 * i;
+        const double* ri = rate + 3 * i;
+        xi[0] = unlessKept(xi[0], xi[0] + s * ri[0], keep);
+        xi[1] = unlessKept(xi[1], xi[1] + s * ri[1], keep);
+        xi[2] = unlessKept(xi[2], xi[2] + s * ri[2], keep);
+    }
+}
+}  // namespace detail
+
+// The half kick of the mobile particles among the first n: v += (dt/2) F/m, w += (dt/2) T/I.
+inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) {
+    if (n == 0) return;
+    detail::advanceMobile<true>(p.velocity[0].data(), p.force[0].data(), p.invMass.data(), p.fixed.data(), n, halfStep);
+    detail::advanceMobile<true>(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
+                                n, halfStep);
+}
+
+// The drift of the mobile particles among the first n: x += dt v.
+inline void drift(ParticleStore& p, std::size_t n, double dt) {
+    if (n == 0) return;
+    detail::advanceMobile<false>(p.position[0].data(), p.velocity[0].data(), nullptr, p.fixed.data(), n, dt);
+}
+
+}  // namespace talus
