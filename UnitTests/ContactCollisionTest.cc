@@ -157,3 +157,42 @@ TEST(HeadOnCollision, PlainVerletIsThePeersScheme) {
     // And it is the O(dt/tc) error Talus's own treatment of the contact ends removes.
     EXPECT_GT(std::abs(talus.restitution / 0.5 - 1), 1e-3);
 }
+
+// The step after a pair separates, its record of the last normal force (the separation impulse,
+// which ContactKinematics::otherAcceleration takes out of the particles' last forces) must be
+// cleared. The force loop's sweep skips pairs apart and out of reach, and two spheres flying
+// apart are out of reach one step after their separation: the pair is therefore "separated" for
+// that one step, which the sweep does not skip. (Without that state the impulse stayed in the
+// record until the next list rebuild, for a later touch to mistake as last step's force.)
+TEST(HeadOnCollision, SeparationImpulseIsForgottenTheStepAfter) {
+    const double mass = sphereMass(0.5);
+    Scene s;
+    s.setup = [&](Scene& scene) {
+        const auto species = scene.addSpecies("solid", unitMassDensity,
+                                              LinearSpringDashpot::fromCollision(0.005, 0.5, mass / 2));
+        scene.addParticle(Vec3::Zero(), 0.5, species, Vec3(1, 0, 0));
+        scene.addParticle(Vec3(1.01, 0, 0), 0.5, species, Vec3(-1, 0, 0));
+    };
+    int separatedAt = -1, step = 0;
+    double impulse = 0;
+    bool touchedBefore = false;
+    s.afterStep = [&](Scene& scene) {
+        ++step;
+        const PairList& list = scene.pairList();
+        ASSERT_EQ(list.pairs.size(), 1u);
+        const ContactHistory h = list.history.get(0);
+        if (separatedAt < 0 && touchedBefore && !h.isTouching()) {
+            separatedAt = step;
+            impulse = h.lastNormalForce;
+            EXPECT_EQ(int(h.state), int(ContactHistory::separated));
+        } else if (separatedAt > 0 && step == separatedAt + 1) {
+            EXPECT_EQ(int(h.state), int(ContactHistory::apart));
+            EXPECT_EQ(h.lastNormalForce, 0) << "the separation impulse outlived its step";
+        }
+        touchedBefore = h.isTouching();
+    };
+    s.run(1e-4, 0.03);
+    ASSERT_GT(separatedAt, 0) << "the spheres never separated";
+    EXPECT_NE(impulse, 0);
+    EXPECT_LT(s.particles().velocity[0].x(), 0);  // they rebounded
+}

@@ -56,6 +56,7 @@ public:
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
+    std::vector<double> sweepRadiusScratch;  // the force loop's radii grown by the step's reach (ContactForces.h)
 
     // True when some particle will have moved more than skin/2 since the last build by the end of
     // the next step (nearest-image displacement, so wrapping through a periodic face is not a

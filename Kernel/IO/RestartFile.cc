@@ -169,7 +169,7 @@ ContactHistory readHistory(Reader& r, bool shapes) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
     h.lastNormalForce = r.real("last normal force");
-    h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::touching));
+    h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::separated));
     if (shapes) {
         h.warmPoint = r.vec("warm-start point");
         h.warmMultiplier = r.real("warm-start multiplier");
