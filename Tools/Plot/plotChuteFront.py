@@ -13,7 +13,7 @@ the chute's first box length and where the flow turns to large spheres only (sha
     /usr/bin/python3 Tools/Plot/plotChuteFront.py NAME.data out.png [time]
         [--large S,S] [--small S,S] [--box LENGTH]
 
-time: the frame closest to it (default: the last). --large/--small: the species indices of the
+out: the picture, or - for the printed lines alone. time: the frame closest to it (default: the last). --large/--small: the species indices of the
 large and small spheres (default 0,3 and 1,4: MaserFedChute's chute and maser species);
 --box: the maser box length (default 20): the chute starts there.
 """
@@ -84,7 +84,21 @@ def main():
                  if len(pure) else "no window of large spheres only")
         print(f"plotChuteFront: t = {time:g}: highest past x = {2 * args.box:g}: {height[k_max]:.2f} at x = "
               f"{centres[k_max]:.1f} ({height[k_max] / inflow:.3f} x the inflow), large share {share[k_max]:.2f}; {where}")
+        # The thesis's head is a front of large particles higher than the inflow: the highest
+        # window that is mostly large (three quarters of the volume) and large only (0.9).
+        parts = []
+        for threshold, what in ((0.75, "mostly large"), (0.9, "large only")):
+            rich = np.flatnonzero(past & (share >= threshold) & (height > 1))
+            if not len(rich):
+                parts.append(f"{what} (share >= {threshold:g}): none")
+                continue
+            k_rich = rich[np.argmax(height[rich])]
+            parts.append(f"{what} (share >= {threshold:g}) from x = {edges[rich[0]]:.0f}, up to {height[k_rich]:.2f} "
+                         f"({height[k_rich] / inflow:.3f} x the inflow) at x = {centres[k_rich]:.1f}")
+        print(f"plotChuteFront: t = {time:g}: " + "; ".join(parts))
 
+    if args.out == "-":
+        return
     figure, axes = plt.subplots(3, 1, figsize=(12, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1, 1]})
     colours = np.where(large, "tab:red", "tab:blue")
     colours = np.where(mobile, colours, "0.6")
