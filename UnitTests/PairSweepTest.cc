@@ -1,6 +1,7 @@
 // The force loop's first pass (Contacts/PairSweep.h): the pairs it picks are exactly those a
-// direct evaluation of the rule picks (nearest periodic image closer than ri + rj + closing, or
-// a pending contact), in order, with their separations to the bit, whether the AVX-512 lanes or
+// direct evaluation of the rule picks (nearest periodic image closer than the sum of the two
+// radii as passed, here grown by a reach of each particle as the force loop grows them, or a
+// pending contact), in order, with their separations to the bit, whether the AVX-512 lanes or
 // the scalar loop decide (both forms are swept; without AVX-512 in the build both are the loop).
 #include <gtest/gtest.h>
 
@@ -20,8 +21,8 @@ Vec3 separationDirectly(const Vec3& xi, const Vec3& xj, const Vec3& box, const b
         if (periodic[a]) d[a] -= box[a] * std::round(d[a] / box[a]);
     return d;
 }
-bool needsWorkDirectly(const Vec3& d, double ri, double rj, ContactHistory::State state, double closing) {
-    return d.norm() < ri + rj + closing || state != ContactHistory::apart;
+bool needsWorkDirectly(const Vec3& d, double ri, double rj, ContactHistory::State state) {
+    return d.norm() < ri + rj || state != ContactHistory::apart;
 }
 
 }  // namespace
@@ -38,10 +39,11 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
     const PeriodicImage image(domain);
     for (std::size_t n : {1u, 7u, 8u, 9u, 500u}) {  // 4n + 3 pairs: tails of the eight lanes and of a chunk
         std::vector<Vec3> position(n);
-        std::vector<double> radius(n);
+        std::vector<double> radius(n), grown(n);  // the sphere, and its reach within a step
         for (std::size_t i = 0; i < n; ++i) {
             position[i] = Vec3(unit(random) * box.x(), unit(random) * box.y(), unit(random) * box.z());
             radius[i] = 0.3 + 0.2 * unit(random);
+            grown[i] = radius[i] + 0.01 * unit(random);
         }
         // Pairs near each other (some across the periodic faces), far apart, and pending.
         std::vector<ParticlePair> pairs;
@@ -59,7 +61,6 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             pairs.push_back({i, j});
             states.push_back(static_cast<ContactHistory::State>(random() % 7 == 0 ? 1 + random() % 2 : 0));
         }
-        const double closing = 0.01;
         std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> sweeps[2];
         for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
             std::vector<std::uint32_t> picked;
@@ -67,7 +68,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             SweptPairs swept;
             for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
                 sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(),
-                           n, radius.data(), states.data(), image, closing, swept, form);
+                           n, grown.data(), states.data(), image, swept, form);
                 for (std::size_t a = 0; a < swept.count; ++a) {
                     picked.push_back(swept.pair[a]);
                     separations.push_back(swept.separation(a));
@@ -82,7 +83,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         std::vector<Vec3> expectedSeparations;
         for (std::size_t k = 0; k < pairs.size(); ++k) {
             const Vec3 d = separationDirectly(position[pairs[k].i], position[pairs[k].j], box, periodic);
-            if (needsWorkDirectly(d, radius[pairs[k].i], radius[pairs[k].j], states[k], closing)) {
+            if (needsWorkDirectly(d, grown[pairs[k].i], grown[pairs[k].j], states[k])) {
                 expected.push_back(static_cast<std::uint32_t>(k));
                 expectedSeparations.push_back(d);
             }

@@ -175,9 +175,7 @@ private:
                                   str(oldEnd - maserLength) + "): a chute can be extended, not shortened");
         const double added = layBase(oldEnd, end);
         outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
-        Vec3 hi = domain().hi;
-        hi.x() = end;
-        setDomain(domain().lo, hi);
+        maser.setChuteEnd(*this, end);
         if (rank() == 0)
             std::printf("%s: chute extended from x = %g to %g at t = %g (%.0f base spheres added)\n", name().c_str(),
                     oldEnd, end, time(), added);

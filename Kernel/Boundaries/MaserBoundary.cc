@@ -87,10 +87,17 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
         seeded_ += seeded[0];
         seededMass_ += seeded[1];
     }
+    setChuteEnd(s, chuteEnd);
+    s.setPeriodic(false, s.domain().periodic[1], s.domain().periodic[2]);
+}
+
+void MaserBoundary::setChuteEnd(Simulation& s, double chuteEnd) const {
+    require(active(s), "maser: the chute's end is set at activation or after");
+    require(std::isfinite(chuteEnd) && chuteEnd > hi_,
+            "maser: the chute must end downstream of the box (x = " + str(hi_) + "), got " + str(chuteEnd));
     Vec3 hi = s.domain().hi;
     hi.x() = chuteEnd;
     s.setDomain(s.domain().lo, hi);
-    s.setPeriodic(false, s.domain().periodic[1], s.domain().periodic[2]);
 }
 
 void MaserBoundary::afterDrift(Simulation& s) {

@@ -56,6 +56,9 @@ public:
     // chute they would move on unhindered while their images push the upstream particles, which
     // sit against the base: a start-up transient with overlaps of the order of the radius.
     void activate(Simulation& s, double chuteEnd, bool seedChute = true);
+    // Moves the domain's downstream end (the chute's end) of an active maser, as activate does;
+    // a driver that grows its chute at a restart calls it (and moves its outlet with it).
+    void setChuteEnd(Simulation& s, double chuteEnd) const;
     bool active(const Simulation& s) const;
 
     double lo() const { return lo_; }

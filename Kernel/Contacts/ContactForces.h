@@ -169,10 +169,10 @@ public:
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
             chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), sweepRadius,
-                            list.history.states(), image, 0, swept);
+                            list.history.states(), image, swept);
         for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
             sweepPairs(list.pairs.data(), begin, std::min(list.pairs.size(), begin + SweptPairs::capacity),
-                       p_.position.data(), p_.size(), sweepRadius, list.history.states(), image, 0, swept);
+                       p_.position.data(), p_.size(), sweepRadius, list.history.states(), image, swept);
             for (std::size_t a = 0; a < swept.count; ++a) pairContact(list, swept.pair[a], swept.separation(a));
         }
         if constexpr (Law::batched) flush(list);

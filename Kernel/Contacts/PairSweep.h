@@ -1,6 +1,7 @@
 // The first pass of the force loop (Contacts/ContactForces.h): of the listed pairs, pick those
-// that need work this step: touching, closer than the sum of their radii plus `closing` (they
-// may touch within the step), or with a contact still pending (state not apart). The picked
+// that need work this step: closer than the sum of their radii as given (the force loop passes
+// each radius grown by how far the particle can move within the step, so this takes the pairs
+// that touch or may touch within it), or with a contact still pending (state not apart). The picked
 // pairs go into a SweptPairs chunk in order, each with its separation: the second pass then
 // reads it in sequence instead of gathering the two positions and finding the periodic image
 // again.
@@ -70,8 +71,8 @@ inline SweepForm& sweepForm() {
 // (lanes: the AVX-512 lanes if the build has them, for as many whole groups of eight as fit).
 inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const Vec3* position,
                        [[maybe_unused]] std::size_t particleCount, const double* radius,
-                       const ContactHistory::State* states, const PeriodicImage& image, double closing,
-                       SweptPairs& out, [[maybe_unused]] SweepForm form = sweepForm()) {
+                       const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
+                       [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, k = begin;
 #ifdef TALUS_AVX512_SWEEP
     // (The gathers index the coordinates with 32-bit 3 i; GCC 12 warns about the intrinsics' own
@@ -87,7 +88,6 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         half[a] = _mm512_set1_pd(image.halfLength(a));
         minusHalf[a] = _mm512_set1_pd(-image.halfLength(a));
     }
-    const __m512d closingV = _mm512_set1_pd(closing);
     const __m512i evenLanes = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
     const __m256i three = _mm256_set1_epi32(3), laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     double* separation[3] = {out.dx, out.dy, out.dz};
@@ -103,8 +103,7 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
             d[a] = _mm512_mask_add_pd(d[a], _mm512_cmp_pd_mask(d[a], minusHalf[a], _CMP_LT_OQ), d[a], length[a]);
         }
         const __m512d r2 = _mm512_fmadd_pd(d[2], d[2], _mm512_fmadd_pd(d[1], d[1], _mm512_mul_pd(d[0], d[0])));
-        const __m512d limit = _mm512_add_pd(
-            _mm512_add_pd(_mm512_i32gather_pd(i, radius, 8), _mm512_i32gather_pd(j, radius, 8)), closingV);
+        const __m512d limit = _mm512_add_pd(_mm512_i32gather_pd(i, radius, 8), _mm512_i32gather_pd(j, radius, 8));
         const __mmask8 near = _mm512_cmp_pd_mask(r2, _mm512_mul_pd(limit, limit), _CMP_LT_OQ);
         const __m256i state = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(states + k)));
         const __mmask8 pick = near | _mm256_test_epi32_mask(state, state);
@@ -117,7 +116,7 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 #endif
     for (; k < end; ++k) {
         const Vec3 d = image.nearest(position[pairs[k].i] - position[pairs[k].j]);
-        const double limit = radius[pairs[k].i] + radius[pairs[k].j] + closing;
+        const double limit = radius[pairs[k].i] + radius[pairs[k].j];
 #ifdef __FMA__
         const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
 #else
@@ -136,7 +135,7 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 // the sweep to matter; the picks are the same either way, so only the speed depends on it.
 inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const Vec3* position,
                             std::size_t particleCount, const double* radius, const ContactHistory::State* states,
-                            const PeriodicImage& image, double closing, SweptPairs& scratch) {
+                            const PeriodicImage& image, SweptPairs& scratch) {
     if (sweepForm() != SweepForm::undecided) return;
     using Clock = std::chrono::steady_clock;
     const std::size_t end = std::min(count, SweptPairs::capacity);
@@ -144,7 +143,7 @@ inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const 
     for (int round = 0; round < 30; ++round)
         for (int form = 0; form < 2; ++form) {
             const Clock::time_point start = Clock::now();
-            sweepPairs(pairs, 0, end, position, particleCount, radius, states, image, closing, scratch,
+            sweepPairs(pairs, 0, end, position, particleCount, radius, states, image, scratch,
                        form == 0 ? SweepForm::scalar : SweepForm::lanes);
             fastest[form] = std::min(fastest[form], Clock::now() - start);
         }
