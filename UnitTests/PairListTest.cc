@@ -113,3 +113,37 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
     EXPECT_GT(touching, 20u);
     EXPECT_GT(carried, 20u);
 }
+
+// The pairs a build puts first (PairList::interiorPairs) are swept without the nearest periodic
+// image (Contacts/PairSweep.h), so their direct difference xi - xj must stay their nearest image
+// for every step until the next build, while particles cross the periodic faces and wrap.
+TEST(PairList, InteriorPairsNeedNoPeriodicImageUntilTheNextBuild) {
+    Scene s;
+    s.setup = chuteScene;
+    s.setSkin(0.2);
+    std::size_t checked = 0, interiorSteps = 0, imageSteps = 0, wraps = 0, violations = 0;
+    std::vector<Vec3> before;
+    s.afterStep = [&](Scene& scene) {
+        const PairList& list = scene.pairList();
+        const PeriodicImage image(scene.domain());
+        const auto& x = scene.particles().position;
+        ASSERT_LE(list.interiorPairs, list.pairs.size());
+        for (std::size_t k = 0; k < list.interiorPairs; ++k) {
+            const Vec3 d = x[list.pairs[k].i] - x[list.pairs[k].j];
+            violations += !(d == image.nearest(d));
+            ++checked;
+        }
+        interiorSteps += list.interiorPairs > 0;
+        imageSteps += list.interiorPairs < list.pairs.size();
+        for (std::size_t i = 0; i < std::min(before.size(), x.size()); ++i)
+            wraps += (x[i] - before[i]).norm() > 3;  // a jump across the 6 x 6 box
+        before = x;
+    };
+    s.run(1e-4, 3);  // the bed flows down the slope and through the downstream face
+    std::printf("[ measured ] %zu interior pair-steps checked, %zu wraps through a face, %llu builds\n", checked,
+                wraps, static_cast<unsigned long long>(s.pairList().builds));
+    EXPECT_EQ(violations, 0u) << "an interior pair's direct difference was not its nearest image";
+    EXPECT_GT(wraps, 20u) << "the test needs particles crossing the periodic faces";
+    EXPECT_EQ(interiorSteps, 30000u) << "every step has interior pairs";
+    EXPECT_EQ(imageSteps, 30000u) << "and pairs that need the image";
+}

@@ -170,12 +170,21 @@ public:
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
             chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), sweepRadius,
                             list.history.states(), image, swept);
-        for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
-            sweepPairs(list.pairs.data(), begin, std::min(list.pairs.size(), begin + SweptPairs::capacity),
-                       p_.position.data(), p_.size(), sweepRadius, list.history.states(), image, swept);
+        const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
+        sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
+        sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
+        if constexpr (Law::batched) flush(list);
+    }
+
+    // The listed pairs [from, to), a chunk at a time: the sweep, then the contacts it picked.
+    template <bool nearestImage>
+    void sweptContacts(PairList& list, std::size_t from, std::size_t to, const double* sweepRadius,
+                       const PeriodicImage& image, SweptPairs& swept) {
+        for (std::size_t begin = from; begin < to; begin += SweptPairs::capacity) {
+            sweepPairs<nearestImage>(list.pairs.data(), begin, std::min(to, begin + SweptPairs::capacity),
+                                     p_.position.data(), p_.size(), sweepRadius, list.history.states(), image, swept);
             for (std::size_t a = 0; a < swept.count; ++a) pairContact(list, swept.pair[a], swept.separation(a));
         }
-        if constexpr (Law::batched) flush(list);
     }
 
     // ri (1 + 1e-12) + 1.000001 |vi| dt for every particle, ghosts included (see particlePairs).

@@ -41,6 +41,12 @@ class PairList {
 public:
     std::vector<ParticlePair> pairs;
     ContactHistories history;  // history.get(k) belongs to pairs[k]
+    // pairs[0, interiorPairs) are the direct difference xi - xj apart (its nearest periodic image)
+    // until the next build: both particles owned and too far from every periodic face to cross
+    // one before then, and not paired through an image. They come first, so that the force loop
+    // sweeps them without the image's compare-and-shift (Contacts/PairSweep.h). 0 after any
+    // change to the pairs but a build.
+    std::size_t interiorPairs = 0;
     std::vector<WallCandidate> wallPairs;
     ContactHistories wallHistory;
     // Pairs across the downstream face of an active one-way periodic box (Domain::oneWay): i, a
@@ -106,6 +112,7 @@ public:
 
 private:
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
+    std::size_t putInteriorPairsFirst(const ParticleStore& particles, const Domain& domain);
 };
 
 }  // namespace talus

@@ -69,6 +69,9 @@ inline SweepForm& sweepForm() {
 
 // Pairs [begin, end) of the list, at most SweptPairs::capacity of them, in the given form
 // (lanes: the AVX-512 lanes if the build has them, for as many whole groups of eight as fit).
+// Without nearestImage the separation is the direct difference xi - xj: for the pairs that a
+// build found to keep it as their nearest image (PairList::interiorPairs).
+template <bool nearestImage = true>
 inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const Vec3* position,
                        [[maybe_unused]] std::size_t particleCount, const double* radius,
                        const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
@@ -99,8 +102,10 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         __m512d d[3];
         for (int a = 0; a < 3; ++a) {
             d[a] = _mm512_sub_pd(_mm512_i32gather_pd(i3, coordinates + a, 8), _mm512_i32gather_pd(j3, coordinates + a, 8));
-            d[a] = _mm512_mask_sub_pd(d[a], _mm512_cmp_pd_mask(d[a], half[a], _CMP_GT_OQ), d[a], length[a]);
-            d[a] = _mm512_mask_add_pd(d[a], _mm512_cmp_pd_mask(d[a], minusHalf[a], _CMP_LT_OQ), d[a], length[a]);
+            if constexpr (nearestImage) {
+                d[a] = _mm512_mask_sub_pd(d[a], _mm512_cmp_pd_mask(d[a], half[a], _CMP_GT_OQ), d[a], length[a]);
+                d[a] = _mm512_mask_add_pd(d[a], _mm512_cmp_pd_mask(d[a], minusHalf[a], _CMP_LT_OQ), d[a], length[a]);
+            }
         }
         const __m512d r2 = _mm512_fmadd_pd(d[2], d[2], _mm512_fmadd_pd(d[1], d[1], _mm512_mul_pd(d[0], d[0])));
         const __m512d limit = _mm512_add_pd(_mm512_i32gather_pd(i, radius, 8), _mm512_i32gather_pd(j, radius, 8));
@@ -115,7 +120,8 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 #pragma GCC diagnostic pop
 #endif
     for (; k < end; ++k) {
-        const Vec3 d = image.nearest(position[pairs[k].i] - position[pairs[k].j]);
+        Vec3 d = position[pairs[k].i] - position[pairs[k].j];
+        if constexpr (nearestImage) d = image.nearest(d);
         const double limit = radius[pairs[k].i] + radius[pairs[k].j];
 #ifdef __FMA__
         const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
