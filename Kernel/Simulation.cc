@@ -546,8 +546,7 @@ void Simulation::integrate(bool recordContacts) {
     const double dt = state_.settings.timeStep;
     const double half = 0.5 * dt;
     const std::size_t owned = p.owned();  // ghosts are their owners' business
-    halfKick(p, owned, half);
-    drift(p, owned, dt);
+    halfKickAndDrift(p, owned, half, dt);
     if (p.hasShapes()) turnShapedParticles(half, dt);
     moveWithPrescribedMotion();
     if (state_.domain.anyPeriodic()) state_.domain.wrap(p.position.data(), owned);

@@ -107,7 +107,8 @@ public:
         std::vector<double> sums = {0, 0, memoryBytes("VmHWM") - baselineMemory_, double(p.owned()),
                                     double(contactSummary().contacts), double(pairList().pairs.size()),
                                     domainSplit()->seconds.total(), double(p.ghostCount),
-                                    domainSplit()->seconds.ghosts, domainSplit()->seconds.agreement};
+                                    domainSplit()->seconds.ghosts, domainSplit()->seconds.agreement,
+                                    double(pairList().interiorPairs)};
         for (std::size_t i = 0; i < p.owned(); ++i)
             if (!p.fixed[i]) {
                 sums[0] += p.velocity[i].x();
@@ -117,10 +118,10 @@ public:
         const RunStatistics& run = lastRun();
         if (rank() != 0) return;
         std::printf("benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
-                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f  rebuilds %llu  "
+                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f (%.0f interior)  rebuilds %llu  "
                     "ranks %d  communication %.1f%%  ghosts %.0f  (ghost exchange %.1f%%, agreement %.1f%%)  sweep %s\n",
                     sums[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
-                    sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5],
+                    sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5], sums[10],
                     static_cast<unsigned long long>(pairList().builds), ranks(),
                     100 * sums[6] / ranks() / std::max(run.wallSeconds, 1e-300), sums[7],
                     100 * sums[8] / ranks() / std::max(run.wallSeconds, 1e-300),

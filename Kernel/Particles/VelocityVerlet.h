@@ -41,12 +41,43 @@ inline void advanceMobile(double* __restrict x, const double* __restrict rate, c
         xi[2] = unlessKept(xi[2], xi[2] + s * ri[2], keep);
     }
 }
+
+// The half kick of the velocities and the drift in one pass: v += step F/m, then x += dt v, with
+// the arithmetic of advanceMobile for each (the same results to the bit as the two passes), the
+// velocities read once.
+inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const double* __restrict force,
+                               const double* __restrict invMass, const std::uint8_t* __restrict fixed, std::size_t n,
+                               double step, double dt) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = step * invMass[i];
+        const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
+        double* xi = x + 3 * i;
+        double* vi = v + 3 * i;
+        const double* fi = force + 3 * i;
+        const double v0 = unlessKept(vi[0], vi[0] + s * fi[0], keep), v1 = unlessKept(vi[1], vi[1] + s * fi[1], keep),
+                     v2 = unlessKept(vi[2], vi[2] + s * fi[2], keep);
+        vi[0] = v0, vi[1] = v1, vi[2] = v2;
+        xi[0] = unlessKept(xi[0], xi[0] + dt * v0, keep);
+        xi[1] = unlessKept(xi[1], xi[1] + dt * v1, keep);
+        xi[2] = unlessKept(xi[2], xi[2] + dt * v2, keep);
+    }
+}
 }  // namespace detail
 
 // The half kick of the mobile particles among the first n: v += (dt/2) F/m, w += (dt/2) T/I.
 inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) {
     if (n == 0) return;
     detail::advanceMobile<true>(p.velocity[0].data(), p.force[0].data(), p.invMass.data(), p.fixed.data(), n, halfStep);
+    detail::advanceMobile<true>(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
+                                n, halfStep);
+}
+
+// The first half kick and the drift of the mobile particles among the first n in one pass over
+// the translational data (halfKick then drift, the same to the bit).
+inline void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, double dt) {
+    if (n == 0) return;
+    detail::kickAndDriftMobile(p.position[0].data(), p.velocity[0].data(), p.force[0].data(), p.invMass.data(),
+                               p.fixed.data(), n, halfStep, dt);
     detail::advanceMobile<true>(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
                                 n, halfStep);
 }
