@@ -5,7 +5,12 @@
 // at 23 degrees, periodic across (width 6), with a disordered rough base of fixed spheres of
 // diameter 1 (--base-diameter). Contacts are linear spring-dashpots with e = 0.88 and tc = 0.005 for every pair
 // type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
-// 0.375 between them (a sphere on the base: its own). dt = 1e-4.
+// 0.375 between them (a sphere on the base: its own). dt = 1e-4. With --contact-law table-3C1,
+// the law of the thesis's chapter-3 simulations instead (SPEC.md 1, seed Table 3.C.1): kn = 2e5
+// and gamma_n = 25 for two large spheres in units of dL, mL and g (tc = 4.97e-3, e = 0.883), the
+// same e and tc/sqrt(d/g) for every pair type (d: dL, dS, their mean; a base pair the mean of
+// its two diameters), and the base behaving as large spheres (friction 0.375 for a small sphere
+// on it).
 // Phase 1: the maser, a periodic box [0, 20] (--maser-length), holds the spheres for an inflow
 // height h (--inflow-height, default 6: a solids volume of 0.6 h 20 6), mixed or, with
 // --segregated-start 1, small under large, and develops a flow. It
@@ -22,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <string>
 #include <tuple>
 
 #include "Boundaries/DeletionBoundary.h"
@@ -37,6 +43,7 @@ public:
     double angle = 23, sizeRatio = 1.5, inflowHeight = 6, maserLength = 20, chuteLength = 100, width = 6;
     double sampleInterval = 1, tolerance = 0.02, earliestActivation = 50, latestActivation = 200, baseDiameter = 1;
     int seed = 1, window = 50, segregatedStart = 0;
+    std::string contactLaw = "chapter-4";
     enum ChuteSpecies : std::size_t { large, small, base, chuteSpeciesCount };
 
     MaserFedChute() {
@@ -54,6 +61,8 @@ public:
         addFlag("earliest-activation", "the maser is not activated before this time", earliestActivation);
         addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
         addFlag("segregated-start", "1: the maser's small spheres start below its large ones", segregatedStart);
+        addTextFlag("contact-law", "chapter-4 (e = 0.88, tc = 0.005 for every pair type) or table-3C1 (the thesis's "
+                    "chapter-3 law: kn = 2e5, gamma_n = 25 for large spheres, the other pair types derived)", contactLaw);
         keepInRestart("run.activatedAt", activatedAt_);
         keepInRestart("run.boxParticles", boxParticles_);
         keepInRestart("run.oneWayReactions", oneWayReactions_);
@@ -76,19 +85,9 @@ public:
         setChuteGeometry({.length = maserLength, .width = width, .height = 40, .periodicEnds = true});
         maser.setBox(0, maserLength);
         outlet.setPlane(Vec3::UnitX(), Vec3(maserLength + chuteLength, 0, 0));
-        // SPEC.md 2, chapter 4: e and tc the same for every pair type, so each pair's stiffness
-        // and damping follow from its reduced mass; a fixed base sphere has infinite mass.
         const double dL = 2 * sizeRatio / (1 + sizeRatio), dS = 2 / (1 + sizeRatio), density = 6 / pi;
         const double mL = density * pi / 6 * dL * dL * dL, mS = density * pi / 6 * dS * dS * dS;
-        auto law = [](double reducedMass, double friction) {
-            return LinearSpringDashpot::fromCollision(0.005, 0.88, reducedMass).withFriction(friction);
-        };
-        addSpecies("large", density, law(mL / 2, 0.5));
-        addSpecies("small", density, law(mS / 2, 0.25));
-        addSpecies("base", density, law(mL, 0.5));
-        species().setPair(large, small, law(mL * mS / (mL + mS), 0.375));
-        species().setPair(base, large, law(mL, 0.5));
-        species().setPair(base, small, law(mS, 0.25));
+        setPairLaws(dL, dS, mL, mS, density);
         maserLarge_ = maser.maserSpecies(*this, large);
         maserSmall_ = maser.maserSpecies(*this, small);
         maserBase_ = maser.maserSpecies(*this, base);
@@ -163,6 +162,42 @@ private:
         if (rank() == 0)
             std::printf("%s: chute base of %.0f spheres up to x = %g; the first %g of the chute seeded with a copy of the "
                     "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
+    }
+
+    // The species and their pair laws. chapter-4 (SPEC.md 2): e and tc the same for every pair
+    // type, so each pair's stiffness and damping follow from its reduced mass (a fixed base sphere
+    // has infinite mass: the reduced mass is the other's). table-3C1 (SPEC.md 1, seed Table
+    // 3.C.1): tc and e of two large spheres from kn = 2e5 and gamma_n = 25 in the thesis's units
+    // (dL = mL = g = 1, so m* = 1/2), tc/sqrt(d/g) and e the same for every pair type, and the
+    // base, fixed large particles there, with the large spheres' friction towards both sizes.
+    void setPairLaws(double dL, double dS, double mL, double mS, double density) {
+        require(contactLaw == "chapter-4" || contactLaw == "table-3C1",
+                "--contact-law must be chapter-4 or table-3C1, got '" + contactLaw + "'");
+        const bool thesis = contactLaw == "table-3C1";
+        const double kn = 2e5, gn = 25, m = 0.5;
+        const double tcPerRootDiameter = pi / std::sqrt(kn / m - gn * gn / (4 * m * m)), eThesis = std::exp(-tcPerRootDiameter * gn / (2 * m));
+        auto law = [&](double reducedMass, double diameter, double friction) {
+            return (thesis ? LinearSpringDashpot::fromCollision(tcPerRootDiameter * std::sqrt(diameter), eThesis, reducedMass)
+                           : LinearSpringDashpot::fromCollision(0.005, 0.88, reducedMass))
+                .withFriction(friction);
+        };
+        const double dB = baseDiameter, muLS = 0.375;
+        addSpecies("large", density, law(mL / 2, dL, 0.5));
+        addSpecies("small", density, law(mS / 2, dS, 0.25));
+        addSpecies("base", density, law(mL, dL, 0.5));
+        species().setPair(large, small, law(mL * mS / (mL + mS), (dL + dS) / 2, muLS));
+        species().setPair(base, large, law(mL, (dB + dL) / 2, 0.5));
+        species().setPair(base, small, law(mS, (dB + dS) / 2, thesis ? muLS : 0.25));
+        if (rank() != 0) return;
+        std::printf("%s: contact law %s\n", name().c_str(), contactLaw.c_str());
+        const std::tuple<const char*, std::size_t, std::size_t, double> pairs[] = {
+            {"large-large", large, large, mL / 2}, {"small-small", small, small, mS / 2},
+            {"large-small", large, small, mL * mS / (mL + mS)}, {"base-large", base, large, mL}, {"base-small", base, small, mS}};
+        for (const auto& [label, a, b, reducedMass] : pairs) {
+            const auto l = std::get<LinearSpringDashpot>(species().pairLaw(a, b));
+            std::printf("  %-11s reduced mass %.10g  kn %.10g  gamma_n %.10g  kt %.10g  gamma_t %.10g  mu %.10g\n", label,
+                        reducedMass, l.normalStiffness, l.normalDamping, l.tangentialStiffness, l.tangentialDamping, l.friction);
+        }
     }
 
     // A run restarted after activation with another --chute-length: a longer chute gets the base
