@@ -198,7 +198,7 @@ public:
 
     // The partner's data that the contact pass reads, asked for a few picked pairs ahead: the
     // partners' slots jump about, and once the arrays outgrow the caches those loads miss. Only
-    // in large scenes: measured on the benchmark chute (Documentation/Performance.md), 7% faster
+    // in large scenes: measured on the benchmark chute (Documentation/Performance.md), 7-10% faster
     // at 108000 particles, no gain at 27000 and 1.5-2% slower at 3000 and 12000.
     static constexpr std::size_t prefetchAhead = 8, prefetchFromParticles = 65536;
     void prefetchPartner(std::uint32_t j) const {

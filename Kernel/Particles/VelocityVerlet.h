@@ -18,8 +18,6 @@
 namespace talus {
 
 namespace detail {
-// x[c] += step * scale[i] * rate[c] (without scale: step * rate[c]) for the three coordinates c
-// of every particle i in [0, n) that is not fixed.
 // x unless keep (all bits set), then `moved`. The fixed particles keep x by this bit mask: with a
 // branch or a conditional expression GCC 12 does not vectorise the loop, and with a zero step
 // instead x + 0 r would turn -0 into +0.
@@ -27,11 +25,12 @@ inline double unlessKept(double x, double moved, std::uint64_t keep) {
     return std::bit_cast<double>((std::bit_cast<std::uint64_t>(x) & keep) | (std::bit_cast<std::uint64_t>(moved) & ~keep));
 }
 
-template <bool scaled>
+// x[c] += step * scale[i] * rate[c] for the three coordinates c of every particle i in [0, n)
+// that is not fixed.
 inline void advanceMobile(double* __restrict x, const double* __restrict rate, const double* __restrict scale,
                           const std::uint8_t* __restrict fixed, std::size_t n, double step) {
     for (std::size_t i = 0; i < n; ++i) {
-        const double s = scaled ? step * scale[i] : step;
+        const double s = step * scale[i];
         const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
         // (Three statements, not a loop of three: GCC would vectorise that inner loop instead.)
         double* xi = x + 3 * i;
@@ -42,8 +41,8 @@ inline void advanceMobile(double* __restrict x, const double* __restrict rate, c
     }
 }
 
-// The half kick of the velocities and the drift in one pass: v += step F/m, then x += dt v, with
-// the arithmetic of advanceMobile for each (the same results to the bit as the two passes), the
+// The half kick of the velocities and the drift in one pass: v += step F/m as advanceMobile does
+// it, then x += dt v (the same results to the bit as a kick pass and a drift pass), the
 // velocities read once.
 inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const double* __restrict force,
                                const double* __restrict invMass, const std::uint8_t* __restrict fixed, std::size_t n,
@@ -67,8 +66,8 @@ inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const
 // The half kick of the mobile particles among the first n: v += (dt/2) F/m, w += (dt/2) T/I.
 inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) {
     if (n == 0) return;
-    detail::advanceMobile<true>(p.velocity[0].data(), p.force[0].data(), p.invMass.data(), p.fixed.data(), n, halfStep);
-    detail::advanceMobile<true>(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
+    detail::advanceMobile(p.velocity[0].data(), p.force[0].data(), p.invMass.data(), p.fixed.data(), n, halfStep);
+    detail::advanceMobile(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
                                 n, halfStep);
 }
 
@@ -78,14 +77,8 @@ inline void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, d
     if (n == 0) return;
     detail::kickAndDriftMobile(p.position[0].data(), p.velocity[0].data(), p.force[0].data(), p.invMass.data(),
                                p.fixed.data(), n, halfStep, dt);
-    detail::advanceMobile<true>(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
+    detail::advanceMobile(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
                                 n, halfStep);
-}
-
-// The drift of the mobile particles among the first n: x += dt v.
-inline void drift(ParticleStore& p, std::size_t n, double dt) {
-    if (n == 0) return;
-    detail::advanceMobile<false>(p.position[0].data(), p.velocity[0].data(), nullptr, p.fixed.data(), n, dt);
 }
 
 }  // namespace talus
