@@ -444,10 +444,15 @@ private:
         c.effectiveRadius = g.effectiveRadius;
         c.inverseDistance = 0;  // the spring is projected (below), not rotated as for spheres
         if (history.isTouching()) {  // (one square root: the length ratio from the squared lengths)
-            const double length2 = history.spring.squaredNorm();
-            history.spring -= history.spring.dot(n) * n;
-            const double projected2 = history.spring.squaredNorm();
-            if (projected2 > 0) history.spring *= std::sqrt(length2 / projected2);
+            // (On plain numbers: as Eigen expressions GCC left this out of line here.)
+            double& sx = history.spring.x();
+            double& sy = history.spring.y();
+            double& sz = history.spring.z();
+            const double length2 = sx * sx + sy * sy + sz * sz, along = sx * n.x() + sy * n.y() + sz * n.z();
+            sx -= along * n.x(), sy -= along * n.y(), sz -= along * n.z();
+            const double projected2 = sx * sx + sy * sy + sz * sz;
+            const double stretch = projected2 > 0 ? std::sqrt(length2 / projected2) : 1.0;
+            sx *= stretch, sy *= stretch, sz *= stretch;
         } else {
             history.spring.setZero();
         }

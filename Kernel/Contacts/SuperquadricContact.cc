@@ -22,22 +22,48 @@ namespace {
 using Vec4 = Eigen::Matrix<double, 4, 1>;
 using Mat4 = Eigen::Matrix<double, 4, 4>;
 
+// A shape function's value and gradient: all the solve evaluates of an ellipsoid, whose Hessian
+// is the constant 2 Q of its quadric.
+struct ShapeSlope {
+    double value;
+    Vec3 gradient;
+};
+
+// How the solve evaluates the bodies: two ellipsoids (the fast path: value and gradient from the
+// quadric, Hessians fixed) or any superquadrics (value, gradient and Hessian at each point).
+struct TwoEllipsoids {
+    using Value = ShapeSlope;
+    static Value at(const PlacedSuperquadric& body, const Vec3& x) {
+        const Vec3 d = x - body.centre, qd = body.quadric * d;
+        return {d.dot(qd) - 1, 2 * qd};
+    }
+    static Mat3 hessian(const PlacedSuperquadric& body, const Value&) { return 2 * body.quadric; }
+};
+struct AnySuperquadrics {
+    using Value = ShapeValue;
+    static Value at(const PlacedSuperquadric& body, const Vec3& x) { return body.at(x); }
+    static const Mat3& hessian(const PlacedSuperquadric&, const Value& v) { return v.hessian; }
+};
+
 struct NewtonResult {
     bool converged = false;
     SuperquadricContactPoint point;
     int iterations = 0;
-    ShapeValue atI{};  // Fi at the point (so that it is not evaluated again)
+    ShapeSlope atI{}, atJ{};  // Fi, Fj and their gradients at the point (not evaluated again)
 };
 
 // Phi of the header, its gradient rows scaled by a length so that all four components are
 // dimensionless and comparable.
+template <class Bodies>
 struct Residual {
     Vec4 phi;
-    ShapeValue i, j;
+    typename Bodies::Value i, j;
 };
-Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const Vec3& x, double mu, double scale) {
-    Residual r{Vec4::Zero(), i.at(x), j.at(x)};
-    r.phi.head<3>() = scale * (r.i.gradient + mu * mu * r.j.gradient);
+template <class Bodies>
+[[gnu::always_inline]] inline Residual<Bodies> residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const Vec3& x, double mu,
+                          double scale) {
+    Residual<Bodies> r{Vec4::Zero(), Bodies::at(i, x), Bodies::at(j, x)};
+    r.phi.template head<3>() = scale * (r.i.gradient + mu * mu * r.j.gradient);
     r.phi[3] = r.i.value - r.j.value;
     return r;
 }
@@ -47,8 +73,10 @@ Residual residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, cons
 // definite for two strictly convex bodies): dmu = (Phi_4 - c.A^-1 Phi_123) / (c.A^-1 b) and
 // dX = -A^-1 (Phi_123 + dmu b), with the closed-form 3 x 3 inverse. Where A is nearly singular
 // (the flat faces of blocky shapes) the 4 x 4 system is solved by LU instead.
-Vec4 newtonStep(const Residual& r, double mu, double scale) {
-    const Mat3 A = scale * (r.i.hessian + mu * mu * r.j.hessian);
+template <class Bodies>
+Vec4 newtonStep(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const Residual<Bodies>& r, double mu,
+                double scale) {
+    const Mat3 A = scale * (Bodies::hessian(i, r.i) + mu * mu * Bodies::hessian(j, r.j));
     const Vec3 b = scale * 2 * mu * r.j.gradient, c = r.i.gradient - r.j.gradient;
     // A^-1 = adj(A) / det A with the cofactors computed once; the test |det A| > 1e-12 |A|^3
     // (Frobenius norm) squared, so that no square root is taken.
@@ -59,7 +87,7 @@ Vec4 newtonStep(const Residual& r, double mu, double scale) {
     const double determinant = A.col(0).dot(adjugate.col(0)), size2 = A.squaredNorm();
     if (determinant * determinant > 1e-24 * size2 * size2 * size2) {
         const Mat3 inverse = adjugate.transpose() / determinant;
-        const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.head<3>();
+        const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.template head<3>();
         const double dmu = (r.phi[3] - c.dot(inverseR)) / c.dot(inverseB);
         Vec4 step;
         step.head<3>() = -(inverseR + dmu * inverseB);
@@ -75,25 +103,26 @@ Vec4 newtonStep(const Residual& r, double mu, double scale) {
 }
 
 // The damped Newton solve of SPEC.md 4 from `start`.
-NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
-                   const SuperquadricContactSettings& settings, double scale) {
+template <class Bodies>
+NewtonResult solveFor(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
+                      const SuperquadricContactSettings& settings, double scale) {
     NewtonResult result;
     Vec3 x = start.point;
     double mu = start.multiplier;
-    Residual r = residual(i, j, x, mu, scale);
+    Residual<Bodies> r = residual<Bodies>(i, j, x, mu, scale);
     double residual2 = r.phi.squaredNorm();  // (squared norms throughout: no square roots)
     const double tolerance2 = settings.tolerance * settings.tolerance;
     for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
         result.iterations = iteration;
-        const Vec4 step = newtonStep(r, mu, scale);
+        const Vec4 step = newtonStep<Bodies>(i, j, r, mu, scale);
         if (!step.allFinite()) return result;
         // Halve the step while the residual does not decrease.
         double t = 1;
-        Residual next = residual(i, j, x + step.head<3>(), mu + step[3], scale);
+        Residual<Bodies> next = residual<Bodies>(i, j, x + step.head<3>(), mu + step[3], scale);
         double next2 = next.phi.squaredNorm();
         while (!(next2 < residual2) && t > 1e-10) {
             t *= 0.5;
-            next = residual(i, j, x + t * step.head<3>(), mu + t * step[3], scale);
+            next = residual<Bodies>(i, j, x + t * step.head<3>(), mu + t * step[3], scale);
             next2 = next.phi.squaredNorm();
         }
         if (!(next2 < residual2)) {
@@ -109,7 +138,7 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
         // hundred times below the tolerance (Newton's next step would be smaller still: a warm
         // start then ends after one iteration).
         const double gradientScale = 1 + scale * r.i.gradient.norm();
-        const double gradient2 = r.phi.head<3>().squaredNorm(), limit2 = tolerance2 * gradientScale * gradientScale;
+        const double gradient2 = r.phi.template head<3>().squaredNorm(), limit2 = tolerance2 * gradientScale * gradientScale;
         const bool residualSmall = std::abs(r.phi[3]) <= settings.tolerance && gradient2 <= limit2;
         const bool residualTiny = std::abs(r.phi[3]) <= 0.01 * settings.tolerance && gradient2 <= 1e-4 * limit2;
         if ((residualSmall && t * t * step.head<3>().squaredNorm() <= tolerance2 * scale * scale) || residualTiny) {
@@ -118,20 +147,25 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
         }
     }
     result.point = {x, std::abs(mu)};
-    result.atI = r.i;
+    result.atI = {r.i.value, r.i.gradient};
+    result.atJ = {r.j.value, r.j.gradient};
     return result;
 }
 
-// The distance d >= 0 from a point inside the body along the unit direction u to its surface:
-// F(x + d u) = 0, by Newton's method kept inside a bracket [inside, outside] (bisection when a
-// Newton step leaves it), since F of a blocky shape is very flat inside and steep outside.
-double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u) {
+NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
+                   const SuperquadricContactSettings& settings, double scale) {
+    if (i.shape->isEllipsoid() && j.shape->isEllipsoid()) return solveFor<TwoEllipsoids>(i, j, start, settings, scale);
+    return solveFor<AnySuperquadrics>(i, j, start, settings, scale);
+}
+
+// The distance d >= 0 from a point x inside the body along the unit direction u to its surface:
+// F(x + d u) = 0, given F and grad F at x. An ellipsoid's F(x + d u) = F + d grad F.u + d^2 u^T Q u
+// is a quadratic: its positive root in the form that does not cancel (F < 0 inside). Other shapes:
+// Newton's method kept inside a bracket [inside, outside] (bisection when a Newton step leaves
+// it), since F of a blocky shape is very flat inside and steep outside.
+double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const ShapeSlope& atX, const Vec3& u) {
     if (body.shape->isEllipsoid()) {
-        // F(x + d u) = |s + d v|^2 - 1 with s, v the body-frame point and direction scaled by
-        // the semi-axes: the positive root of a quadratic (s.s < 1 inside), in the form that
-        // does not cancel.
-        const Vec3 s = body.toUnitSphere * (x - body.centre), v = body.toUnitSphere * u;
-        const double a = v.squaredNorm(), b = s.dot(v), c = s.squaredNorm() - 1;
+        const double a = u.dot(body.quadric * u), b = 0.5 * atX.gradient.dot(u), c = atX.value;
         const double root = std::sqrt(b * b - a * c);
         return b > 0 ? -c / (b + root) : (root - b) / a;
     }
@@ -164,8 +198,10 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
     SuperquadricContact contact;
     const double Ri = i.shape->boundingRadius(), Rj = j.shape->boundingRadius();
     const Vec3 between = j.centre - i.centre;
-    const double distance = between.norm();
-    if (distance >= Ri + Rj) {  // the bounding spheres are apart: so are the bodies
+    // (The distance's square root is taken only where it is used: a warm start needs none.)
+    const double distance2 = between.squaredNorm();
+    if (distance2 >= (Ri + Rj) * (Ri + Rj)) {  // the bounding spheres are apart: so are the bodies
+        const double distance = std::sqrt(distance2);
         contact.converged = true;
         contact.solution.multiplier = 0;  // nothing solved: no warm start
         contact.gapBound = distance - (Ri + Rj);
@@ -176,6 +212,7 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
         // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (SPEC.md 1).
         contact.converged = true;
         contact.touching = true;
+        const double distance = std::sqrt(distance2);
         const Vec3 iToJ = between / distance;
         contact.solution = {i.centre + Ri / (Ri + Rj) * between, std::sqrt(Rj / Ri)};
         contact.normal = -iToJ;
@@ -185,18 +222,21 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
     }
     const double scale = std::min(Ri, Rj);
     // The bounding spheres' contact point: the middle of their overlap on the line of centres.
-    const Vec3 iToJ = distance > 0 ? Vec3(between / distance) : Vec3::UnitZ();
-    const SuperquadricContactPoint sphereStart{i.centre + (Ri - 0.5 * (Ri + Rj - distance)) * iToJ, 1};
+    auto sphereStart = [&] {
+        const double distance = std::sqrt(distance2);
+        const Vec3 iToJ = distance > 0 ? Vec3(between / distance) : Vec3::UnitZ();
+        return SuperquadricContactPoint{i.centre + (Ri - 0.5 * (Ri + Rj - distance)) * iToJ, 1};
+    };
 
-    NewtonResult found = solve(i, j, start ? *start : sphereStart, settings, scale);
+    NewtonResult found = solve(i, j, start ? *start : sphereStart(), settings, scale);
     contact.iterations = found.iterations;
     if (!found.converged && start) {
-        found = solve(i, j, sphereStart, settings, scale);
+        found = solve(i, j, sphereStart(), settings, scale);
         contact.iterations += found.iterations;
     }
     // Plan B: from the bounding spheres to the true shapes in stages.
     for (int stages = 4; !found.converged && stages <= 16; stages *= 2) {
-        SuperquadricContactPoint point = sphereStart;
+        SuperquadricContactPoint point = sphereStart();
         bool ok = true;
         for (int k = 1; k <= stages && ok; ++k) {
             const double s = static_cast<double>(k) / stages;
@@ -208,14 +248,17 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
             point = stage.point;
         }
         contact.morphStages = stages;
-        if (ok) found = {true, point, 0, i.at(point.point)};  // (the morphed shapes' Fi is not i's)
+        if (ok) {
+            const ShapeValue atI = i.at(point.point), atJ = j.at(point.point);
+            found = {true, point, 0, {atI.value, atI.gradient}, {atJ.value, atJ.gradient}};
+        }  // (the morphed shapes' Fi is not i's)
     }
     if (!found.converged) return contact;
 
     contact.converged = true;
     contact.solution = found.point;
     const Vec3& x = found.point.point;
-    const ShapeValue& atI = found.atI;
+    const ShapeSlope& atI = found.atI;
     contact.touching = atI.value < 0;
     if (!contact.touching) {
         // Fi = Fj = t > 0 at Xc: f + 1 is homogeneous of degree 2/e1, so the level set F = t is the
@@ -230,10 +273,10 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
         };
         contact.gapBound = growth(i) + growth(j);
     }
-    const Vec3 outOfI = atI.gradient.normalized();
+    const Vec3 outOfI = atI.gradient * (1 / atI.gradient.norm());  // (one division, not three)
     contact.normal = -outOfI;
     if (!contact.touching) return contact;
-    const double di = distanceToSurface(i, x, outOfI), dj = distanceToSurface(j, x, -outOfI);
+    const double di = distanceToSurface(i, x, atI, outOfI), dj = distanceToSurface(j, x, found.atJ, -outOfI);
     contact.overlap = di + dj;
     contact.contactPoint = x + 0.5 * (di - dj) * outOfI;
     return contact;

@@ -66,10 +66,28 @@ inline Mat3 labInertia(const Quat& orientation, const Vec3& principalInertia) {
     return A * principalInertia.asDiagonal() * A.transpose();
 }
 
+// v turned by the unit quaternion q (q v q*): v + 2w (u x v) + 2 u x (u x v) with u the vector
+// part. Written on plain numbers and always inlined: it runs per particle and step, and as
+// Eigen's quaternion product GCC called it out of line.
+[[gnu::always_inline]] inline Vec3 turned(const Quat& q, const Vec3& v) {
+    const double w = q.w(), ux = q.x(), uy = q.y(), uz = q.z();
+    const double tx = 2 * (uy * v.z() - uz * v.y()), ty = 2 * (uz * v.x() - ux * v.z()), tz = 2 * (ux * v.y() - uy * v.x());
+    return {v.x() + w * tx + (uy * tz - uz * ty), v.y() + w * ty + (uz * tx - ux * tz), v.z() + w * tz + (ux * ty - uy * tx)};
+}
+
+// The quaternion product a b, on plain numbers and always inlined (Eigen's is called out of line
+// in the per-particle loop).
+[[gnu::always_inline]] inline Quat product(const Quat& a, const Quat& b) {
+    return Quat(a.w() * b.w() - a.x() * b.x() - a.y() * b.y() - a.z() * b.z(),
+                a.w() * b.x() + a.x() * b.w() + a.y() * b.z() - a.z() * b.y(),
+                a.w() * b.y() - a.x() * b.z() + a.y() * b.w() + a.z() * b.x(),
+                a.w() * b.z() + a.x() * b.y() - a.y() * b.x() + a.z() * b.w());
+}
+
 // Lab angular velocity omega = A I^-1 A^T L, for contact kinematics (v + omega x branch).
 inline Vec3 angularVelocity(const Quat& orientation, const Vec3& angularMomentum, const Vec3& principalInertia) {
-    const Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;  // M = A^T L
-    return orientation * bodyMomentum.cwiseQuotient(principalInertia).eval();
+    const Vec3 bodyMomentum = turned(orientation.conjugate(), angularMomentum);  // M = A^T L
+    return turned(orientation, bodyMomentum.cwiseQuotient(principalInertia).eval());
 }
 
 // The lab angular momentum L = A I A^T omega of a body turning at lab angular velocity omega
@@ -104,12 +122,12 @@ inline void sinCos(double x, double& s, double& c) {
 // The exact flow of T_k = c M_k^2 / 2 (k a body axis) for a time t: the body turns about its own
 // axis k at the constant rate c M_k, so q <- q (cos(phi/2), sin(phi/2) e_k) with phi = c M_k t,
 // and the body components of the lab-fixed L turn the other way, M <- R_k(-phi) M, as in DLM.
-inline void rotateAboutBodyAxis(Quat& q, Vec3& bodyMomentum, int k, double rate, double t) {
+[[gnu::always_inline]] inline void rotateAboutBodyAxis(Quat& q, Vec3& bodyMomentum, int k, double rate, double t) {
     double s, c;
     sinCos(0.5 * rate * bodyMomentum[k] * t, s, c);
     Quat turn(c, 0, 0, 0);
     turn.vec()[k] = s;
-    q = q * turn;
+    q = product(q, turn);
     const int i = (k + 1) % 3, j = (k + 2) % 3;  // (k, i, j) cyclic
     const double cosAngle = c * c - s * s, sinAngle = 2 * s * c;
     const double Mi = bodyMomentum[i], Mj = bodyMomentum[j];
@@ -166,7 +184,7 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
         double s, c;
         detail::sinCos(0.5 * momentum * medianRate * dt, s, c);
         const Vec3 axis = (s / momentum) * angularMomentum;
-        orientation = Quat(c, axis.x(), axis.y(), axis.z()) * orientation;
+        orientation = product(Quat(c, axis.x(), axis.y(), axis.z()), orientation);
     }
 
     int outer = (median + 1) % 3, inner = (median + 2) % 3;
@@ -179,7 +197,7 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
     // rotation is skipped, and the two outer half-steps, then about the same axis with nothing
     // between them, are one whole step.
     if (outerRate != 0) {
-        Vec3 bodyMomentum = orientation.conjugate() * angularMomentum;
+        Vec3 bodyMomentum = turned(orientation.conjugate(), angularMomentum);
         if (innerRate == 0) {
             detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, dt);
         } else {
@@ -188,7 +206,7 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
             detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
         }
     }
-    orientation.normalize();
+    orientation.coeffs() *= 1 / orientation.norm();  // (one division, not four)
 }
 
 }  // namespace talus
