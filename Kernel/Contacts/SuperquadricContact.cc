@@ -86,7 +86,7 @@ Vec4 newtonStep(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const 
     adjugate.col(2) = A.col(0).cross(A.col(1));
     const double determinant = A.col(0).dot(adjugate.col(0)), size2 = A.squaredNorm();
     if (determinant * determinant > 1e-24 * size2 * size2 * size2) {
-        const Mat3 inverse = adjugate.transpose() / determinant;
+        const Mat3 inverse = adjugate.transpose() * (1 / determinant);  // (one division, not nine)
         const Vec3 inverseB = inverse * b, inverseR = inverse * r.phi.template head<3>();
         const double dmu = (r.phi[3] - c.dot(inverseR)) / c.dot(inverseB);
         Vec4 step;
@@ -163,12 +163,15 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
 // is a quadratic: its positive root in the form that does not cancel (F < 0 inside). Other shapes:
 // Newton's method kept inside a bracket [inside, outside] (bisection when a Newton step leaves
 // it), since F of a blocky shape is very flat inside and steep outside.
-double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const ShapeSlope& atX, const Vec3& u) {
-    if (body.shape->isEllipsoid()) {
-        const double a = u.dot(body.quadric * u), b = 0.5 * atX.gradient.dot(u), c = atX.value;
-        const double root = std::sqrt(b * b - a * c);
-        return b > 0 ? -c / (b + root) : (root - b) / a;
-    }
+double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u);
+[[gnu::always_inline]] inline double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x,
+                                                       const ShapeSlope& atX, const Vec3& u) {
+    if (!body.shape->isEllipsoid()) return bracketedDistanceToSurface(body, x, u);
+    const double a = u.dot(body.quadric * u), b = 0.5 * atX.gradient.dot(u), c = atX.value;
+    const double root = std::sqrt(b * b - a * c);
+    return b > 0 ? -c / (b + root) : (root - b) / a;
+}
+double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u) {
     double inside = 0, outside = 2 * body.shape->boundingRadius() + (x - body.centre).norm();
     double d = 0;
     for (int k = 0; k < 200; ++k) {
