@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "Particles/RigidBodyRotation.h"
@@ -438,4 +439,27 @@ TEST(RigidBodyRotation, SmallAngleSineAndCosineAreExactToRounding) {
     detail::sinCos(3.0, s, c);  // beyond the series: the library's
     EXPECT_EQ(s, std::sin(3.0));
     EXPECT_EQ(c, std::cos(3.0));
+}
+
+// The inlined quaternion arithmetic on plain numbers (turned, product) against Eigen's quaternion
+// rotation and product, and turned against the rotation matrix, for random quaternions and vectors.
+TEST(RigidBodyRotation, PlainQuaternionArithmeticAgreesWithEigen) {
+    std::mt19937_64 random(20261201);
+    std::normal_distribution<double> gauss;
+    double worstTurn = 0, worstMatrix = 0, worstProduct = 0;
+    for (int n = 0; n < 1000; ++n) {
+        const Quat a = Quat(gauss(random), gauss(random), gauss(random), gauss(random)).normalized();
+        const Quat b = Quat(gauss(random), gauss(random), gauss(random), gauss(random)).normalized();
+        const Vec3 v(gauss(random), gauss(random), gauss(random));
+        worstTurn = std::max(worstTurn, (turned(a, v) - a * v).norm() / v.norm());
+        worstMatrix = std::max(worstMatrix, (turned(a, v) - a.toRotationMatrix() * v).norm() / v.norm());
+        worstProduct = std::max(worstProduct, (product(a, b).coeffs() - (a * b).coeffs()).norm());
+    }
+    EXPECT_LT(worstTurn, 1e-15 * 8);
+    EXPECT_LT(worstMatrix, 1e-15 * 8);
+    EXPECT_LT(worstProduct, 1e-15 * 8);
+    // A quarter turn about z takes x to y (the direction convention, not just agreement).
+    const Quat quarter(std::cos(pi / 4), 0, 0, std::sin(pi / 4));
+    EXPECT_LT((turned(quarter, Vec3::UnitX()) - Vec3::UnitY()).norm(), 1e-15);
+    EXPECT_LT((turned(quarter.conjugate(), Vec3::UnitY()) - Vec3::UnitX()).norm(), 1e-15);
 }

@@ -60,8 +60,8 @@ struct Residual {
     typename Bodies::Value i, j;
 };
 template <class Bodies>
-[[gnu::always_inline]] inline Residual<Bodies> residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const Vec3& x, double mu,
-                          double scale) {
+[[gnu::always_inline]] inline Residual<Bodies> residual(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                                        const Vec3& x, double mu, double scale) {
     Residual<Bodies> r{Vec4::Zero(), Bodies::at(i, x), Bodies::at(j, x)};
     r.phi.template head<3>() = scale * (r.i.gradient + mu * mu * r.j.gradient);
     r.phi[3] = r.i.value - r.j.value;

@@ -25,14 +25,10 @@ struct PlacedSuperquadric {
 
     PlacedSuperquadric() = default;
     PlacedSuperquadric(const Superquadric* s, const Vec3& c, const Mat3& r) : shape(s), centre(c), rotation(r) {
-        // An ellipsoid's lab shape function is the quadric F = |M d|^2 - 1 = d^T Q d - 1 with
-        // d = x - centre, M = diag(1/a, 1/b, 1/c) A^T (lab to the unit sphere) and Q = M^T M:
-        // two matrices per body and step, then every evaluation is a matrix-vector product (the
-        // ellipsoid fast path).
-        if (s->isEllipsoid()) {
-            toUnitSphere = s->semiAxes().cwiseInverse().asDiagonal() * r.transpose();
-            quadric = toUnitSphere.transpose() * toUnitSphere;
-        }
+        // An ellipsoid's lab shape function is the quadric F = d^T Q d - 1 with d = x - centre and
+        // Q = A diag(1/a^2, 1/b^2, 1/c^2) A^T: one matrix per body and step, then every evaluation
+        // is a matrix-vector product (the ellipsoid fast path).
+        if (s->isEllipsoid()) quadric = r * s->semiAxes().cwiseInverse().cwiseAbs2().asDiagonal() * r.transpose();
     }
 
     // F, grad F and the Hessian in the lab frame (SPEC.md 4: A grad f, A H A^T).
@@ -45,8 +41,7 @@ struct PlacedSuperquadric {
         return shape->shapeFunction(rotation.transpose() * (x - centre));
     }
 
-    Mat3 quadric = Mat3::Zero();       // ellipsoids only
-    Mat3 toUnitSphere = Mat3::Zero();  // ellipsoids only
+    Mat3 quadric = Mat3::Zero();  // ellipsoids only
 };
 
 // The point and multiplier a contact remembers from step to step (the warm start).
