@@ -384,18 +384,17 @@ private:
     // (The separation comes as three numbers, in registers: a Vec3 would go through memory.)
     [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                       double dy, double dz) {
-        const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
-        ContactHistory history = list.history.get(k);
-        if (history.isApproaching() && history.gapBound() > 0) {
+        // (The bound is lowered in place: a skipped pair reads and writes nothing else.)
+        if (list.history.state(k) == ContactHistory::approaching && list.history.gapBoundOf(k) > 0) {
             const double closing = (p_.velocity[i] - p_.velocity[j]).norm() + p_.angularVelocity[i].norm() * p_.radius[i] +
                                    p_.angularVelocity[j].norm() * p_.radius[j];
-            history.gapBound() -= 1.5 * closing * dt_;
-            if (history.gapBound() > 0) {
-                history.lastNormalForce = 0;
-                list.history.set(k, history);
-                return;
-            }
+            double& gapBound = list.history.gapBoundOf(k);
+            gapBound -= 1.5 * closing * dt_;
+            list.history.clearLastNormalForce(k);
+            if (gapBound > 0) return;
         }
+        const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
+        ContactHistory history = list.history.get(k);
         const ShapedContactGeometry g = shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius);
         if (!g.converged) detectionFailed(i, j);
         history.warmPoint = g.solution.point;

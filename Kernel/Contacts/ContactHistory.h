@@ -68,6 +68,7 @@ public:
     }
     bool hasWarmStarts() const { return withWarmStarts_; }
     void clearLastNormalForce(std::size_t k) { lastNormalForces_[k] = 0; }
+    double& gapBoundOf(std::size_t k) { return springs_[k].x(); }  // (ContactHistory::gapBound)
     double lastNormalForceOf(std::size_t k) const { return lastNormalForces_[k]; }
     const Vec3& springOf(std::size_t k) const { return springs_[k]; }
     void assign(std::size_t n) {
