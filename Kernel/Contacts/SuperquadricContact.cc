@@ -158,18 +158,20 @@ NewtonResult solve(const PlacedSuperquadric& i, const PlacedSuperquadric& j, Sup
     return solveFor<AnySuperquadrics>(i, j, start, settings, scale);
 }
 
-// The distance d >= 0 from a point x inside the body along the unit direction u to its surface:
-// F(x + d u) = 0, given F and grad F at x. An ellipsoid's F(x + d u) = F + d grad F.u + d^2 u^T Q u
-// is a quadratic: its positive root in the form that does not cancel (F < 0 inside). Other shapes:
-// Newton's method kept inside a bracket [inside, outside] (bisection when a Newton step leaves
-// it), since F of a blocky shape is very flat inside and steep outside.
+// The distance d >= 0 from a point x inside the body along the direction g (not normalised) to
+// its surface: F(x + d g/|g|) = 0, given F and grad F at x and |g|. An ellipsoid's
+// F(x + t g) = F + t grad F.g + t^2 g^T Q g is a quadratic in t = d/|g|: its positive root in the
+// form that does not cancel (F < 0 inside); g is not normalised first, so that this square root
+// and division need not wait for those of |g|. Other shapes: Newton's method kept inside a
+// bracket [inside, outside] (bisection when a Newton step leaves it), since F of a blocky shape
+// is very flat inside and steep outside.
 double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u);
 [[gnu::always_inline]] inline double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x,
-                                                       const ShapeSlope& atX, const Vec3& u) {
-    if (!body.shape->isEllipsoid()) return bracketedDistanceToSurface(body, x, u);
-    const double a = u.dot(body.quadric * u), b = 0.5 * atX.gradient.dot(u), c = atX.value;
+                                                       const ShapeSlope& atX, const Vec3& g, double gLength) {
+    if (!body.shape->isEllipsoid()) return bracketedDistanceToSurface(body, x, g / gLength);
+    const double a = g.dot(body.quadric * g), b = 0.5 * atX.gradient.dot(g), c = atX.value;
     const double root = std::sqrt(b * b - a * c);
-    return b > 0 ? -c / (b + root) : (root - b) / a;
+    return (b > 0 ? -c / (b + root) : (root - b) / a) * gLength;
 }
 double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u) {
     double inside = 0, outside = 2 * body.shape->boundingRadius() + (x - body.centre).norm();
@@ -276,10 +278,12 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
         };
         contact.gapBound = growth(i) + growth(j);
     }
-    const Vec3 outOfI = atI.gradient * (1 / atI.gradient.norm());  // (one division, not three)
+    const double gradientLength = atI.gradient.norm();
+    const Vec3 outOfI = atI.gradient * (1 / gradientLength);  // (one division, not three)
     contact.normal = -outOfI;
     if (!contact.touching) return contact;
-    const double di = distanceToSurface(i, x, atI, outOfI), dj = distanceToSurface(j, x, found.atJ, -outOfI);
+    const double di = distanceToSurface(i, x, atI, atI.gradient, gradientLength),
+                 dj = distanceToSurface(j, x, found.atJ, -atI.gradient, gradientLength);
     contact.overlap = di + dj;
     contact.contactPoint = x + 0.5 * (di - dj) * outOfI;
     return contact;

@@ -109,7 +109,7 @@ namespace detail {
 // sin x and cos x. A step turns a particle by a small angle (|omega| dt ~ 1e-3), where the
 // Taylor series to x^9 and x^10 is exact to rounding (the next terms are below 1e-22 relative
 // for |x| <= 1/16) and several times cheaper than the library's sin and cos.
-inline void sinCos(double x, double& s, double& c) {
+[[gnu::always_inline]] inline void sinCos(double x, double& s, double& c) {
     if (!(std::abs(x) <= 0.0625)) {
         s = std::sin(x), c = std::cos(x);
         return;
