@@ -181,22 +181,31 @@ private:
                            : LinearSpringDashpot::fromCollision(0.005, 0.88, reducedMass))
                 .withFriction(friction);
         };
+        // Each pair type once: its reduced mass, the diameter its tc scales with, its friction.
         const double dB = baseDiameter, muLS = 0.375;
-        addSpecies("large", density, law(mL / 2, dL, 0.5));
-        addSpecies("small", density, law(mS / 2, dS, 0.25));
-        addSpecies("base", density, law(mL, dL, 0.5));
-        species().setPair(large, small, law(mL * mS / (mL + mS), (dL + dS) / 2, muLS));
-        species().setPair(base, large, law(mL, (dB + dL) / 2, 0.5));
-        species().setPair(base, small, law(mS, (dB + dS) / 2, thesis ? muLS : 0.25));
+        struct PairType {
+            const char* label;
+            ChuteSpecies a, b;
+            double reducedMass, diameter, friction;
+        };
+        const PairType pairs[] = {{"large-large", large, large, mL / 2, dL, 0.5},
+                                  {"small-small", small, small, mS / 2, dS, 0.25},
+                                  {"large-small", large, small, mL * mS / (mL + mS), (dL + dS) / 2, muLS},
+                                  {"base-large", base, large, mL, (dB + dL) / 2, 0.5},
+                                  {"base-small", base, small, mS, (dB + dS) / 2, thesis ? muLS : 0.25}};
+        auto lawOf = [&](const PairType& t) { return law(t.reducedMass, t.diameter, t.friction); };
+        addSpecies("large", density, lawOf(pairs[0]));
+        addSpecies("small", density, lawOf(pairs[1]));
+        addSpecies("base", density, law(mL, dL, 0.5));  // (base with base: both fixed, never in contact)
+        for (const PairType& t : pairs)
+            if (t.a != t.b) species().setPair(t.a, t.b, lawOf(t));
         if (rank() != 0) return;
         std::printf("%s: contact law %s\n", name().c_str(), contactLaw.c_str());
-        const std::tuple<const char*, std::size_t, std::size_t, double> pairs[] = {
-            {"large-large", large, large, mL / 2}, {"small-small", small, small, mS / 2},
-            {"large-small", large, small, mL * mS / (mL + mS)}, {"base-large", base, large, mL}, {"base-small", base, small, mS}};
-        for (const auto& [label, a, b, reducedMass] : pairs) {
-            const auto l = std::get<LinearSpringDashpot>(species().pairLaw(a, b));
-            std::printf("  %-11s reduced mass %.10g  kn %.10g  gamma_n %.10g  kt %.10g  gamma_t %.10g  mu %.10g\n", label,
-                        reducedMass, l.normalStiffness, l.normalDamping, l.tangentialStiffness, l.tangentialDamping, l.friction);
+        for (const PairType& t : pairs) {
+            const auto l = std::get<LinearSpringDashpot>(species().pairLaw(t.a, t.b));
+            std::printf("  %-11s reduced mass %.10g  kn %.10g  gamma_n %.10g  kt %.10g  gamma_t %.10g  mu %.10g\n", t.label,
+                        t.reducedMass, l.normalStiffness, l.normalDamping, l.tangentialStiffness, l.tangentialDamping,
+                        l.friction);
         }
     }
 
