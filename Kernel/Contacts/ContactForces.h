@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "Boundaries/Domain.h"
+#include "Contacts/ContactBatch.h"
+#include "Contacts/EllipsoidContactBatch.h"
 #include "Contacts/IdOrderedForceSums.h"
 #include "Contacts/PairList.h"
 #include "Contacts/PairSweep.h"
@@ -66,85 +68,6 @@ inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double
     return c;
 }
 
-// Contacts inside a lasting contact, gathered in batches of `size` and computed lane by lane in
-// one loop of plain numbers that the compiler vectorises (LinearSpringDashpot::lastingContact):
-// the arithmetic of a contact then costs a fraction of the scalar path's, and only gathering and
-// scattering stay scalar (Documentation/Performance.md). Only the linear law has the batched
-// form (`batched = true`).
-struct ContactBatch {
-    static constexpr int size = 64;
-    int count = 0;
-    std::uint32_t k[size], i[size], j[size];
-    // In: separation, radii, relative velocity, spins, 1/mi + 1/mj, last accelerations
-    // (difference), the pair's last normal force, its spring (updated in place), its law.
-    double dx[size], dy[size], dz[size], ri[size], rj[size], vx[size], vy[size], vz[size];
-    double wix[size], wiy[size], wiz[size], wjx[size], wjy[size], wjz[size], inverseMassSum[size];
-    double ax[size], ay[size], az[size], lastNormalForce[size], sx[size], sy[size], sz[size];
-    double kn[size], gn[size], kt[size], gt[size], mu[size];
-    // Out: force on i, torques on i and j, normal force, overlap.
-    double fx[size], fy[size], fz[size], tix[size], tiy[size], tiz[size], tjx[size], tjy[size], tjz[size];
-    double fn[size], overlap[size];
-
-    bool full() const { return count == size; }
-    LinearSpringDashpot law(int l) const { return {kn[l], gn[l], kt[l], gt[l], mu[l]}; }
-
-    void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Vec3& d, const ParticleStore& p,
-             const std::vector<Vec3>& previousForce, const ContactHistories& history, const LinearSpringDashpot& pairLaw) {
-        const int l = count++;
-        k[l] = static_cast<std::uint32_t>(pair), i[l] = a, j[l] = b;
-        dx[l] = d.x(), dy[l] = d.y(), dz[l] = d.z();
-        ri[l] = p.radius[a], rj[l] = p.radius[b];
-        const Vec3 v = p.velocity[a] - p.velocity[b];
-        vx[l] = v.x(), vy[l] = v.y(), vz[l] = v.z();
-        const Vec3 &wi = p.angularVelocity[a], &wj = p.angularVelocity[b];
-        wix[l] = wi.x(), wiy[l] = wi.y(), wiz[l] = wi.z(), wjx[l] = wj.x(), wjy[l] = wj.y(), wjz[l] = wj.z();
-        inverseMassSum[l] = p.invMass[a] + p.invMass[b];
-        const Vec3 acceleration = previousForce[a] * p.invMass[a] - previousForce[b] * p.invMass[b];
-        ax[l] = acceleration.x(), ay[l] = acceleration.y(), az[l] = acceleration.z();
-        lastNormalForce[l] = history.lastNormalForceOf(pair);
-        const Vec3& spring = history.springOf(pair);
-        sx[l] = spring.x(), sy[l] = spring.y(), sz[l] = spring.z();
-        kn[l] = pairLaw.normalStiffness, gn[l] = pairLaw.normalDamping, kt[l] = pairLaw.tangentialStiffness;
-        gt[l] = pairLaw.tangentialDamping, mu[l] = pairLaw.friction;
-        // The flush adds to j's force and torque up to a batch later; once the arrays outgrow the
-        // caches those loads miss (half of the flush at 10^5 particles), so they are asked for now.
-        __builtin_prefetch(p.force.data() + b, 1);
-        __builtin_prefetch(p.torque.data() + b, 1);
-    }
-
-    // The kinematics of contactKinematics (SPEC.md 1: arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
-    // and the law's lasting-contact step, for every lane.
-    [[gnu::noinline]] void compute(double dt) {
-        for (int l = 0; l < count; ++l) {
-            const double distance = std::sqrt(dx[l] * dx[l] + dy[l] * dy[l] + dz[l] * dz[l]), inverse = 1 / distance;
-            LinearSpringDashpot::Lane c;
-            c.nx = dx[l] * inverse, c.ny = dy[l] * inverse, c.nz = dz[l] * inverse;
-            c.overlap = ri[l] + rj[l] - distance;
-            const double armI = ri[l] - 0.5 * c.overlap, armJ = rj[l] - 0.5 * c.overlap;
-            c.vx = vx[l], c.vy = vy[l], c.vz = vz[l];
-            c.normalVelocity = c.vx * c.nx + c.vy * c.ny + c.vz * c.nz;
-            const double wx = armI * wix[l] + armJ * wjx[l], wy = armI * wiy[l] + armJ * wjy[l],
-                         wz = armI * wiz[l] + armJ * wjz[l];
-            c.tx = c.vx - c.normalVelocity * c.nx - (wy * c.nz - wz * c.ny);
-            c.ty = c.vy - c.normalVelocity * c.ny - (wz * c.nx - wx * c.nz);
-            c.tz = c.vz - c.normalVelocity * c.nz - (wx * c.ny - wy * c.nx);
-            c.inverseReducedMass = inverseMassSum[l];
-            c.otherAcceleration = ax[l] * c.nx + ay[l] * c.ny + az[l] * c.nz - lastNormalForce[l] * inverseMassSum[l];
-            c.inverseDistance = inverse;
-            c.sx = sx[l], c.sy = sy[l], c.sz = sz[l];
-            law(l).lastingContact(c, dt);
-            sx[l] = c.sx, sy[l] = c.sy, sz[l] = c.sz;
-            fn[l] = c.normalForce;
-            overlap[l] = c.overlap;
-            fx[l] = c.normalForce * c.nx + c.fx, fy[l] = c.normalForce * c.ny + c.fy, fz[l] = c.normalForce * c.nz + c.fz;
-            const double turnX = c.ny * c.fz - c.nz * c.fy, turnY = c.nz * c.fx - c.nx * c.fz,
-                         turnZ = c.nx * c.fy - c.ny * c.fx;  // n x ft
-            tix[l] = -armI * turnX, tiy[l] = -armI * turnY, tiz[l] = -armI * turnZ;
-            tjx[l] = -armJ * turnX, tjy[l] = -armJ * turnY, tjz[l] = -armJ * turnZ;
-        }
-    }
-};
-
 // The force loop over the listed pairs and wall candidates of one step, for one contact law.
 // Its parts are member functions so that the compiler inlines the common case (a pair inside a
 // contact) whole and keeps the rare ones (the ends of a contact, output records) out of the way.
@@ -179,6 +102,7 @@ public:
         sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
         sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
         if constexpr (Law::batched) flush(list);
+        if (shapes_) flushEllipsoids(list);
     }
 
     // The listed pairs [from, to), a chunk at a time: the sweep, then the contacts it picked.
@@ -395,7 +319,57 @@ private:
         }
         const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
         ContactHistory history = list.history.get(k);
-        const ShapedContactGeometry g = shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius);
+        // A lasting contact of two ellipsoids: into the batch (EllipsoidContactBatch.h; laws
+        // without the effective radius, which would need the curvatures).
+        if constexpr (!Law::usesEffectiveRadius) {
+            if (history.warmMultiplier > 0 && isEllipsoid(i) && isEllipsoid(j) && !(isSphere(i) && isSphere(j))) {
+                const std::vector<PlacedSuperquadric>& frames = list.shapedFrameScratch;
+                ellipsoids_.add(k, i, j, frames[i], xj, frames[j],
+                                {p_.position[i] + history.warmPoint, history.warmMultiplier});
+                if (ellipsoids_.full()) flushEllipsoids(list);
+                return;
+            }
+        }
+        shapedPairWith(list, k, i, j, xj, history,
+                       shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius));
+    }
+
+    // (Shaped particles only; two spheres have the closed form of findSuperquadricContact.)
+    bool isEllipsoid(std::uint32_t i) const {
+        return p_.shape[i] >= 0 && (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isEllipsoid();
+    }
+    bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
+
+    // The batched lasting ellipsoid contacts: a lane the batch could not finish goes to the
+    // scalar path, from the same warm start.
+    void flushEllipsoids(PairList& list) {
+        EllipsoidContactBatch& b = ellipsoids_;
+        if (b.count == 0) return;
+        b.compute(SuperquadricContactSettings{}.tolerance);
+        for (int l = 0; l < b.count; ++l) {
+            const std::uint32_t i = b.i[l], j = b.j[l];
+            const Vec3 xj(b.cjx[l], b.cjy[l], b.cjz[l]);
+            const ContactHistory history = list.history.get(b.k[l]);
+            if (b.done[l] == 0) {
+                shapedPairWith(list, b.k[l], i, j, xj, history,
+                               shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false));
+                continue;
+            }
+            ShapedContactGeometry g;
+            g.converged = g.touching = true;
+            g.normal = Vec3(b.nx[l], b.ny[l], b.nz[l]);
+            g.overlap = b.overlap[l];
+            g.contactPoint = Vec3(b.mx[l], b.my[l], b.mz[l]);
+            g.solution = {Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]};
+            shapedPairWith(list, b.k[l], i, j, xj, history, g);
+        }
+        b.count = 0;
+    }
+
+    // Pair k with its exact geometry g: the warm start kept, the contact's force (or none), the
+    // gap bound of a pair apart.
+    void shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& xj,
+                        ContactHistory history, const ShapedContactGeometry& g) {
         if (!g.converged) detectionFailed(i, j);
         history.warmPoint = g.solution.point;
         history.warmMultiplier = g.solution.multiplier;
@@ -609,6 +583,7 @@ private:
     PairContribution* perPair_;  // non-null: pair forces kept for sums in id order (IdOrderedForceSums.h)
     const bool prefetchPartners_;  // a large scene: the contact pass asks for its partners' data ahead
     std::size_t currentPair_ = 0;
+    EllipsoidContactBatch ellipsoids_;  // (scenes with shapes only)
 };
 
 template <class Law>

@@ -1,0 +1,146 @@
+// Lasting contacts of two ellipsoids, gathered in batches and taken one Newton iteration forward
+// lane by lane, in loops of plain numbers that the compiler vectorises: the warm-started exact
+// stage of SPEC.md 4 for the common case, as ContactBatch (ContactBatch.h) does the sphere
+// contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
+// residual, normal, the two distances); one at a time, the core cannot overlap it with the next
+// contact's (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
+//
+// The arithmetic is that of the scalar solve (SuperquadricContact.cc, TwoEllipsoids): the first
+// iteration of solveFor from the warm start, its full step, and its convergence test; then the
+// normal and the overlap from the values and gradients at the solution. A lane that the scalar
+// solve would take further (the full step does not lower the residual, the test fails after one
+// iteration, the bodies are found apart, or anything is not finite) is marked, and the force
+// loop gives that pair to the scalar path, which starts again from the same warm start: every
+// lane's answer is the scalar solve's, to rounding.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "Contacts/SuperquadricContact.h"
+#include "Math/Vector.h"
+
+namespace talus {
+
+struct EllipsoidContactBatch {
+    static constexpr int size = 16;
+    int count = 0;
+    std::uint32_t k[size], i[size], j[size];
+    // In: centres (j's periodic image), quadrics Q (symmetric: xx, yy, zz, xy, xz, yz), the warm
+    // start (point, multiplier) and the length that scales the residual (the smaller bounding radius).
+    double cix[size], ciy[size], ciz[size], cjx[size], cjy[size], cjz[size];
+    double qi0[size], qi1[size], qi2[size], qi3[size], qi4[size], qi5[size];
+    double qj0[size], qj1[size], qj2[size], qj3[size], qj4[size], qj5[size];
+    double x0[size], y0[size], z0[size], mu0[size], scale[size];
+    // Out: done (1: the answer below is the scalar solve's; 0: give the pair to the scalar path),
+    // the contact point (Newton's) and multiplier, the unit normal from j to i, the overlap and the
+    // middle of the overlap.
+    double done[size], px[size], py[size], pz[size], mu[size];
+    double nx[size], ny[size], nz[size], overlap[size], mx[size], my[size], mz[size];
+
+    bool full() const { return count == size; }
+
+    void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const PlacedSuperquadric& bodyI, const Vec3& centreJ,
+             const PlacedSuperquadric& bodyJ, const SuperquadricContactPoint& start) {
+        const int l = count++;
+        k[l] = static_cast<std::uint32_t>(pair), i[l] = a, j[l] = b;
+        cix[l] = bodyI.centre.x(), ciy[l] = bodyI.centre.y(), ciz[l] = bodyI.centre.z();
+        cjx[l] = centreJ.x(), cjy[l] = centreJ.y(), cjz[l] = centreJ.z();
+        const Mat3 &A = bodyI.quadric, &B = bodyJ.quadric;
+        qi0[l] = A(0, 0), qi1[l] = A(1, 1), qi2[l] = A(2, 2), qi3[l] = A(0, 1), qi4[l] = A(0, 2), qi5[l] = A(1, 2);
+        qj0[l] = B(0, 0), qj1[l] = B(1, 1), qj2[l] = B(2, 2), qj3[l] = B(0, 1), qj4[l] = B(0, 2), qj5[l] = B(1, 2);
+        x0[l] = start.point.x(), y0[l] = start.point.y(), z0[l] = start.point.z(), mu0[l] = start.multiplier;
+        scale[l] = std::min(bodyI.shape->boundingRadius(), bodyJ.shape->boundingRadius());
+    }
+
+    // F = d.Q d - 1 and grad F = 2 Q d at x (TwoEllipsoids::at), Q symmetric (xx yy zz xy xz yz).
+    struct Slope {
+        double value, gx, gy, gz;
+    };
+    struct Symmetric {
+        double xx, yy, zz, xy, xz, yz;
+    };
+    [[gnu::always_inline]] static Slope at(const Symmetric& q, double dx, double dy, double dz) {
+        const double qx = q.xx * dx + q.xy * dy + q.xz * dz, qy = q.xy * dx + q.yy * dy + q.yz * dz,
+                     qz = q.xz * dx + q.yz * dy + q.zz * dz;
+        return {dx * qx + dy * qy + dz * qz - 1, 2 * qx, 2 * qy, 2 * qz};
+    }
+    // The distance from the point where F and grad F are f to the surface along g (|g| = length):
+    // the root of F + t grad F.g + t^2 g.Q g = 0 (distanceToSurface, ellipsoids), times |g|.
+    [[gnu::always_inline]] static double distance(const Symmetric& q, const Slope& f, double gx, double gy, double gz,
+                                                  double length) {
+        const double qx = q.xx * gx + q.xy * gy + q.xz * gz, qy = q.xy * gx + q.yy * gy + q.yz * gz,
+                     qz = q.xz * gx + q.yz * gy + q.zz * gz;
+        const double qa = gx * qx + gy * qy + gz * qz, qb = 0.5 * (f.gx * gx + f.gy * gy + f.gz * gz), qc = f.value;
+        const double root = std::sqrt(qb * qb - qa * qc);
+        const double outer = -qc / (qb + root), inner = (root - qb) / qa;
+        return (qb > 0 ? outer : inner) * length;
+    }
+
+    // One Newton iteration from the warm start and the geometry, for every lane.
+    [[gnu::noinline]] void compute(double tolerance) {
+        const double tolerance2 = tolerance * tolerance;
+        const int n = count;
+        for (int l = 0; l < n; ++l) {
+            const Symmetric Qi{qi0[l], qi1[l], qi2[l], qi3[l], qi4[l], qi5[l]};
+            const Symmetric Qj{qj0[l], qj1[l], qj2[l], qj3[l], qj4[l], qj5[l]};
+            const double s = scale[l], m = mu0[l];
+            const Slope i0 = at(Qi, x0[l] - cix[l], y0[l] - ciy[l], z0[l] - ciz[l]);
+            const Slope j0 = at(Qj, x0[l] - cjx[l], y0[l] - cjy[l], z0[l] - cjz[l]);
+            // Phi = [scale (grad Fi + mu^2 grad Fj); Fi - Fj] (SuperquadricContact.cc, residual).
+            const double r0x = s * (i0.gx + m * m * j0.gx), r0y = s * (i0.gy + m * m * j0.gy), r0z = s * (i0.gz + m * m * j0.gz);
+            const double r0w = i0.value - j0.value;
+            const double residual2 = r0x * r0x + r0y * r0y + r0z * r0z + r0w * r0w;
+            // The Newton step by the Schur complement of A = scale (2 Qi + mu^2 2 Qj) (newtonStep).
+            const double axx = s * (2 * Qi.xx + m * m * (2 * Qj.xx)), ayy = s * (2 * Qi.yy + m * m * (2 * Qj.yy)),
+                         azz = s * (2 * Qi.zz + m * m * (2 * Qj.zz)), axy = s * (2 * Qi.xy + m * m * (2 * Qj.xy)),
+                         axz = s * (2 * Qi.xz + m * m * (2 * Qj.xz)), ayz = s * (2 * Qi.yz + m * m * (2 * Qj.yz));
+            // adj(A) of the symmetric A, and det A.
+            const double cxx = ayy * azz - ayz * ayz, cyy = axx * azz - axz * axz, czz = axx * ayy - axy * axy;
+            const double cxy = axz * ayz - axy * azz, cxz = axy * ayz - axz * ayy, cyz = axy * axz - axx * ayz;
+            const double determinant = axx * cxx + axy * cxy + axz * cxz;
+            const double size2 = axx * axx + ayy * ayy + azz * azz + 2 * (axy * axy + axz * axz + ayz * ayz);
+            const bool regular = determinant * determinant > 1e-24 * size2 * size2 * size2;
+            const double inverseDeterminant = 1 / determinant;
+            const double bx = s * 2 * m * j0.gx, by = s * 2 * m * j0.gy, bz = s * 2 * m * j0.gz;
+            const double ccx = i0.gx - j0.gx, ccy = i0.gy - j0.gy, ccz = i0.gz - j0.gz;
+            const double ibx = (cxx * bx + cxy * by + cxz * bz) * inverseDeterminant,
+                         iby = (cxy * bx + cyy * by + cyz * bz) * inverseDeterminant,
+                         ibz = (cxz * bx + cyz * by + czz * bz) * inverseDeterminant;
+            const double irx = (cxx * r0x + cxy * r0y + cxz * r0z) * inverseDeterminant,
+                         iry = (cxy * r0x + cyy * r0y + cyz * r0z) * inverseDeterminant,
+                         irz = (cxz * r0x + cyz * r0y + czz * r0z) * inverseDeterminant;
+            const double dmu = (r0w - (ccx * irx + ccy * iry + ccz * irz)) / (ccx * ibx + ccy * iby + ccz * ibz);
+            const double sx = -(irx + dmu * ibx), sy = -(iry + dmu * iby), sz = -(irz + dmu * ibz);
+            // The full step, and the residual there.
+            const double x = x0[l] + sx, y = y0[l] + sy, z = z0[l] + sz, m1 = m + dmu;
+            const Slope i1 = at(Qi, x - cix[l], y - ciy[l], z - ciz[l]);
+            const Slope j1 = at(Qj, x - cjx[l], y - cjy[l], z - cjz[l]);
+            const double r1x = s * (i1.gx + m1 * m1 * j1.gx), r1y = s * (i1.gy + m1 * m1 * j1.gy),
+                         r1z = s * (i1.gz + m1 * m1 * j1.gz), r1w = i1.value - j1.value;
+            const double gradient2 = r1x * r1x + r1y * r1y + r1z * r1z, next2 = gradient2 + r1w * r1w;
+            // The convergence test of solveFor after its first iteration.
+            const double gradientLength = std::sqrt(i1.gx * i1.gx + i1.gy * i1.gy + i1.gz * i1.gz);
+            const double gradientScale = 1 + s * gradientLength, limit2 = tolerance2 * gradientScale * gradientScale;
+            const bool residualSmall = (std::abs(r1w) <= tolerance) & (gradient2 <= limit2);
+            const bool residualTiny = (std::abs(r1w) <= 0.01 * tolerance) & (gradient2 <= 1e-4 * limit2);
+            const bool converged = (residualSmall & (sx * sx + sy * sy + sz * sz <= tolerance2 * s * s)) | residualTiny;
+            // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient of Fi.
+            const double inverseLength = 1 / gradientLength;
+            const double ux = i1.gx * inverseLength, uy = i1.gy * inverseLength, uz = i1.gz * inverseLength;
+            const double di = distance(Qi, i1, i1.gx, i1.gy, i1.gz, gradientLength),
+                         dj = distance(Qj, j1, -i1.gx, -i1.gy, -i1.gz, gradientLength);
+            const double half = 0.5 * (di - dj);
+            px[l] = x, py[l] = y, pz[l] = z, mu[l] = std::abs(m1);
+            nx[l] = -ux, ny[l] = -uy, nz[l] = -uz;
+            overlap[l] = di + dj;
+            mx[l] = x + half * ux, my[l] = y + half * uy, mz[l] = z + half * uz;
+            const double sum = di + dj + half * (ux + uy + uz) + m1 + dmu;
+            const bool finite = sum - sum == 0;  // (false for an infinity or NaN; isfinite would not vectorise)
+            done[l] = (regular & (next2 < residual2) & converged & (i1.value < 0) & finite) ? 1.0 : 0.0;
+        }
+    }
+};
+
+}  // namespace talus
