@@ -72,15 +72,11 @@ struct EllipsoidContactBatch {
                                                   double length) {
         const double qx = q.xx * gx + q.xy * gy + q.xz * gz, qy = q.xy * gx + q.yy * gy + q.yz * gz,
                      qz = q.xz * gx + q.yz * gy + q.zz * gz;
-        const double qa = gx * qx + gy * qy + gz * qz, qb = 0.5 * (f.gx * gx + f.gy * gy + f.gz * gz), qc = f.value;
-        const double root = std::sqrt(qb * qb - qa * qc);
-        const double outer = -qc / (qb + root), inner = (root - qb) / qa;
-        return (qb > 0 ? outer : inner) * length;
+        return rootToSurface(gx * qx + gy * qy + gz * qz, 0.5 * (f.gx * gx + f.gy * gy + f.gz * gz), f.value) * length;
     }
 
     // One Newton iteration from the warm start and the geometry, for every lane.
     [[gnu::noinline]] void compute(double tolerance) {
-        const double tolerance2 = tolerance * tolerance;
         const int n = count;
         for (int l = 0; l < n; ++l) {
             const Symmetric Qi{qi0[l], qi1[l], qi2[l], qi3[l], qi4[l], qi5[l]};
@@ -122,10 +118,8 @@ struct EllipsoidContactBatch {
             const double gradient2 = r1x * r1x + r1y * r1y + r1z * r1z, next2 = gradient2 + r1w * r1w;
             // The convergence test of solveFor after its first iteration.
             const double gradientLength = std::sqrt(i1.gx * i1.gx + i1.gy * i1.gy + i1.gz * i1.gz);
-            const double gradientScale = 1 + s * gradientLength, limit2 = tolerance2 * gradientScale * gradientScale;
-            const bool residualSmall = (std::abs(r1w) <= tolerance) & (gradient2 <= limit2);
-            const bool residualTiny = (std::abs(r1w) <= 0.01 * tolerance) & (gradient2 <= 1e-4 * limit2);
-            const bool converged = (residualSmall & (sx * sx + sy * sy + sz * sz <= tolerance2 * s * s)) | residualTiny;
+            const bool converged =
+                newtonConverged(r1w, gradient2, gradientLength, sx * sx + sy * sy + sz * sz, s, tolerance);
             // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient of Fi.
             const double inverseLength = 1 / gradientLength;
             const double ux = i1.gx * inverseLength, uy = i1.gy * inverseLength, uz = i1.gz * inverseLength;

@@ -134,14 +134,9 @@ NewtonResult solveFor(const PlacedSuperquadric& i, const PlacedSuperquadric& j, 
         mu += t * step[3];
         r = next;
         residual2 = next2;
-        // Converged when the step was small and the residual is, or when the residual alone is a
-        // hundred times below the tolerance (Newton's next step would be smaller still: a warm
-        // start then ends after one iteration).
-        const double gradientScale = 1 + scale * r.i.gradient.norm();
-        const double gradient2 = r.phi.template head<3>().squaredNorm(), limit2 = tolerance2 * gradientScale * gradientScale;
-        const bool residualSmall = std::abs(r.phi[3]) <= settings.tolerance && gradient2 <= limit2;
-        const bool residualTiny = std::abs(r.phi[3]) <= 0.01 * settings.tolerance && gradient2 <= 1e-4 * limit2;
-        if ((residualSmall && t * t * step.head<3>().squaredNorm() <= tolerance2 * scale * scale) || residualTiny) {
+        // (SuperquadricContact.h, newtonConverged)
+        if (newtonConverged(r.phi[3], r.phi.template head<3>().squaredNorm(), r.i.gradient.norm(),
+                            t * t * step.head<3>().squaredNorm(), scale, settings.tolerance)) {
             result.converged = true;
             break;
         }
@@ -169,9 +164,7 @@ double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x,
 [[gnu::always_inline]] inline double distanceToSurface(const PlacedSuperquadric& body, const Vec3& x,
                                                        const ShapeSlope& atX, const Vec3& g, double gLength) {
     if (!body.shape->isEllipsoid()) return bracketedDistanceToSurface(body, x, g / gLength);
-    const double a = g.dot(body.quadric * g), b = 0.5 * atX.gradient.dot(g), c = atX.value;
-    const double root = std::sqrt(b * b - a * c);
-    return (b > 0 ? -c / (b + root) : (root - b) / a) * gLength;
+    return rootToSurface(g.dot(body.quadric * g), 0.5 * atX.gradient.dot(g), atX.value) * gLength;
 }
 double bracketedDistanceToSurface(const PlacedSuperquadric& body, const Vec3& x, const Vec3& u) {
     double inside = 0, outside = 2 * body.shape->boundingRadius() + (x - body.centre).norm();

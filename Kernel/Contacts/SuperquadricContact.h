@@ -12,6 +12,8 @@
 // "plan B", seed:8125-8215).
 #pragma once
 
+#include <cmath>
+
 #include "Math/Vector.h"
 #include "Shapes/Superquadric.h"
 
@@ -49,6 +51,31 @@ struct SuperquadricContactPoint {
     Vec3 point = Vec3::Zero();
     double multiplier = 1;
 };
+
+// The Newton solve's convergence test after a step (SuperquadricContact.cc): the step was small
+// and the residual is, or the residual alone is a hundred times below the tolerance (Newton's
+// next step would be smaller still: a warm start then ends after one iteration). `mismatch` is
+// Fi - Fj, `gradientResidual2` the squared first three components of Phi, `step2` the squared
+// length of the step taken. Branch-free, so that the ellipsoid lanes (EllipsoidContactBatch.h)
+// share it with the scalar solve.
+[[gnu::always_inline]] inline bool newtonConverged(double mismatch, double gradientResidual2, double gradientLengthI,
+                                                   double step2, double scale, double tolerance) {
+    const double tolerance2 = tolerance * tolerance, gradientScale = 1 + scale * gradientLengthI;
+    const double limit2 = tolerance2 * gradientScale * gradientScale;
+    const bool residualSmall = (std::abs(mismatch) <= tolerance) & (gradientResidual2 <= limit2);
+    const bool residualTiny = (std::abs(mismatch) <= 0.01 * tolerance) & (gradientResidual2 <= 1e-4 * limit2);
+    return (residualSmall & (step2 <= tolerance2 * scale * scale)) | residualTiny;
+}
+
+// The positive root t of c + 2 b t + a t^2 = 0 (a > 0, c < 0: from inside an ellipsoid to its
+// surface, distanceToSurface), in the form that does not cancel. Both quotients are formed and
+// one is chosen, so that the ellipsoid lanes can share it (a division inside a select does not
+// vectorise).
+[[gnu::always_inline]] inline double rootToSurface(double a, double b, double c) {
+    const double root = std::sqrt(b * b - a * c);
+    const double outer = -c / (b + root), inner = (root - b) / a;
+    return b > 0 ? outer : inner;
+}
 
 struct SuperquadricContactSettings {
     double tolerance = 1e-10;   // relative: |dX| / (bounding radius) and |Fi - Fj|
