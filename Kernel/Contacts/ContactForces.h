@@ -12,6 +12,7 @@
 
 #include "Boundaries/Domain.h"
 #include "Contacts/ContactBatch.h"
+#include "Contacts/ContactReport.h"
 #include "Contacts/EllipsoidContactBatch.h"
 #include "Contacts/IdOrderedForceSums.h"
 #include "Contacts/PairList.h"
@@ -24,29 +25,6 @@
 #include "Walls/PrescribedMotion.h"
 
 namespace talus {
-
-// One contact as written to .fstat (Documentation/FileFormats/fstat.md); recorded only on
-// output steps.
-struct ContactRecord {
-    std::uint32_t i;
-    std::int64_t j;          // partner slot, or -(wall + 1)
-    Vec3 contactPoint;       // middle of the overlap, next to particle i
-    double overlap;
-    double springLength;     // |xi|
-    double normalForce;      // signed, along normal
-    Vec3 normal;             // from j (or the wall) to i
-    Vec3 tangentialForce;    // on i
-    double elasticEnergy;
-};
-
-// What the force loop learned about the contacts of this step.
-struct ContactSummary {
-    std::size_t contacts = 0;
-    double maxOverlapFraction = 0;  // largest dn / min(ri, rj) (walls: dn / ri)
-    std::uint64_t worstA = 0, worstB = 0;  // global ids (worstB = -1 for a wall)
-    bool worstIsWall = false;
-    std::size_t oneWayReactions = 0;  // one-way pairs past OneWayPeriodicBox::reactionOverlap
-};
 
 // Kinematics of particle i against a partner at distance rij along the unit normal n (SPEC.md 1);
 // overlap = ri + rj - rij may be negative for a pair that just separated. The branch vectors are
@@ -341,11 +319,25 @@ private:
     bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
 
     // The batched lasting ellipsoid contacts: a lane the batch could not finish goes to the
-    // scalar path, from the same warm start.
+    // scalar path, from the same warm start. With the linear law the finished lanes' contact
+    // step is batched too, except on output steps, where the scalar path records each contact.
     void flushEllipsoids(PairList& list) {
         EllipsoidContactBatch& b = ellipsoids_;
         if (b.count == 0) return;
         b.compute(SuperquadricContactSettings{}.tolerance);
+        bool forcesInLanes = false;
+        if constexpr (Law::batched) {
+            forcesInLanes = !records_;
+            if (forcesInLanes) {
+                for (int l = 0; l < b.count; ++l) {
+                    const std::uint32_t i = b.i[l], j = b.j[l];
+                    b.setMotion(l, p_.velocity[i], p_.angularVelocity[i], p_.velocity[j], p_.angularVelocity[j],
+                                list.history.springOf(b.k[l]), list.history.state(b.k[l]) == ContactHistory::touching,
+                                laws_(p_.species[i], p_.species[j]));
+                }
+                b.forceLanes(dt_);
+            }
+        }
         for (int l = 0; l < b.count; ++l) {
             const std::uint32_t i = b.i[l], j = b.j[l];
             const Vec3 xj(b.cjx[l], b.cjy[l], b.cjz[l]);
@@ -353,17 +345,38 @@ private:
             if (b.done[l] == 0) {
                 shapedPairWith(list, b.k[l], i, j, xj, history,
                                shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false));
-                continue;
+            } else if (forcesInLanes) {
+                laneContact(list, l, history);
+            } else {
+                ShapedContactGeometry g;
+                g.converged = g.touching = true;
+                g.normal = Vec3(b.nx[l], b.ny[l], b.nz[l]);
+                g.overlap = b.overlap[l];
+                g.contactPoint = Vec3(b.mx[l], b.my[l], b.mz[l]);
+                g.solution = {Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]};
+                shapedPairWith(list, b.k[l], i, j, xj, history, g);
             }
-            ShapedContactGeometry g;
-            g.converged = g.touching = true;
-            g.normal = Vec3(b.nx[l], b.ny[l], b.nz[l]);
-            g.overlap = b.overlap[l];
-            g.contactPoint = Vec3(b.mx[l], b.my[l], b.mz[l]);
-            g.solution = {Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]};
-            shapedPairWith(list, b.k[l], i, j, xj, history, g);
         }
         b.count = 0;
+    }
+
+    // Lane l's contact, computed in the lanes, applied (as shapedPairWith and shapedContact would).
+    void laneContact(PairList& list, int l, ContactHistory history) {
+        const EllipsoidContactBatch& b = ellipsoids_;
+        const std::uint32_t i = b.i[l], j = b.j[l];
+        history.warmPoint = Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i];
+        history.warmMultiplier = b.mu[l];
+        history.spring = Vec3(b.sx[l], b.sy[l], b.sz[l]);
+        history.state = ContactHistory::touching;
+        history.lastNormalForce = b.fn[l];
+        list.history.set(b.k[l], history);
+        const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
+        p_.force[i] += force;
+        p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
+        p_.force[j] -= force;
+        p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
+        ++summary_.contacts, ++summary_.contactsInLanes;
+        noteOverlap(i, j, b.overlap[l], std::min(sizeOf(i), sizeOf(j)));
     }
 
     // Pair k with its exact geometry g: the warm start kept, the contact's force (or none), the
@@ -416,19 +429,10 @@ private:
         c.otherAcceleration = 0;  // (only the treatment of contact ends uses it)
         c.effectiveRadius = g.effectiveRadius;
         c.inverseDistance = 0;  // the spring is projected (below), not rotated as for spheres
-        if (history.isTouching()) {  // (one square root: the length ratio from the squared lengths)
-            // (On plain numbers: as Eigen expressions GCC left this out of line here.)
-            double& sx = history.spring.x();
-            double& sy = history.spring.y();
-            double& sz = history.spring.z();
-            const double length2 = sx * sx + sy * sy + sz * sz, along = sx * n.x() + sy * n.y() + sz * n.z();
-            sx -= along * n.x(), sy -= along * n.y(), sz -= along * n.z();
-            const double projected2 = sx * sx + sy * sy + sz * sz;
-            const double stretch = projected2 > 0 ? std::sqrt(length2 / projected2) : 1.0;
-            sx *= stretch, sy *= stretch, sz *= stretch;
-        } else {
+        if (history.isTouching())
+            turnSpringIntoTangentPlane(history.spring.x(), history.spring.y(), history.spring.z(), n.x(), n.y(), n.z());
+        else
             history.spring.setZero();
-        }
         // The law's plain step: the ends of the contact are not treated (see above).
         ContactForce f;
         if constexpr (requires { law.plainForce(c, history, dt_); })
@@ -445,15 +449,20 @@ private:
             p_.torque[j] -= bj.cross(force);
         }
         ++summary_.contacts;
-        if (g.overlap > summary_.maxOverlapFraction * size) [[unlikely]] {
-            summary_.maxOverlapFraction = g.overlap / size;
-            summary_.worstA = p_.id[i];
-            summary_.worstB = j >= 0 ? p_.id[j] : static_cast<std::uint64_t>(-j - 1);
-            summary_.worstIsWall = j < 0;
-        }
+        noteOverlap(i, j, g.overlap, size);
         if (records_) [[unlikely]]
             records_->push_back({i, j, g.contactPoint, g.overlap, history.spring.norm(), f.normalForce, n,
                                  f.tangentialForce, law.elasticEnergy(c, history.spring)});
+    }
+
+    // The largest overlap of the step, as a fraction of the smaller size (j < 0: wall -j - 1).
+    [[gnu::always_inline]] void noteOverlap(std::uint32_t i, std::int64_t j, double overlap, double size) {
+        if (overlap > summary_.maxOverlapFraction * size) [[unlikely]] {
+            summary_.maxOverlapFraction = overlap / size;
+            summary_.worstA = p_.id[i];
+            summary_.worstB = j >= 0 ? p_.id[static_cast<std::size_t>(j)] : static_cast<std::uint64_t>(-j - 1);
+            summary_.worstIsWall = j < 0;
+        }
     }
 
     // The smallest semi-axis (spheres: the radius): what overlaps are measured against.
@@ -498,12 +507,7 @@ private:
         history.lastNormalForce = f.normalForce;
         apply(i, j, f, c.normal, arms);
         ++summary_.contacts;
-        if (c.overlap > summary_.maxOverlapFraction * smallerRadius) [[unlikely]] {
-            summary_.maxOverlapFraction = c.overlap / smallerRadius;
-            summary_.worstA = p_.id[i];
-            summary_.worstB = j >= 0 ? p_.id[j] : static_cast<std::uint64_t>(-j - 1);  // wall index
-            summary_.worstIsWall = j < 0;
-        }
+        noteOverlap(i, j, c.overlap, smallerRadius);
         if (records_ && !oneWay_) [[unlikely]]
             record(i, j, c, arms, history, law, f);
     }
@@ -551,13 +555,7 @@ private:
             }
             const Vec3 spring(b.sx[l], b.sy[l], b.sz[l]);
             list.history.set(b.k[l], {spring, b.fn[l], ContactHistory::touching});
-            const double smallerRadius = std::min(b.ri[l], b.rj[l]);
-            if (b.overlap[l] > summary_.maxOverlapFraction * smallerRadius) [[unlikely]] {
-                summary_.maxOverlapFraction = b.overlap[l] / smallerRadius;
-                summary_.worstA = p_.id[i];
-                summary_.worstB = p_.id[j];
-                summary_.worstIsWall = false;
-            }
+            noteOverlap(i, j, b.overlap[l], std::min(b.ri[l], b.rj[l]));
             if (records_) [[unlikely]] {
                 const Vec3 n = Vec3(b.dx[l], b.dy[l], b.dz[l]).normalized();
                 ContactKinematics c{};

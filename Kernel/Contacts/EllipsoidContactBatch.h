@@ -17,9 +17,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "Contacts/SuperquadricContact.h"
 #include "Math/Vector.h"
+#include "Species/ContactKinematics.h"
+#include "Species/LinearSpringDashpot.h"
 
 namespace talus {
 
@@ -39,7 +42,54 @@ struct EllipsoidContactBatch {
     double done[size], px[size], py[size], pz[size], mu[size];
     double nx[size], ny[size], nz[size], overlap[size], mx[size], my[size], mz[size];
 
+    // The contact's step, for the linear law (forceLanes): in, the motion of both bodies, the
+    // spring and whether the pair touched at the last step, the law; out, the force on i, the
+    // torques on i and j, the normal force and the advanced spring.
+    double vix[size], viy[size], viz[size], wix[size], wiy[size], wiz[size];
+    double vjx[size], vjy[size], vjz[size], wjx[size], wjy[size], wjz[size];
+    double sx[size], sy[size], sz[size], touched[size], kn[size], gn[size], kt[size], gt[size], friction[size];
+    double fx[size], fy[size], fz[size], tix[size], tiy[size], tiz[size], tjx[size], tjy[size], tjz[size], fn[size];
+
     bool full() const { return count == size; }
+    LinearSpringDashpot law(int l) const { return {kn[l], gn[l], kt[l], gt[l], friction[l]}; }
+
+    void setMotion(int l, const Vec3& vi, const Vec3& wi, const Vec3& vj, const Vec3& wj, const Vec3& spring,
+                   bool touchedBefore, const LinearSpringDashpot& pairLaw) {
+        vix[l] = vi.x(), viy[l] = vi.y(), viz[l] = vi.z(), wix[l] = wi.x(), wiy[l] = wi.y(), wiz[l] = wi.z();
+        vjx[l] = vj.x(), vjy[l] = vj.y(), vjz[l] = vj.z(), wjx[l] = wj.x(), wjy[l] = wj.y(), wjz[l] = wj.z();
+        sx[l] = spring.x(), sy[l] = spring.y(), sz[l] = spring.z(), touched[l] = touchedBefore ? 1.0 : 0.0;
+        kn[l] = pairLaw.normalStiffness, gn[l] = pairLaw.normalDamping, kt[l] = pairLaw.tangentialStiffness;
+        gt[l] = pairLaw.tangentialDamping, friction[l] = pairLaw.friction;
+    }
+
+    // The superquadric path's contact step (ContactForces.h, shapedContact) for every lane, after
+    // compute: the velocity of the contact point (branch vectors b from the centres to it), the
+    // spring of a lasting contact turned into the new tangent plane (a new contact's is zero),
+    // the law's plain step, the torques b x F.
+    [[gnu::noinline]] void forceLanes(double dt) {
+        for (int l = 0; l < count; ++l) {
+            LinearSpringDashpot::Lane c{};
+            c.nx = nx[l], c.ny = ny[l], c.nz = nz[l], c.overlap = overlap[l];
+            const double bix = mx[l] - cix[l], biy = my[l] - ciy[l], biz = mz[l] - ciz[l];
+            const double bjx = mx[l] - cjx[l], bjy = my[l] - cjy[l], bjz = mz[l] - cjz[l];
+            c.vx = vix[l] + (wiy[l] * biz - wiz[l] * biy) - vjx[l] - (wjy[l] * bjz - wjz[l] * bjy);
+            c.vy = viy[l] + (wiz[l] * bix - wix[l] * biz) - vjy[l] - (wjz[l] * bjx - wjx[l] * bjz);
+            c.vz = viz[l] + (wix[l] * biy - wiy[l] * bix) - vjz[l] - (wjx[l] * bjy - wjy[l] * bjx);
+            c.normalVelocity = c.vx * c.nx + c.vy * c.ny + c.vz * c.nz;
+            c.tx = c.vx - c.normalVelocity * c.nx, c.ty = c.vy - c.normalVelocity * c.ny;
+            c.tz = c.vz - c.normalVelocity * c.nz;
+            const bool lasting = touched[l] != 0;
+            c.sx = lasting ? sx[l] : 0.0, c.sy = lasting ? sy[l] : 0.0, c.sz = lasting ? sz[l] : 0.0;
+            turnSpringIntoTangentPlane(c.sx, c.sy, c.sz, c.nx, c.ny, c.nz);
+            law(l).plainContact(c, dt);
+            const double Fx = c.normalForce * c.nx + c.fx, Fy = c.normalForce * c.ny + c.fy,
+                         Fz = c.normalForce * c.nz + c.fz;
+            fx[l] = Fx, fy[l] = Fy, fz[l] = Fz, fn[l] = c.normalForce;
+            sx[l] = c.sx, sy[l] = c.sy, sz[l] = c.sz;
+            tix[l] = biy * Fz - biz * Fy, tiy[l] = biz * Fx - bix * Fz, tiz[l] = bix * Fy - biy * Fx;
+            tjx[l] = -(bjy * Fz - bjz * Fy), tjy[l] = -(bjz * Fx - bjx * Fz), tjz[l] = -(bjx * Fy - bjy * Fx);
+        }
+    }
 
     void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const PlacedSuperquadric& bodyI, const Vec3& centreJ,
              const PlacedSuperquadric& bodyJ, const SuperquadricContactPoint& start) {
@@ -78,6 +128,7 @@ struct EllipsoidContactBatch {
     // One Newton iteration from the warm start and the geometry, for every lane.
     [[gnu::noinline]] void compute(double tolerance) {
         const int n = count;
+        constexpr double infinity = std::numeric_limits<double>::infinity();
         for (int l = 0; l < n; ++l) {
             const Symmetric Qi{qi0[l], qi1[l], qi2[l], qi3[l], qi4[l], qi5[l]};
             const Symmetric Qj{qj0[l], qj1[l], qj2[l], qj3[l], qj4[l], qj5[l]};
@@ -87,7 +138,10 @@ struct EllipsoidContactBatch {
             // Phi = [scale (grad Fi + mu^2 grad Fj); Fi - Fj] (SuperquadricContact.cc, residual).
             const double r0x = s * (i0.gx + m * m * j0.gx), r0y = s * (i0.gy + m * m * j0.gy), r0z = s * (i0.gz + m * m * j0.gz);
             const double r0w = i0.value - j0.value;
-            const double residual2 = r0x * r0x + r0y * r0y + r0z * r0z + r0w * r0w;
+            const double gradient0 = r0x * r0x + r0y * r0y + r0z * r0z, residual2 = gradient0 + r0w * r0w;
+            // A warm start already at the solution: solveFor takes no step (a contact at rest).
+            const double length0 = std::sqrt(i0.gx * i0.gx + i0.gy * i0.gy + i0.gz * i0.gz);
+            const bool atStart = newtonConverged(r0w, gradient0, length0, infinity, s, tolerance);
             // The Newton step by the Schur complement of A = scale (2 Qi + mu^2 2 Qj) (newtonStep).
             const double axx = s * (2 * Qi.xx + m * m * (2 * Qj.xx)), ayy = s * (2 * Qi.yy + m * m * (2 * Qj.yy)),
                          azz = s * (2 * Qi.zz + m * m * (2 * Qj.zz)), axy = s * (2 * Qi.xy + m * m * (2 * Qj.xy)),
@@ -110,29 +164,37 @@ struct EllipsoidContactBatch {
             const double dmu = (r0w - (ccx * irx + ccy * iry + ccz * irz)) / (ccx * ibx + ccy * iby + ccz * ibz);
             const double sx = -(irx + dmu * ibx), sy = -(iry + dmu * iby), sz = -(irz + dmu * ibz);
             // The full step, and the residual there.
-            const double x = x0[l] + sx, y = y0[l] + sy, z = z0[l] + sz, m1 = m + dmu;
-            const Slope i1 = at(Qi, x - cix[l], y - ciy[l], z - ciz[l]);
-            const Slope j1 = at(Qj, x - cjx[l], y - cjy[l], z - cjz[l]);
+            const double x1 = x0[l] + sx, y1 = y0[l] + sy, z1 = z0[l] + sz, m1 = m + dmu;
+            const Slope i1 = at(Qi, x1 - cix[l], y1 - ciy[l], z1 - ciz[l]);
+            const Slope j1 = at(Qj, x1 - cjx[l], y1 - cjy[l], z1 - cjz[l]);
             const double r1x = s * (i1.gx + m1 * m1 * j1.gx), r1y = s * (i1.gy + m1 * m1 * j1.gy),
                          r1z = s * (i1.gz + m1 * m1 * j1.gz), r1w = i1.value - j1.value;
             const double gradient2 = r1x * r1x + r1y * r1y + r1z * r1z, next2 = gradient2 + r1w * r1w;
             // The convergence test of solveFor after its first iteration.
-            const double gradientLength = std::sqrt(i1.gx * i1.gx + i1.gy * i1.gy + i1.gz * i1.gz);
-            const bool converged =
-                newtonConverged(r1w, gradient2, gradientLength, sx * sx + sy * sy + sz * sz, s, tolerance);
+            const double length1 = std::sqrt(i1.gx * i1.gx + i1.gy * i1.gy + i1.gz * i1.gz);
+            const bool converged = newtonConverged(r1w, gradient2, length1, sx * sx + sy * sy + sz * sz, s, tolerance);
+            // The solution: the warm start, or the point after the step.
+            const double x = atStart ? x0[l] : x1, y = atStart ? y0[l] : y1, z = atStart ? z0[l] : z1,
+                         mSolved = atStart ? m : m1;
+            const Slope I{atStart ? i0.value : i1.value, atStart ? i0.gx : i1.gx, atStart ? i0.gy : i1.gy,
+                          atStart ? i0.gz : i1.gz};
+            const Slope J{atStart ? j0.value : j1.value, atStart ? j0.gx : j1.gx, atStart ? j0.gy : j1.gy,
+                          atStart ? j0.gz : j1.gz};
+            const double gradientLength = atStart ? length0 : length1;
             // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient of Fi.
             const double inverseLength = 1 / gradientLength;
-            const double ux = i1.gx * inverseLength, uy = i1.gy * inverseLength, uz = i1.gz * inverseLength;
-            const double di = distance(Qi, i1, i1.gx, i1.gy, i1.gz, gradientLength),
-                         dj = distance(Qj, j1, -i1.gx, -i1.gy, -i1.gz, gradientLength);
+            const double ux = I.gx * inverseLength, uy = I.gy * inverseLength, uz = I.gz * inverseLength;
+            const double di = distance(Qi, I, I.gx, I.gy, I.gz, gradientLength),
+                         dj = distance(Qj, J, -I.gx, -I.gy, -I.gz, gradientLength);
             const double half = 0.5 * (di - dj);
-            px[l] = x, py[l] = y, pz[l] = z, mu[l] = std::abs(m1);
+            px[l] = x, py[l] = y, pz[l] = z, mu[l] = std::abs(mSolved);
             nx[l] = -ux, ny[l] = -uy, nz[l] = -uz;
             overlap[l] = di + dj;
             mx[l] = x + half * ux, my[l] = y + half * uy, mz[l] = z + half * uz;
-            const double sum = di + dj + half * (ux + uy + uz) + m1 + dmu;
+            const double sum = di + dj + half * (ux + uy + uz) + mSolved;
             const bool finite = sum - sum == 0;  // (false for an infinity or NaN; isfinite would not vectorise)
-            done[l] = (regular & (next2 < residual2) & converged & (i1.value < 0) & finite) ? 1.0 : 0.0;
+            const bool solved = atStart | (regular & (next2 < residual2) & converged);
+            done[l] = (solved & (I.value < 0) & finite) ? 1.0 : 0.0;
         }
     }
 };

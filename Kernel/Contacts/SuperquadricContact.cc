@@ -1,6 +1,7 @@
 #include "Contacts/SuperquadricContact.h"
 
 #include <cmath>
+#include <limits>
 
 #include <Eigen/LU>
 
@@ -112,7 +113,12 @@ NewtonResult solveFor(const PlacedSuperquadric& i, const PlacedSuperquadric& j, 
     Residual<Bodies> r = residual<Bodies>(i, j, x, mu, scale);
     double residual2 = r.phi.squaredNorm();  // (squared norms throughout: no square roots)
     const double tolerance2 = settings.tolerance * settings.tolerance;
-    for (int iteration = 1; iteration <= settings.maxIterations; ++iteration) {
+    // A warm start already at the solution, its residual a hundred times below the tolerance (a
+    // contact at rest): no iteration. (A Newton step from there only stirs round-off, does not
+    // lower the residual, and is halved 33 times before the loop gives up on it.)
+    result.converged = newtonConverged(r.phi[3], r.phi.template head<3>().squaredNorm(), r.i.gradient.norm(),
+                                       std::numeric_limits<double>::infinity(), scale, settings.tolerance);
+    for (int iteration = 1; iteration <= settings.maxIterations && !result.converged; ++iteration) {
         result.iterations = iteration;
         const Vec4 step = newtonStep<Bodies>(i, j, r, mu, scale);
         if (!step.allFinite()) return result;

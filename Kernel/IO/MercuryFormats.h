@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "Contacts/ContactForces.h"
+#include "Contacts/ContactReport.h"
 #include "Particles/Energies.h"
 #include "SimulationState.h"
 

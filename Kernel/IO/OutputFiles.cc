@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "Contacts/ContactForces.h"
+#include "Contacts/ContactReport.h"
 #include "Error.h"
 #include "IO/MercuryFormats.h"
 #include "IO/RestartFile.h"

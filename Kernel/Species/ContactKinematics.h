@@ -61,6 +61,19 @@ struct ContactForce {
                             k.inverseDistance, dt);
 }
 
+// A superquadric contact's spring, turned into the new tangent plane with its length kept (the
+// normal there turns with the bodies' shapes, not only with the line of centres): projected
+// onto the plane and stretched back (seed:8339-8449). A spring along n is left projected.
+[[gnu::always_inline]] inline void turnSpringIntoTangentPlane(double& sx, double& sy, double& sz, double nx, double ny,
+                                                              double nz) {
+    const double length2 = sx * sx + sy * sy + sz * sz, along = sx * nx + sy * ny + sz * nz;
+    sx -= along * nx, sy -= along * ny, sz -= along * nz;
+    const double projected2 = sx * sx + sy * sy + sz * sz;
+    const double ratio = std::sqrt(length2 / std::max(projected2, 1e-300));  // (one square root)
+    const double stretch = projected2 > 0 ? ratio : 1.0;
+    sx *= stretch, sy *= stretch, sz *= stretch;
+}
+
 // Coulomb sliding (SPEC.md 1): caps |ft| at mu |fn| and resets the spring so that it is
 // consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. A frictionless contact (or
 // one without normal force) that would slide keeps no tangential force and no spring. Returns

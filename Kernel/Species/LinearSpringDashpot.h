@@ -156,6 +156,16 @@ struct LinearSpringDashpot {
         const double speedNow = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
                                 (1 + halfStepOverMass * normalDamping);
         c.normalForce = elastic - normalDamping * speedNow;
+        tangentialStep(c, dt);
+    }
+    // SPEC.md 1 as plain velocity Verlet evaluates it: the half-step velocities, no treatment of
+    // the contact's ends (superquadric contacts, see plainForce; batched in EllipsoidContactBatch.h).
+    [[gnu::always_inline]] void plainContact(Lane& c, double dt) const {
+        c.normalForce = normalStiffness * c.overlap - normalDamping * c.normalVelocity;
+        tangentialStep(c, dt);
+    }
+    // The spring advanced, the tangential force, the Coulomb limit (SPEC.md 1).
+    [[gnu::always_inline]] void tangentialStep(Lane& c, double dt) const {
         advanceTangentialSpring(c.sx, c.sy, c.sz, c.nx, c.ny, c.nz, c.vx, c.vy, c.vz, c.tx, c.ty, c.tz, c.inverseDistance,
                                 dt);
         c.fx = -tangentialStiffness * c.sx - tangentialDamping * c.tx;
@@ -164,13 +174,16 @@ struct LinearSpringDashpot {
         applyCoulombLimit(c.fx, c.fy, c.fz, c.sx, c.sy, c.sz, c.normalForce, friction, tangentialStiffness,
                           tangentialDamping, c.tx, c.ty, c.tz);
     }
+    static Lane laneOf(const ContactKinematics& k, const Vec3& spring) {
+        return {k.normal.x(), k.normal.y(), k.normal.z(), k.overlap,
+                k.relativeVelocity.x(), k.relativeVelocity.y(), k.relativeVelocity.z(), k.normalVelocity,
+                k.tangentialVelocity.x(), k.tangentialVelocity.y(), k.tangentialVelocity.z(),
+                k.otherAcceleration, k.inverseReducedMass, k.inverseDistance,
+                spring.x(), spring.y(), spring.z(), 0, 0, 0, 0};
+    }
     [[gnu::always_inline]] ContactForce lastingContactForce(const ContactKinematics& k, ContactHistory& history,
                                                              double dt) const {
-        Lane c{k.normal.x(), k.normal.y(), k.normal.z(), k.overlap,
-               k.relativeVelocity.x(), k.relativeVelocity.y(), k.relativeVelocity.z(), k.normalVelocity,
-               k.tangentialVelocity.x(), k.tangentialVelocity.y(), k.tangentialVelocity.z(),
-               k.otherAcceleration, k.inverseReducedMass, k.inverseDistance,
-               history.spring.x(), history.spring.y(), history.spring.z(), 0, 0, 0, 0};
+        Lane c = laneOf(k, history.spring);
         lastingContact(c, dt);
         history.spring = Vec3(c.sx, c.sy, c.sz);
         return {c.normalForce, Vec3(c.fx, c.fy, c.fz)};
@@ -268,15 +281,12 @@ struct LinearSpringDashpot {
         return f;
     }
 
-    // SPEC.md 1 as plain velocity Verlet evaluates it: the half-step velocities, no end treatment.
+    // (plainContact for the scalar path.)
     [[gnu::noinline]] ContactForce plainForce(const ContactKinematics& k, ContactHistory& history, double dt) const {
-        ContactForce f;
-        f.normalForce = normalStiffness * k.overlap - normalDamping * k.normalVelocity;
-        advanceTangentialSpring(history.spring, k, dt);
-        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
-        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
-                          tangentialDamping, k.tangentialVelocity);
-        return f;
+        Lane c = laneOf(k, history.spring);
+        plainContact(c, dt);
+        history.spring = Vec3(c.sx, c.sy, c.sz);
+        return {c.normalForce, Vec3(c.fx, c.fy, c.fz)};
     }
 
     template <class Member>
