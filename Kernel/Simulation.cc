@@ -11,6 +11,7 @@
 #include "IO/Progress.h"
 #include "IO/RestartFile.h"
 #include "Parallel/DomainSplit.h"
+#include "Particles/RotationBatch.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
 
@@ -561,15 +562,17 @@ void Simulation::integrate(bool recordContacts) {
 
 // The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half
 // kick of the angular momentum by the torque, then (drift > 0) the torque-free turn of the
-// orientation over the step; the angular velocity the contacts see follows from both.
+// orientation over the step; the angular velocity the contacts see follows from both. In
+// batches of lanes (Particles/RotationBatch.h).
 void Simulation::turnShapedParticles(double kick, double drift) {
     ParticleStore& p = state_.particles;
+    RotationBatch batch;
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i] || p.shape[i] < 0) continue;
-        kickAngularMomentum(p.angularMomentum[i], p.torque[i], kick);
-        if (drift > 0) driftOrientation(p.orientation[i], p.angularMomentum[i], p.principalInertia[i], drift);
-        p.angularVelocity[i] = angularVelocity(p.orientation[i], p.angularMomentum[i], p.principalInertia[i]);
+        batch.add(static_cast<std::uint32_t>(i), p);
+        if (batch.full()) batch.flush(p, kick, drift);
     }
+    batch.flush(p, kick, drift);
 }
 
 void Simulation::writeOutput() {

@@ -23,6 +23,7 @@
 // bounded (no drift) and are O(dt^2). See driftOrientation for the splitting chosen.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -66,22 +67,36 @@ inline Mat3 labInertia(const Quat& orientation, const Vec3& principalInertia) {
     return A * principalInertia.asDiagonal() * A.transpose();
 }
 
-// v turned by the unit quaternion q (q v q*): v + 2w (u x v) + 2 u x (u x v) with u the vector
-// part. Written on plain numbers and always inlined: it runs per particle and step, and as
-// Eigen's quaternion product GCC called it out of line.
-[[gnu::always_inline]] inline Vec3 turned(const Quat& q, const Vec3& v) {
-    const double w = q.w(), ux = q.x(), uy = q.y(), uz = q.z();
-    const double tx = 2 * (uy * v.z() - uz * v.y()), ty = 2 * (uz * v.x() - ux * v.z()), tz = 2 * (ux * v.y() - uy * v.x());
-    return {v.x() + w * tx + (uy * tz - uz * ty), v.y() + w * ty + (uz * tx - ux * tz), v.z() + w * tz + (ux * ty - uy * tx)};
+namespace detail {
+
+// The quaternion product (aw, a) (bw, b) into (aw, a).
+[[gnu::always_inline]] inline void multiply(double& aw, double& ax, double& ay, double& az, double bw, double bx,
+                                            double by, double bz) {
+    const double w = aw * bw - ax * bx - ay * by - az * bz, x = aw * bx + ax * bw + ay * bz - az * by,
+                 y = aw * by - ax * bz + ay * bw + az * bx, z = aw * bz + ax * by - ay * bx + az * bw;
+    aw = w, ax = x, ay = y, az = z;
+}
+// v turned by the unit quaternion (w, u): v + 2w (u x v) + 2 u x (u x v).
+[[gnu::always_inline]] inline void turn(double w, double ux, double uy, double uz, double& vx, double& vy, double& vz) {
+    const double tx = 2 * (uy * vz - uz * vy), ty = 2 * (uz * vx - ux * vz), tz = 2 * (ux * vy - uy * vx);
+    const double x = vx + w * tx + (uy * tz - uz * ty), y = vy + w * ty + (uz * tx - ux * tz),
+                 z = vz + w * tz + (ux * ty - uy * tx);
+    vx = x, vy = y, vz = z;
 }
 
-// The quaternion product a b, on plain numbers and always inlined (Eigen's is called out of line
-// in the per-particle loop).
+}  // namespace detail
+
+// v turned by the unit quaternion q (q v q*), and the quaternion product a b, on plain numbers
+// and always inlined: they run per particle and step, and as Eigen's GCC called them out of line.
+[[gnu::always_inline]] inline Vec3 turned(const Quat& q, const Vec3& v) {
+    double x = v.x(), y = v.y(), z = v.z();
+    detail::turn(q.w(), q.x(), q.y(), q.z(), x, y, z);
+    return {x, y, z};
+}
 [[gnu::always_inline]] inline Quat product(const Quat& a, const Quat& b) {
-    return Quat(a.w() * b.w() - a.x() * b.x() - a.y() * b.y() - a.z() * b.z(),
-                a.w() * b.x() + a.x() * b.w() + a.y() * b.z() - a.z() * b.y(),
-                a.w() * b.y() - a.x() * b.z() + a.y() * b.w() + a.z() * b.x(),
-                a.w() * b.z() + a.x() * b.y() - a.y() * b.x() + a.z() * b.w());
+    double w = a.w(), x = a.x(), y = a.y(), z = a.z();
+    detail::multiply(w, x, y, z, b.w(), b.x(), b.y(), b.z());
+    return Quat(w, x, y, z);
 }
 
 // Lab angular velocity omega = A I^-1 A^T L, for contact kinematics (v + omega x branch).
@@ -106,33 +121,84 @@ inline double rotationalKineticEnergy(const Quat& orientation, const Vec3& angul
 
 namespace detail {
 
-// sin x and cos x. A step turns a particle by a small angle (|omega| dt ~ 1e-3), where the
-// Taylor series to x^9 and x^10 is exact to rounding (the next terms are below 1e-22 relative
-// for |x| <= 1/16) and several times cheaper than the library's sin and cos.
-[[gnu::always_inline]] inline void sinCos(double x, double& s, double& c) {
-    if (!(std::abs(x) <= 0.0625)) {
-        s = std::sin(x), c = std::cos(x);
-        return;
-    }
+// sin x and cos x for a small angle, |x| <= 1/16 (a step turns a particle by |omega| dt ~ 1e-3):
+// the Taylor series to x^9 and x^10 is exact to rounding there (the next terms are below 1e-22
+// relative) and several times cheaper than the library's sin and cos. Branch-free, for lanes.
+[[gnu::always_inline]] inline void smallSinCos(double x, double& s, double& c) {
     const double x2 = x * x;
     s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880)))));
     c = 1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800)))));
 }
+constexpr double smallAngle = 0.0625;
+// Any angle: the series where it is exact, else the library's.
+[[gnu::always_inline]] inline void sinCos(double x, double& s, double& c) {
+    if (!(std::abs(x) <= smallAngle)) {
+        s = std::sin(x), c = std::cos(x);
+        return;
+    }
+    smallSinCos(x, s, c);
+}
 
-// The exact flow of T_k = c M_k^2 / 2 (k a body axis) for a time t: the body turns about its own
-// axis k at the constant rate c M_k, so q <- q (cos(phi/2), sin(phi/2) e_k) with phi = c M_k t,
-// and the body components of the lab-fixed L turn the other way, M <- R_k(-phi) M, as in DLM.
-[[gnu::always_inline]] inline void rotateAboutBodyAxis(Quat& q, Vec3& bodyMomentum, int k, double rate, double t) {
+}  // namespace detail
+
+// The body axes of the drift's splitting (driftOrientation, below), chosen once per inertia: the
+// median axis m and its rate 1/Im; the outer and inner axes as unit vectors with their residual
+// rates 1/Ik - 1/Im, the inner one the smaller in magnitude; and 1/I for the angular velocity.
+struct RotationAxes {
+    double medianRate;
+    double outer[3], outerRate, inner[3], innerRate;
+    double inverseInertia[3];
+};
+inline RotationAxes rotationAxesOf(const Vec3& principalInertia) {
+    const Vec3& I = principalInertia;
+    int smallest = 0, largest = 0;
+    I.minCoeff(&smallest);
+    I.maxCoeff(&largest);
+    const int median = smallest == largest ? 0 : 3 - smallest - largest;  // all equal: any axis
+    RotationAxes a{};
+    a.medianRate = 1 / I[median];
+    int outer = (median + 1) % 3, inner = (median + 2) % 3;
+    a.outerRate = 1 / I[outer] - a.medianRate, a.innerRate = 1 / I[inner] - a.medianRate;
+    if (std::abs(a.innerRate) > std::abs(a.outerRate)) {
+        std::swap(outer, inner);
+        std::swap(a.outerRate, a.innerRate);
+    }
+    a.outer[outer] = 1, a.inner[inner] = 1;
+    for (int k = 0; k < 3; ++k) a.inverseInertia[k] = 1 / I[k];
+    return a;
+}
+
+// One particle's rotation on plain numbers, branch-free: written once for the scalar calls
+// (driftOrientation, angularVelocity) and for lanes of particles that the compiler vectorises
+// (Particles/RotationBatch.h).
+struct RotationLane {
+    double qw, qx, qy, qz;  // orientation
+    double Lx, Ly, Lz;      // lab angular momentum
+    RotationAxes axes;
+    double wx, wy, wz;      // out: lab angular velocity (turnedSpin)
+    double largestAngle;    // out: the largest half angle of the drift's pieces (detail::smallAngle)
+};
+
+namespace detail {
+
+// The exact flow of T_k = rate M_k^2 / 2 (e the body axis k) for a time t: the body turns about
+// its own axis at the constant rate `rate M_k`, q <- q (cos(phi/2), sin(phi/2) e) with
+// phi = rate M_k t, and the body components of the lab-fixed L turn the other way, M <- R_e(-phi) M,
+// as in DLM: M - 2 sin^2(phi/2) (M - e M_k) - 2 sin(phi/2) cos(phi/2) (e x M), which leaves M_k
+// exactly as it was. A zero rate or time is the identity, exactly (sin 0 = 0, cos 0 = 1).
+template <class SinCos>
+[[gnu::always_inline]] inline void rotateAboutBodyAxis(RotationLane& r, double& Mx, double& My, double& Mz,
+                                                       const double (&e)[3], double rate, double t, SinCos sinCos) {
+    const double along = e[0] * Mx + e[1] * My + e[2] * Mz;
+    const double half = 0.5 * rate * along * t;
     double s, c;
-    sinCos(0.5 * rate * bodyMomentum[k] * t, s, c);
-    Quat turn(c, 0, 0, 0);
-    turn.vec()[k] = s;
-    q = product(q, turn);
-    const int i = (k + 1) % 3, j = (k + 2) % 3;  // (k, i, j) cyclic
-    const double cosAngle = c * c - s * s, sinAngle = 2 * s * c;
-    const double Mi = bodyMomentum[i], Mj = bodyMomentum[j];
-    bodyMomentum[i] = cosAngle * Mi + sinAngle * Mj;
-    bodyMomentum[j] = -sinAngle * Mi + cosAngle * Mj;
+    sinCos(half, s, c);
+    r.largestAngle = std::max(r.largestAngle, std::abs(half));
+    multiply(r.qw, r.qx, r.qy, r.qz, c, s * e[0], s * e[1], s * e[2]);
+    const double fold = 2 * s * s, twist = 2 * s * c;
+    const double px = Mx - e[0] * along, py = My - e[1] * along, pz = Mz - e[2] * along;
+    const double cx = e[1] * Mz - e[2] * My, cy = e[2] * Mx - e[0] * Mz, cz = e[0] * My - e[1] * Mx;  // e x M
+    Mx -= fold * px + twist * cx, My -= fold * py + twist * cy, Mz -= fold * pz + twist * cz;
 }
 
 }  // namespace detail
@@ -156,57 +222,59 @@ namespace detail {
 //   - a body of revolution (I1 = I2 or I2 = I3: spheroids, most superquadrics in practice) has one
 //     residual rate zero, the remaining pieces commute, and the step is exact: the precession is
 //     right to round-off at any dt; a sphere-like body (I1 = I2 = I3) turns exactly about L;
-//   - four trigonometric pairs per step instead of five (two for a body of revolution: with the
-//     inner rate zero, the two outer half-steps about the same axis are one whole step);
 //   - for 25 random triaxial ellipsoids (semi-axes 0.5-2, random omega, |omega| dt ~ 0.02, 2e4
 //     steps) the energy error was 60 times smaller than DLM's x y z y x (geometric mean 1.9e-7 vs
 //     1.2e-5) and 18 times smaller than DLM with its best axis order for each body (3.3e-6). Only
 //     flat bodies (I3 = I1 + I2, e.g. I = (1, 2, 3)) favour DLM's order (3.4e-6 vs 4.3e-7).
 // The inner (full-step) rotation is the one with the smaller residual rate: the Strang error term
-// of the middle piece carries twice the weight of the outer one.
+// of the middle piece carries twice the weight of the outer one. With the inner rate zero (a
+// body of revolution) the two outer half-steps, about the same axis with nothing between them,
+// are taken as one whole step.
 //
 // q is renormalised at the end: each step multiplies q by unit quaternions, but rounding moves |q|
 // away from 1 by ~1e-16 per step, unbounded over a run (a random walk at best, a drift if the
 // rounding is biased). toRotationMatrix assumes |q| = 1, so a drifted q would scale every body
 // vector it turns (contact points, normals, lab inertia), and a restart reader refuses it
 // (requireValidOrientation). One square root per step keeps |q| = 1 to round-off for ever.
-inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, const Vec3& principalInertia, double dt) {
-    const Vec3& I = principalInertia;
-    int smallest = 0, largest = 0;
-    I.minCoeff(&smallest);
-    I.maxCoeff(&largest);
-    const int median = smallest == largest ? 0 : 3 - smallest - largest;  // all equal: any axis
-    const double medianRate = 1 / I[median];
-
+template <class SinCos>
+[[gnu::always_inline]] inline void driftOrientation(RotationLane& r, double dt, SinCos sinCos) {
+    const RotationAxes& a = r.axes;
     // Isotropic part: about the lab L, i.e. a left (lab-frame) multiplication.
-    const double momentum = angularMomentum.norm();
-    if (momentum > 0) {
-        double s, c;
-        detail::sinCos(0.5 * momentum * medianRate * dt, s, c);
-        const Vec3 axis = (s / momentum) * angularMomentum;
-        orientation = product(Quat(c, axis.x(), axis.y(), axis.z()), orientation);
-    }
+    const double momentum = std::sqrt(r.Lx * r.Lx + r.Ly * r.Ly + r.Lz * r.Lz);
+    const double half = 0.5 * momentum * a.medianRate * dt;
+    double s, c;
+    sinCos(half, s, c);
+    r.largestAngle = std::abs(half);
+    const double k = s / std::max(momentum, 1e-300);  // (no momentum: s = 0, the identity)
+    double w = c, x = k * r.Lx, y = k * r.Ly, z = k * r.Lz;
+    detail::multiply(w, x, y, z, r.qw, r.qx, r.qy, r.qz);
+    r.qw = w, r.qx = x, r.qy = y, r.qz = z;
+    // The body components M = A^T L, turned by the body-axis rotations.
+    double Mx = r.Lx, My = r.Ly, Mz = r.Lz;
+    detail::turn(r.qw, -r.qx, -r.qy, -r.qz, Mx, My, Mz);
+    const bool revolution = a.innerRate == 0;
+    const double first = revolution ? dt : 0.5 * dt, last = revolution ? 0.0 : 0.5 * dt;
+    detail::rotateAboutBodyAxis(r, Mx, My, Mz, a.outer, a.outerRate, first, sinCos);
+    detail::rotateAboutBodyAxis(r, Mx, My, Mz, a.inner, a.innerRate, dt, sinCos);
+    detail::rotateAboutBodyAxis(r, Mx, My, Mz, a.outer, a.outerRate, last, sinCos);
+    const double inverseNorm = 1 / std::sqrt(r.qw * r.qw + r.qx * r.qx + r.qy * r.qy + r.qz * r.qz);
+    r.qw *= inverseNorm, r.qx *= inverseNorm, r.qy *= inverseNorm, r.qz *= inverseNorm;
+}
+inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, const Vec3& principalInertia, double dt) {
+    RotationLane r{orientation.w(), orientation.x(), orientation.y(), orientation.z(),
+                   angularMomentum.x(), angularMomentum.y(), angularMomentum.z(), rotationAxesOf(principalInertia),
+                   0, 0, 0, 0};
+    driftOrientation(r, dt, [](double x, double& sine, double& cosine) { detail::sinCos(x, sine, cosine); });
+    orientation = Quat(r.qw, r.qx, r.qy, r.qz);
+}
 
-    int outer = (median + 1) % 3, inner = (median + 2) % 3;
-    double outerRate = 1 / I[outer] - medianRate, innerRate = 1 / I[inner] - medianRate;
-    if (std::abs(innerRate) > std::abs(outerRate)) {
-        std::swap(outer, inner);
-        std::swap(outerRate, innerRate);
-    }
-    // A residual rate is exactly zero for a body of revolution (both for a sphere-like body): its
-    // rotation is skipped, and the two outer half-steps, then about the same axis with nothing
-    // between them, are one whole step.
-    if (outerRate != 0) {
-        Vec3 bodyMomentum = turned(orientation.conjugate(), angularMomentum);
-        if (innerRate == 0) {
-            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, dt);
-        } else {
-            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
-            detail::rotateAboutBodyAxis(orientation, bodyMomentum, inner, innerRate, dt);
-            detail::rotateAboutBodyAxis(orientation, bodyMomentum, outer, outerRate, 0.5 * dt);
-        }
-    }
-    orientation.coeffs() *= 1 / orientation.norm();  // (one division, not four)
+// The lab angular velocity omega = A I^-1 A^T L of the lane, into (wx, wy, wz).
+[[gnu::always_inline]] inline void turnedSpin(RotationLane& r) {
+    double x = r.Lx, y = r.Ly, z = r.Lz;
+    detail::turn(r.qw, -r.qx, -r.qy, -r.qz, x, y, z);  // M = A^T L
+    x *= r.axes.inverseInertia[0], y *= r.axes.inverseInertia[1], z *= r.axes.inverseInertia[2];
+    detail::turn(r.qw, r.qx, r.qy, r.qz, x, y, z);
+    r.wx = x, r.wy = y, r.wz = z;
 }
 
 }  // namespace talus
