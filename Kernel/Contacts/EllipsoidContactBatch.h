@@ -6,12 +6,13 @@
 // contact's (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
 //
 // The arithmetic is that of the scalar solve (SuperquadricContact.cc, TwoEllipsoids): the first
-// iteration of solveFor from the warm start, its full step, and its convergence test; then the
-// normal and the overlap from the values and gradients at the solution. A lane that the scalar
-// solve would take further (the full step does not lower the residual, the test fails after one
-// iteration, the bodies are found apart, or anything is not finite) is marked, and the force
-// loop gives that pair to the scalar path, which starts again from the same warm start: every
-// lane's answer is the scalar solve's, to rounding.
+// iteration of solveFor from the warm start, its full step, and its convergence test (or, a
+// warm start already at the solution, none); then the normal and the overlap from the values and
+// gradients at the solution. A lane that the scalar solve would take further (the full step does
+// not lower the residual, the test fails after one iteration, the bodies are found apart, or
+// anything is not finite) is marked, and the force loop gives that pair to the scalar path,
+// which starts again from the same warm start: every lane's answer is the scalar solve's, to
+// rounding. With the linear law the contact's step follows in lanes too (forceLanes).
 #pragma once
 
 #include <algorithm>

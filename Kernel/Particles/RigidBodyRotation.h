@@ -83,6 +83,14 @@ namespace detail {
                  z = vz + w * tz + (ux * ty - uy * tx);
     vx = x, vy = y, vz = z;
 }
+// The lab angular velocity omega = A I^-1 A^T L of the orientation q = (w, u), from the lab L and
+// 1/I, into L's place.
+[[gnu::always_inline]] inline void labSpin(double w, double ux, double uy, double uz, double& Lx, double& Ly,
+                                           double& Lz, const double (&inverseInertia)[3]) {
+    turn(w, -ux, -uy, -uz, Lx, Ly, Lz);  // M = A^T L
+    Lx *= inverseInertia[0], Ly *= inverseInertia[1], Lz *= inverseInertia[2];
+    turn(w, ux, uy, uz, Lx, Ly, Lz);
+}
 
 }  // namespace detail
 
@@ -101,8 +109,10 @@ namespace detail {
 
 // Lab angular velocity omega = A I^-1 A^T L, for contact kinematics (v + omega x branch).
 inline Vec3 angularVelocity(const Quat& orientation, const Vec3& angularMomentum, const Vec3& principalInertia) {
-    const Vec3 bodyMomentum = turned(orientation.conjugate(), angularMomentum);  // M = A^T L
-    return turned(orientation, bodyMomentum.cwiseQuotient(principalInertia).eval());
+    double x = angularMomentum.x(), y = angularMomentum.y(), z = angularMomentum.z();
+    const double inverseInertia[3] = {1 / principalInertia.x(), 1 / principalInertia.y(), 1 / principalInertia.z()};
+    detail::labSpin(orientation.w(), orientation.x(), orientation.y(), orientation.z(), x, y, z, inverseInertia);
+    return {x, y, z};
 }
 
 // The lab angular momentum L = A I A^T omega of a body turning at lab angular velocity omega
@@ -271,9 +281,7 @@ inline void driftOrientation(Quat& orientation, const Vec3& angularMomentum, con
 // The lab angular velocity omega = A I^-1 A^T L of the lane, into (wx, wy, wz).
 [[gnu::always_inline]] inline void turnedSpin(RotationLane& r) {
     double x = r.Lx, y = r.Ly, z = r.Lz;
-    detail::turn(r.qw, -r.qx, -r.qy, -r.qz, x, y, z);  // M = A^T L
-    x *= r.axes.inverseInertia[0], y *= r.axes.inverseInertia[1], z *= r.axes.inverseInertia[2];
-    detail::turn(r.qw, r.qx, r.qy, r.qz, x, y, z);
+    detail::labSpin(r.qw, r.qx, r.qy, r.qz, x, y, z, r.axes.inverseInertia);
     r.wx = x, r.wy = y, r.wz = z;
 }
 
