@@ -185,7 +185,10 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
         p.principalInertia.push_back(Vec3::Zero());
         p.shape.push_back(-1);
     }
-    state_.pairList.valid = false;
+    // The list relists the new particle's pairs at the next force computation (PairList::relist);
+    // on ranks, where a new particle may belong to another rank's ghosts, it is built anew.
+    if (onRanks()) state_.pairList.valid = false;
+    else state_.pairList.noteAdded(static_cast<std::uint32_t>(p.size() - 1));
     return p.size() - 1;
 }
 
@@ -247,6 +250,13 @@ std::size_t Simulation::fixParticle(std::size_t i, int motion) {
         p.angularVelocity[i] = state_.motions[motion].angularVelocity;
     }
     return i;
+}
+
+void Simulation::moveParticleBy(std::size_t slot, const Vec3& jump) {
+    require(slot < state_.particles.owned(), "moveParticleBy: slot " + std::to_string(slot) + " does not exist");
+    state_.particles.position[slot] += jump;
+    if (onRanks()) state_.pairList.valid = false;
+    else state_.pairList.noteJumped(static_cast<std::uint32_t>(slot), jump);
 }
 
 void Simulation::removeParticle(std::size_t slot) {
@@ -360,6 +370,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t every = saveEvery();
     std::size_t counted = state_.particles.size();
     const std::uint64_t buildsAtStart = state_.pairList.builds;
+    const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         const bool saving = (state_.step + 1) % every == 0 || k == steps;
         actionsBeforeTimeStep();
@@ -376,12 +387,14 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     }
     progress.finish(state_.time, steps);
     if (steps > 0) {
-        // Rebuilds cost a full neighbour search; boundaries that add, delete or move particles
-        // each force one.
+        // Rebuilds cost a full neighbour search; boundaries that delete particles force one,
+        // those that add or move a few have their pairs relisted.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
         out << name() << ": neighbour list built " << builds << " times, every "
-                  << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0)
-                  << " steps on average" << std::endl;
+                  << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0) << " steps on average";
+        if (const std::uint64_t relisted = state_.pairList.relistedParticles - relistedAtStart)
+            out << "; the pairs of " << relisted << " added or moved particles relisted";
+        out << std::endl;
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
@@ -446,6 +459,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck
     if (onRanks()) {
         rebuild = updateNeighbourhoodOnRanks(carried);
     } else {
+        list.relist(p, state_.domain, state_.walls);  // particles added or moved by boundaries
         rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
         if (rebuild && state_.settings.reorderParticles) reorderParticles();
     }
@@ -578,6 +592,9 @@ void Simulation::turnShapedParticles(double kick, double drift) {
 void Simulation::writeOutput() {
     if (onRanks()) return writeGatheredOutput();
     if (!files_) return;
+    // Particles added since the forces (a driver's actionsAfterTimeStep) are relisted now, in the
+    // run that goes on and, through the restart file, in the one that restarts from here.
+    state_.pairList.relist(state_.particles, state_.domain, state_.walls);
     files_->writeFrame(state_, records_, elasticEnergy_);
     saveKeptValues();
     files_->writeRestart(state_);

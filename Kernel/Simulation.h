@@ -97,6 +97,9 @@ public:
                                      const Quat& orientation = Quat::Identity(), int motion = -1);
     const std::vector<Superquadric>& shapes() const { return state_.shapes; }
     void removeParticle(std::size_t slot);
+    // Moves a particle by a jump (a boundary's wrap, like the maser's): the neighbour list then
+    // relists its pairs rather than being built anew.
+    void moveParticleBy(std::size_t slot, const Vec3& jump);
 
     // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
     // boundaries register themselves, in their constructors. Not owned: it must outlive the run.

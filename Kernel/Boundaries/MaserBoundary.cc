@@ -105,7 +105,6 @@ void MaserBoundary::afterDrift(Simulation& s) {
     if (!box.active) return;
     const double length = box.length();
     ParticleStore& p = s.particles();
-    bool moved = false;
     // What this step added to the totals: crossings, their mass, backward crossings, and per
     // chute species the count and mass (summed over the ranks on ranks).
     const std::size_t species = speciesCount_.size();
@@ -125,15 +124,13 @@ void MaserBoundary::afterDrift(Simulation& s) {
                 added[3 + chuteSpecies] += 1;
                 added[3 + species + chuteSpecies] += p.mass[copy];
             }
-            p.position[i].x() -= length;
-            moved = true;
+            s.moveParticleBy(i, Vec3(-length, 0, 0));
         } else if (x < box.lo - 2 * p.radius[i]) {
             // A diameter behind the upstream face, not at it: a particle just moved back from the
             // downstream face meets the particles in front of it there and may be pushed back a
             // little; moved forward at once it would land on its own copy.
-            p.position[i].x() += length;
+            s.moveParticleBy(i, Vec3(length, 0, 0));
             added[2] += 1;
-            moved = true;
         }
     }
     s.sumOverRanks(added);
@@ -144,9 +141,6 @@ void MaserBoundary::afterDrift(Simulation& s) {
         speciesCount_[k] += added[3 + k];
         speciesMass_[k] += added[3 + species + k];
     }
-    // Positions jumped by a box length: the neighbour list must be built anew (addParticle
-    // already asks for it when a copy was made).
-    if (moved) s.state().pairList.valid = false;
 }
 
 }  // namespace talus

@@ -77,6 +77,13 @@ public:
         states_.assign(n, ContactHistory::apart);
         if (withWarmStarts_) warmPoints_.assign(n, Vec3::Zero()), warmMultipliers_.assign(n, 0);
     }
+    // Keeps the first n histories, or adds apart ones up to n.
+    void resize(std::size_t n) {
+        springs_.resize(n, Vec3::Zero());
+        lastNormalForces_.resize(n, 0);
+        states_.resize(n, ContactHistory::apart);
+        if (withWarmStarts_) warmPoints_.resize(n, Vec3::Zero()), warmMultipliers_.resize(n, 0);
+    }
     void push_back(const ContactHistory& h) {
         springs_.push_back(h.spring);
         lastNormalForces_.push_back(h.lastNormalForce);

@@ -133,9 +133,8 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
                             const std::uint32_t j = entry.particle;
                             if (l == levelOf_[i] && j <= i) continue;
                             if (fixedI && particles.fixed[j]) continue;
-                            const double reachIJ = 0.5 * (di + 2 * particles.radius[j] + skin);
-                            const Vec3 d = image.nearest(xi - particles.position[j]);
-                            if (d.squaredNorm() < reachIJ * reachIJ)
+                            if (withinListReach(image.nearest(xi - particles.position[j]), particles.radius[i],
+                                                particles.radius[j], skin))
                                 pairs.push_back({static_cast<std::uint32_t>(i), j});
                         }
                     }

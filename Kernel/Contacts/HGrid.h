@@ -23,6 +23,12 @@ struct ParticlePair {
     bool operator==(const ParticlePair&) const = default;
 };
 
+// The listing rule: two particles whose separation d (nearest image) is below ri + rj + reach.
+inline bool withinListReach(const Vec3& d, double ri, double rj, double reach) {
+    const double limit = ri + rj + reach;
+    return d.squaredNorm() < limit * limit;
+}
+
 class HGrid {
 public:
     explicit HGrid(double cellSizeRatio = 2.0);

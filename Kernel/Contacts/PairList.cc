@@ -92,27 +92,73 @@ bool worthCarrying(const ContactHistory& h) {
     return h.state != ContactHistory::apart || !h.spring.isZero(0) || h.warmMultiplier != 0;
 }
 
+// The histories worth carrying of the entries of `list` for which keep(entry) holds, by ids.
+// Direct and one-way pairs share the keys: a pair keeps its spring when one of its particles
+// passes the one-way box's face and the pair changes list.
+template <class Keep>
+void carryPairs(const std::vector<ParticlePair>& list, const ContactHistories& histories, const ParticleStore& particles,
+                Keep keep, std::vector<CarriedHistory>& carried) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const ContactHistory h = histories.get(k);
+        if (!worthCarrying(h) || !keep(list[k])) continue;
+        std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
+        carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
+    }
+}
+
+template <class Keep>
+void carryWallPairs(const std::vector<WallCandidate>& list, const ContactHistories& histories,
+                    const ParticleStore& particles, Keep keep, std::vector<CarriedHistory>& carried) {
+    for (std::size_t k = 0; k < list.size(); ++k)
+        if (worthCarrying(histories.get(k)) && keep(list[k]))
+            carried.push_back({particles.id[list[k].particle], CarriedHistory::wallKey(list[k].wall), histories.get(k)});
+}
+
+// The history carried for the pair of ids (a, b) as seen from a, if any (`carried` sorted).
+const ContactHistory* carriedHistory(const std::vector<CarriedHistory>& carried, std::uint64_t a, std::uint64_t b,
+                                     ContactHistory& turned) {
+    const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
+    auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{lo, hi, {}});
+    if (it == carried.end() || it->a != lo || it->b != hi) return nullptr;
+    if (a < b) return &it->history;
+    turned = reversed(it->history);
+    return &turned;
+}
+
+// Gives each pair of `list` the history carried for it, if any.
+void restorePairs(const std::vector<ParticlePair>& list, std::size_t from, ContactHistories& histories,
+                  const ParticleStore& particles, const std::vector<CarriedHistory>& carried) {
+    ContactHistory turned;
+    for (std::size_t k = from; k < list.size(); ++k)
+        if (const ContactHistory* h = carriedHistory(carried, particles.id[list[k].i], particles.id[list[k].j], turned))
+            histories.set(k, *h);
+}
+
+void restoreWallPairs(const std::vector<WallCandidate>& list, std::size_t from, ContactHistories& histories,
+                      const ParticleStore& particles, const std::vector<CarriedHistory>& carried) {
+    for (std::size_t k = from; k < list.size(); ++k) {
+        const std::uint64_t a = particles.id[list[k].particle], b = CarriedHistory::wallKey(list[k].wall);
+        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{a, b, {}});
+        if (it != carried.end() && it->a == a && it->b == b) histories.set(k, it->history);
+    }
+}
+
+// The build's rule for wall candidates: mobile particles within the reach of a resting wall, and
+// every mobile particle for a moving wall (which may sweep over them).
+bool isWallCandidate(const ParticleStore& particles, const Wall& wall, std::uint32_t i, const Vec3& x, double reach) {
+    if (particles.fixed[i]) return false;
+    return wall.motion >= 0 || wall.signedDistance(x) < particles.radius[i] + reach;
+}
+
 }  // namespace
 
 std::vector<CarriedHistory> PairList::carriedHistories(const ParticleStore& particles, bool firstOwned) const {
     std::vector<CarriedHistory> carried;
     const std::size_t firstGhost = firstOwned ? particles.owned() : particles.size();
-    // Direct and one-way pairs share the keys: a pair keeps its spring when one of its particles
-    // passes the one-way box's face and the pair changes list.
-    auto remember = [&](const std::vector<ParticlePair>& list, const ContactHistories& histories) {
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const ContactHistory h = histories.get(k);
-            if (!worthCarrying(h) || list[k].i >= firstGhost) continue;
-            std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
-            carried.push_back(a < b ? CarriedHistory{a, b, h} : CarriedHistory{b, a, reversed(h)});
-        }
-    };
-    remember(pairs, history);
-    remember(oneWayPairs, oneWayHistory);
-    for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (worthCarrying(wallHistory.get(k)))
-            carried.push_back({particles.id[wallPairs[k].particle], CarriedHistory::wallKey(wallPairs[k].wall),
-                               wallHistory.get(k)});
+    auto owned = [firstGhost](const ParticlePair& pair) { return pair.i < firstGhost; };
+    carryPairs(pairs, history, particles, owned, carried);
+    carryPairs(oneWayPairs, oneWayHistory, particles, owned, carried);
+    carryWallPairs(wallPairs, wallHistory, particles, [](const WallCandidate&) { return true; }, carried);
     std::sort(carried.begin(), carried.end());
     return carried;
 }
@@ -124,13 +170,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
 
 void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                        HGrid& grid, double dt, std::vector<CarriedHistory> carried) {
-    // 1. The history of touching pairs by global ids.
-    auto find = [&carried](std::uint64_t a, std::uint64_t b) -> const CarriedHistory* {
-        auto it = std::lower_bound(carried.begin(), carried.end(), CarriedHistory{a, b, {}});
-        return it != carried.end() && it->a == a && it->b == b ? &*it : nullptr;
-    };
-
-    // 2. New candidates, with the history they had.
+    // New candidates, with the history they had (`carried`: by global ids, sorted).
     pairs.clear();
     reach = skin + 2 * maxSpeed * dt;
     grid.findPairs(particles, domain, reach, pairs);
@@ -141,30 +181,19 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
         for (ParticlePair& pair : pairs)
             if ((orientById || pair.i >= owned || pair.j >= owned) && particles.id[pair.i] > particles.id[pair.j])
                 std::swap(pair.i, pair.j);
-    auto restore = [&](const std::vector<ParticlePair>& list, ContactHistories& histories) {
-        histories.assign(list.size());
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            std::uint64_t a = particles.id[list[k].i], b = particles.id[list[k].j];
-            if (const CarriedHistory* c = find(std::min(a, b), std::max(a, b)))
-                histories.set(k, a < b ? c->history : reversed(c->history));
-        }
-    };
     interiorPairs = putInteriorPairsFirst(particles, domain);
-    restore(pairs, history);
+    history.assign(pairs.size());
+    restorePairs(pairs, 0, history, particles, carried);
     listOneWayPairs(particles, domain);
-    restore(oneWayPairs, oneWayHistory);
+    oneWayHistory.assign(oneWayPairs.size());
+    restorePairs(oneWayPairs, 0, oneWayHistory, particles, carried);
     wallPairs.clear();
     for (std::uint32_t w = 0; w < walls.size(); ++w)
-        for (std::uint32_t i = 0; i < owned; ++i) {
-            if (particles.fixed[i]) continue;
-            if (walls[w].motion < 0 && walls[w].signedDistance(particles.position[i]) >= particles.radius[i] + reach)
-                continue;
-            wallPairs.push_back({i, w});
-        }
+        for (std::uint32_t i = 0; i < owned; ++i)
+            if (isWallCandidate(particles, walls[w], i, particles.position[i], reach)) wallPairs.push_back({i, w});
     wallHistory.assign(wallPairs.size());
-    for (std::size_t k = 0; k < wallPairs.size(); ++k)
-        if (const CarriedHistory* c = find(particles.id[wallPairs[k].particle], CarriedHistory::wallKey(wallPairs[k].wall)))
-            wallHistory.set(k, c->history);
+    restoreWallPairs(wallPairs, 0, wallHistory, particles, carried);
+    noted_.clear();
 
     referencePosition = particles.position;
     valid = true;
@@ -208,6 +237,38 @@ std::size_t PairList::putInteriorPairsFirst(const ParticleStore& particles, cons
     return kept;
 }
 
+namespace {
+
+// The listing rule of the one-way pairs (PairList::oneWayPairs) at positions x: i, a mobile
+// member of the box within `cut` of its upstream face, and j, a member within `cut` of its
+// downstream face, whose distance through the image (xj - length along x) is within the reach.
+struct OneWayRule {
+    const ParticleStore& particles;
+    const OneWayPeriodicBox& box;
+    PeriodicImage image;
+    double reach, largest = 0, cut = 0;
+
+    OneWayRule(const ParticleStore& p, const Domain& domain, double listReach)
+        : particles(p), box(domain.oneWay), image(domain), reach(listReach) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (box.isMember(p.species[i])) largest = std::max(largest, p.radius[i]);
+        cut = 2 * largest + reach;
+    }
+    bool upstream(std::uint32_t i, const Vec3& x) const {
+        return box.isMember(particles.species[i]) && !particles.fixed[i] && x.x() - box.lo < cut;
+    }
+    bool downstream(std::uint32_t i, const Vec3& x) const {
+        return box.isMember(particles.species[i]) && box.hi - x.x() < cut;
+    }
+    bool withinReach(std::uint32_t i, std::uint32_t j, const Vec3& xi, const Vec3& xj) const {
+        Vec3 d = xi - xj;
+        d.x() += box.length();
+        return withinListReach(image.nearest(d), particles.radius[i], particles.radius[j], reach);
+    }
+};
+
+}  // namespace
+
 // The box's particles within reach of each face, then every upstream-downstream pair whose image
 // distance is within reach: the strips hold a few hundred particles, so pairing them directly
 // costs less than a grid.
@@ -215,41 +276,142 @@ void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& dom
     oneWayPairs.clear();
     const OneWayPeriodicBox& box = domain.oneWay;
     if (!box.active) return;
-    double largest = 0;
-    for (std::size_t i = 0; i < particles.size(); ++i)
-        if (box.isMember(particles.species[i])) largest = std::max(largest, particles.radius[i]);
-    const double cut = 2 * largest + reach;
+    const OneWayRule rule(particles, domain, reach);
     // Two listings of one pair (directly and through the image) would count its force twice.
-    if (box.length() < 2 * cut) {
+    if (box.length() < 2 * rule.cut) {
         std::ostringstream m;
-        m << "maser box of length " << box.length() << " is too short for particles of diameter " << 2 * largest
-          << " and list reach " << reach << ": it must be at least " << 2 * cut
+        m << "maser box of length " << box.length() << " is too short for particles of diameter " << 2 * rule.largest
+          << " and list reach " << reach << ": it must be at least " << 2 * rule.cut
           << " long (twice the largest diameter plus the reach)";
         throw Error(m.str());
     }
     // With ghosts (an MPI split) a pair is listed where either particle is owned: i's rank
     // applies the force on i, j's rank the reaction on j past the reaction overlap.
     const std::size_t owned = particles.owned();
+    const std::vector<Vec3>& x = particles.position;
     std::vector<std::uint32_t> upstream, downstream;
     for (std::uint32_t i = 0; i < particles.size(); ++i) {
-        if (!box.isMember(particles.species[i])) continue;
-        const double x = particles.position[i].x();
-        if (!particles.fixed[i] && x - box.lo < cut) upstream.push_back(i);
-        if (box.hi - x < cut) downstream.push_back(i);
+        if (rule.upstream(i, x[i])) upstream.push_back(i);
+        if (rule.downstream(i, x[i])) downstream.push_back(i);
     }
-    const PeriodicImage image(domain);
     for (std::uint32_t i : upstream)
-        for (std::uint32_t j : downstream) {
-            if (i >= owned && j >= owned) continue;
-            Vec3 d = particles.position[i] - particles.position[j];
-            d.x() += box.length();
-            d = image.nearest(d);
-            const double limit = particles.radius[i] + particles.radius[j] + reach;
-            if (d.squaredNorm() < limit * limit) oneWayPairs.push_back({i, j});
+        for (std::uint32_t j : downstream)
+            if ((i < owned || j < owned) && rule.withinReach(i, j, x[i], x[j])) oneWayPairs.push_back({i, j});
+}
+
+void PairList::noteAdded(std::uint32_t slot) {
+    if (valid) noted_.push_back(slot);
+}
+
+void PairList::noteJumped(std::uint32_t slot, const Vec3& jump) {
+    if (!valid) return;
+    if (slot < referencePosition.size()) referencePosition[slot] += jump;  // its displacement since the build stays
+    noted_.push_back(slot);
+}
+
+namespace {
+
+// Drops the entries for which `drop` holds, keeping the order of the rest; returns how many of
+// the first `prefix` entries were dropped.
+template <class Entry, class Drop>
+std::size_t dropEntries(std::vector<Entry>& list, ContactHistories& histories, Drop drop, std::size_t prefix = 0) {
+    std::size_t kept = 0, droppedInPrefix = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        if (drop(list[k])) {
+            droppedInPrefix += k < prefix;
+            continue;
         }
+        if (kept != k) {
+            list[kept] = list[k];
+            histories.set(kept, histories.get(k));
+        }
+        ++kept;
+    }
+    list.resize(kept);
+    histories.resize(kept);
+    return droppedInPrefix;
+}
+
+}  // namespace
+
+// A build costs a grid search over all particles (and a sort for the reordering); a few particles
+// added or moved need only their own pairs. Those are found by a pass over all particles for
+// each: O(N) where the build is O(N log N) with a larger constant, and no particle changes slot.
+void PairList::relist(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls) {
+    if (noted_.empty()) return;
+    std::vector<std::uint32_t> noted;
+    noted.swap(noted_);
+    if (!valid) return;
+    std::sort(noted.begin(), noted.end());
+    noted.erase(std::unique(noted.begin(), noted.end()), noted.end());
+    const std::size_t n = particles.size(), built = referencePosition.size();
+    // Every slot past the build's must be a noted new particle (a store changed behind the list's
+    // back cannot be relisted).
+    const std::size_t newSlots = n - std::min(n, built);
+    const std::size_t notedNew =
+        static_cast<std::size_t>(noted.end() - std::lower_bound(noted.begin(), noted.end(), built));
+    if (particles.ghostCount > 0 || orientById || noted.size() > maxRelisted || built > n || notedNew != newSlots ||
+        (!noted.empty() && noted.back() >= n)) {
+        valid = false;
+        return;
+    }
+    referencePosition.resize(n);
+    for (std::size_t k = built; k < n; ++k) referencePosition[k] = particles.position[k];
+    std::vector<unsigned char> isNoted(n, 0);
+    for (std::uint32_t slot : noted) isNoted[slot] = 1;
+    auto involves = [&isNoted](const ParticlePair& pair) { return isNoted[pair.i] || isNoted[pair.j]; };
+
+    // 1. The noted particles' entries go, their histories kept by ids.
+    std::vector<CarriedHistory> carried;
+    carryPairs(pairs, history, particles, involves, carried);
+    carryPairs(oneWayPairs, oneWayHistory, particles, involves, carried);
+    auto wallInvolves = [&isNoted](const WallCandidate& c) { return bool(isNoted[c.particle]); };
+    carryWallPairs(wallPairs, wallHistory, particles, wallInvolves, carried);
+    std::sort(carried.begin(), carried.end());
+    interiorPairs -= dropEntries(pairs, history, involves, interiorPairs);
+    dropEntries(oneWayPairs, oneWayHistory, involves);
+    dropEntries(wallPairs, wallHistory, wallInvolves);
+
+    // 2. Their entries by the build's rules at the reference positions, appended (pairs after
+    // the interior ones: they are swept with the periodic image). A pair of two noted particles
+    // is looked at once, from the smaller slot.
+    const std::vector<Vec3>& x = referencePosition;
+    const PeriodicImage image(domain);
+    const std::size_t firstPair = pairs.size(), firstOneWay = oneWayPairs.size(), firstWall = wallPairs.size();
+    const bool oneWay = domain.oneWay.active;
+    const OneWayRule rule(particles, domain, reach);
+    if (oneWay && domain.oneWay.length() < 2 * rule.cut) {  // the build names the error
+        valid = false;
+        return;
+    }
+    for (std::uint32_t a : noted) {
+        const Vec3 xa = x[a];
+        const double ra = particles.radius[a];
+        const bool fixedA = particles.fixed[a];
+        for (std::uint32_t k = 0; k < n; ++k) {
+            if (k == a || (isNoted[k] && k < a)) continue;
+            if (!(fixedA && particles.fixed[k]) && withinListReach(image.nearest(xa - x[k]), ra, particles.radius[k], reach))
+                pairs.push_back({a, k});
+            if (!oneWay) continue;
+            if (rule.upstream(a, xa) && rule.downstream(k, x[k]) && rule.withinReach(a, k, xa, x[k]))
+                oneWayPairs.push_back({a, k});
+            if (rule.upstream(k, x[k]) && rule.downstream(a, xa) && rule.withinReach(k, a, x[k], xa))
+                oneWayPairs.push_back({k, a});
+        }
+        for (std::uint32_t w = 0; w < walls.size(); ++w)
+            if (isWallCandidate(particles, walls[w], a, xa, reach)) wallPairs.push_back({a, w});
+    }
+    history.resize(pairs.size());
+    oneWayHistory.resize(oneWayPairs.size());
+    wallHistory.resize(wallPairs.size());
+    restorePairs(pairs, firstPair, history, particles, carried);
+    restorePairs(oneWayPairs, firstOneWay, oneWayHistory, particles, carried);
+    restoreWallPairs(wallPairs, firstWall, wallHistory, particles, carried);
+    relistedParticles += noted.size();
 }
 
 void PairList::clear() {
+    noted_.clear();
     pairs.clear();
     interiorPairs = 0;
     history.assign(0);
@@ -315,3 +477,4 @@ void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
 }
 
 }  // namespace talus
+

@@ -85,6 +85,22 @@ public:
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt, std::vector<CarriedHistory> carried);
 
+    // Particles added (in new slots at the end) or moved by a jump (a maser's wrap, which moves
+    // their reference positions along) since the last build: relist() lists their pairs, and the
+    // rest of the list stays, instead of a whole rebuild. Without a valid list there is nothing
+    // to note (the rebuild will list them).
+    void noteAdded(std::uint32_t slot);
+    void noteJumped(std::uint32_t slot, const Vec3& jump);
+    // Lists the pairs, one-way pairs and wall candidates of the noted particles by the rule of a
+    // build, applied to the reference positions (a new particle's is where it is now), and carries
+    // their histories over by ids. The list then holds every pair that can touch before the next
+    // build, as a build would. It searches all particles for each noted one, so beyond
+    // maxRelisted noted particles (or with ghosts, or with pairs oriented by ids) it forces a
+    // rebuild instead.
+    void relist(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls);
+    std::size_t maxRelisted = 64;  // 0: every change to the particles forces a rebuild (for tests)
+    std::uint64_t relistedParticles = 0;
+
     // The histories worth keeping (touching, approaching, or with a spring or warm start), by ids,
     // sorted. firstOwned: only of the pairs whose first particle is owned (not a ghost), so that
     // ranks together give each pair once.
@@ -111,6 +127,8 @@ public:
     }
 
 private:
+    std::vector<std::uint32_t> noted_;  // slots for relist()
+
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
     std::size_t putInteriorPairsFirst(const ParticleStore& particles, const Domain& domain);
 };
