@@ -159,7 +159,10 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     require(species < state_.species.size(), which + ": species " + std::to_string(species) +
                                                  " does not exist (add species before particles)");
     const double mass = state_.species[species].density * 4.0 / 3.0 * pi * radius * radius * radius;
-    if (p.ghostCount > 0) releaseGhosts();  // new particles go before the ghosts: drop them first
+    // New particles go before the ghosts: with a valid list they move the ghosts up a slot and
+    // have their pairs relisted (PairList::relist); otherwise the ghosts go until the next build.
+    const bool beforeGhosts = p.ghostCount > 0 && state_.pairList.valid;
+    if (p.ghostCount > 0 && !beforeGhosts) releaseGhosts();
     p.position.push_back(position);
     p.velocity.push_back(velocity);
     p.angularVelocity.push_back(angularVelocity);
@@ -185,11 +188,13 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
         p.principalInertia.push_back(Vec3::Zero());
         p.shape.push_back(-1);
     }
-    // The list relists the new particle's pairs at the next force computation (PairList::relist);
-    // on ranks, where a new particle may belong to another rank's ghosts, it is built anew.
-    if (onRanks()) state_.pairList.valid = false;
-    else state_.pairList.noteAdded(static_cast<std::uint32_t>(p.size() - 1));
-    return p.size() - 1;
+    const std::size_t slot = beforeGhosts ? p.moveLastBeforeGhosts() : p.size() - 1;
+    // The list relists the new particle's pairs at the next force computation (on ranks if no
+    // other rank needs it: Simulation::updateNeighbourhoodOnRanks).
+    // (p.position[slot], not `position`: that may be a reference into the array the push_back
+    // above moved, as the maser's copies are made.)
+    state_.pairList.noteInserted(static_cast<std::uint32_t>(slot), p.position[slot]);
+    return slot;
 }
 
 std::size_t Simulation::addShape(const Superquadric& shape) {
@@ -255,7 +260,9 @@ std::size_t Simulation::fixParticle(std::size_t i, int motion) {
 void Simulation::moveParticleBy(std::size_t slot, const Vec3& jump) {
     require(slot < state_.particles.owned(), "moveParticleBy: slot " + std::to_string(slot) + " does not exist");
     state_.particles.position[slot] += jump;
-    if (onRanks()) state_.pairList.valid = false;
+    // On ranks a particle that another rank holds as a ghost makes the list build anew (its
+    // ghost would jump there unseen by that rank's list).
+    if (onRanks() && split_->isSentAsGhost(static_cast<std::uint32_t>(slot))) state_.pairList.valid = false;
     else state_.pairList.noteJumped(static_cast<std::uint32_t>(slot), jump);
 }
 
@@ -392,8 +399,9 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
         out << name() << ": neighbour list built " << builds << " times, every "
                   << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0) << " steps on average";
-        if (const std::uint64_t relisted = state_.pairList.relistedParticles - relistedAtStart)
-            out << "; the pairs of " << relisted << " added or moved particles relisted";
+        const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
+        if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
+            out << "; the pairs of " << all << " added or moved particles relisted";
         out << std::endl;
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};

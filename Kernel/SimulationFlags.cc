@@ -26,6 +26,12 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
     cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
            [this](const std::string& v) { setCellSizeRatio(CommandLine::toDouble("cell-size-ratio", v)); });
+    cl.add("relist", "on|off",
+           "list only the pairs of particles that boundaries add or move (on), or build the whole neighbour "
+           "list anew (off)",
+           [this](const std::string& v) {
+               state_.pairList.maxRelisted = CommandLine::toBool("relist", v) ? PairList::defaultMaxRelisted : 0;
+           });
     cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
            [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",

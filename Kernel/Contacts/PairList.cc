@@ -299,8 +299,21 @@ void PairList::listOneWayPairs(const ParticleStore& particles, const Domain& dom
             if ((i < owned || j < owned) && rule.withinReach(i, j, x[i], x[j])) oneWayPairs.push_back({i, j});
 }
 
-void PairList::noteAdded(std::uint32_t slot) {
-    if (valid) noted_.push_back(slot);
+void PairList::noteInserted(std::uint32_t slot, const Vec3& position) {
+    if (!valid) return;
+    if (slot > referencePosition.size()) {  // not the slot after the owned particles
+        valid = false;
+        return;
+    }
+    if (slot < referencePosition.size()) {  // before the ghosts: they move up a slot
+        auto follow = [slot](std::uint32_t& s) { s += s >= slot; };
+        for (ParticlePair& pair : pairs) follow(pair.i), follow(pair.j);
+        for (ParticlePair& pair : oneWayPairs) follow(pair.i), follow(pair.j);
+        for (WallCandidate& candidate : wallPairs) follow(candidate.particle);
+        for (std::uint32_t& noted : noted_) follow(noted);
+    }
+    referencePosition.insert(referencePosition.begin() + slot, position);
+    noted_.push_back(slot);
 }
 
 void PairList::noteJumped(std::uint32_t slot, const Vec3& jump) {
@@ -344,19 +357,30 @@ void PairList::relist(const ParticleStore& particles, const Domain& domain, cons
     if (!valid) return;
     std::sort(noted.begin(), noted.end());
     noted.erase(std::unique(noted.begin(), noted.end()), noted.end());
-    const std::size_t n = particles.size(), built = referencePosition.size();
-    // Every slot past the build's must be a noted new particle (a store changed behind the list's
-    // back cannot be relisted).
-    const std::size_t newSlots = n - std::min(n, built);
-    const std::size_t notedNew =
-        static_cast<std::size_t>(noted.end() - std::lower_bound(noted.begin(), noted.end(), built));
-    if (particles.ghostCount > 0 || orientById || noted.size() > maxRelisted || built > n || notedNew != newSlots ||
-        (!noted.empty() && noted.back() >= n)) {
+    const std::size_t n = particles.size(), owned = particles.owned();
+    // A store changed behind the list's back, or a noted particle that is another rank's
+    // partner (a ghost within its reach: that rank does not know it), cannot be relisted.
+    const std::vector<Vec3>& x = referencePosition;
+    const PeriodicImage image(domain);
+    const bool oneWay = domain.oneWay.active;
+    const OneWayRule rule(particles, domain, reach);
+    auto pairsWithAGhost = [&](std::uint32_t a) {
+        for (std::size_t k = owned; k < n; ++k) {
+            const auto g = static_cast<std::uint32_t>(k);
+            if (withinListReach(image.nearest(x[a] - x[g]), particles.radius[a], particles.radius[g], reach)) return true;
+            if (oneWay && ((rule.upstream(a, x[a]) && rule.downstream(g, x[g]) && rule.withinReach(a, g, x[a], x[g])) ||
+                           (rule.upstream(g, x[g]) && rule.downstream(a, x[a]) && rule.withinReach(g, a, x[g], x[a]))))
+                return true;
+        }
+        return false;
+    };
+    bool relistable = !orientById && noted.size() <= maxRelisted && x.size() == n && noted.back() < owned &&
+                      (!oneWay || domain.oneWay.length() >= 2 * rule.cut);  // (else the build names the error)
+    for (std::size_t k = 0; k < noted.size() && relistable && owned < n; ++k) relistable = !pairsWithAGhost(noted[k]);
+    if (!relistable) {
         valid = false;
         return;
     }
-    referencePosition.resize(n);
-    for (std::size_t k = built; k < n; ++k) referencePosition[k] = particles.position[k];
     std::vector<unsigned char> isNoted(n, 0);
     for (std::uint32_t slot : noted) isNoted[slot] = 1;
     auto involves = [&isNoted](const ParticlePair& pair) { return isNoted[pair.i] || isNoted[pair.j]; };
@@ -375,20 +399,12 @@ void PairList::relist(const ParticleStore& particles, const Domain& domain, cons
     // 2. Their entries by the build's rules at the reference positions, appended (pairs after
     // the interior ones: they are swept with the periodic image). A pair of two noted particles
     // is looked at once, from the smaller slot.
-    const std::vector<Vec3>& x = referencePosition;
-    const PeriodicImage image(domain);
     const std::size_t firstPair = pairs.size(), firstOneWay = oneWayPairs.size(), firstWall = wallPairs.size();
-    const bool oneWay = domain.oneWay.active;
-    const OneWayRule rule(particles, domain, reach);
-    if (oneWay && domain.oneWay.length() < 2 * rule.cut) {  // the build names the error
-        valid = false;
-        return;
-    }
     for (std::uint32_t a : noted) {
         const Vec3 xa = x[a];
         const double ra = particles.radius[a];
         const bool fixedA = particles.fixed[a];
-        for (std::uint32_t k = 0; k < n; ++k) {
+        for (std::uint32_t k = 0; k < owned; ++k) {  // (no ghost within reach: checked above)
             if (k == a || (isNoted[k] && k < a)) continue;
             if (!(fixedA && particles.fixed[k]) && withinListReach(image.nearest(xa - x[k]), ra, particles.radius[k], reach))
                 pairs.push_back({a, k});

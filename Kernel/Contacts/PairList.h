@@ -85,20 +85,24 @@ public:
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt, std::vector<CarriedHistory> carried);
 
-    // Particles added (in new slots at the end) or moved by a jump (a maser's wrap, which moves
-    // their reference positions along) since the last build: relist() lists their pairs, and the
-    // rest of the list stays, instead of a whole rebuild. Without a valid list there is nothing
-    // to note (the rebuild will list them).
-    void noteAdded(std::uint32_t slot);
+    // Particles added (in the slot after the owned particles, at the given position, which
+    // becomes their reference) or moved by a jump (a maser's wrap, which moves their reference
+    // position along) since the last build: relist() lists their pairs, and the rest of the list
+    // stays, instead of a whole rebuild. Without a valid list there is nothing to note (the
+    // rebuild will list them). An insertion before ghosts moves their slots up by one in the list.
+    void noteInserted(std::uint32_t slot, const Vec3& position);
     void noteJumped(std::uint32_t slot, const Vec3& jump);
+    const std::vector<std::uint32_t>& noted() const { return noted_; }
     // Lists the pairs, one-way pairs and wall candidates of the noted particles by the rule of a
     // build, applied to the reference positions (a new particle's is where it is now), and carries
     // their histories over by ids. The list then holds every pair that can touch before the next
     // build, as a build would. It searches all particles for each noted one, so beyond
-    // maxRelisted noted particles (or with ghosts, or with pairs oriented by ids) it forces a
-    // rebuild instead.
+    // maxRelisted noted particles, for a noted particle within reach of a ghost (on ranks, the
+    // caller also checks that no other rank needs it as a ghost), or with pairs oriented by ids
+    // it forces a rebuild instead.
     void relist(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls);
-    std::size_t maxRelisted = 64;  // 0: every change to the particles forces a rebuild (for tests)
+    static constexpr std::size_t defaultMaxRelisted = 64;
+    std::size_t maxRelisted = defaultMaxRelisted;  // 0: every change to the particles forces a rebuild (--relist off)
     std::uint64_t relistedParticles = 0;
 
     // The histories worth keeping (touching, approaching, or with a spring or warm start), by ids,

@@ -181,12 +181,11 @@ void DomainSplit::migrate(ParticleStore& p, std::vector<CarriedHistory>& carried
                   carried.end());
 }
 
-void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double width) {
-    const Stopwatch watch(seconds.rebuild);
-    require(p.ghostCount == 0, "makeGhosts: the store holds ghosts already");
-    const int me = rank(), n = ranks();
+template <class F>
+void DomainSplit::forEachOtherRankNear(const Vec3& x, std::uint32_t species, const Domain& domain, double width,
+                                       F&& f) const {
+    const int me = rank();
     const OneWayPeriodicBox& box = domain.oneWay;
-    sendSlots_.assign(n, {});
     // The cells along an axis that meet [from, to], each once.
     auto addCellsMeeting = [&](int a, double from, double to, std::vector<int>& cells) {
         for (int c = cellAlong(a, from); c <= cellAlong(a, to); ++c)
@@ -208,27 +207,46 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
     };
     // The ranks meeting the cube [x - width, x + width]^3 (and its images) are the products of
     // the cells meeting each of its sides.
-    std::array<std::vector<int>, 3> cells;
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-        const Vec3& x = p.position[i];
-        for (int a = 0; a < 3; ++a) {
-            cells[a].clear();
-            if (grid_[a] == 1)
-                cells[a].push_back(0);
-            else
-                cellsNear(a, x[a], cells[a]);
-        }
-        // A particle of an active maser box near one of its faces pairs with those near the other
-        // face through the box's image (PairList::oneWayPairs): its ghosts go there too.
-        if (box.active && box.isMember(p.species[i]) && grid_[0] > 1) {
-            if (box.hi - x.x() < width) addCellsMeeting(0, x.x() - box.length() - width, x.x() - box.length() + width, cells[0]);
-            if (x.x() - box.lo < width) addCellsMeeting(0, x.x() + box.length() - width, x.x() + box.length() + width, cells[0]);
-        }
-        for (int cz : cells[2])
-            for (int cy : cells[1])
-                for (int cx : cells[0])
-                    if (const int r = rankAt(cx, cy, cz); r != me) sendSlots_[r].push_back(i);
+    thread_local std::array<std::vector<int>, 3> cells;  // (kept: no allocation per particle)
+    for (int a = 0; a < 3; ++a) {
+        cells[a].clear();
+        if (grid_[a] == 1)
+            cells[a].push_back(0);
+        else
+            cellsNear(a, x[a], cells[a]);
     }
+    // A particle of an active maser box near one of its faces pairs with those near the other
+    // face through the box's image (PairList::oneWayPairs): its ghosts go there too.
+    if (box.active && box.isMember(species) && grid_[0] > 1) {
+        if (box.hi - x.x() < width) addCellsMeeting(0, x.x() - box.length() - width, x.x() - box.length() + width, cells[0]);
+        if (x.x() - box.lo < width) addCellsMeeting(0, x.x() + box.length() - width, x.x() + box.length() + width, cells[0]);
+    }
+    for (int cz : cells[2])
+        for (int cy : cells[1])
+            for (int cx : cells[0])
+                if (const int r = rankAt(cx, cy, cz); r != me) f(r);
+}
+
+bool DomainSplit::nobodyElseNeeds(const Vec3& x, std::uint32_t species, const Domain& domain) const {
+    bool needed = false;
+    forEachOtherRankNear(x, species, domain, ghostWidth_, [&needed](int) { needed = true; });
+    return !needed && ownerOf(x) == rank();
+}
+
+bool DomainSplit::isSentAsGhost(std::uint32_t slot) const {
+    for (const std::vector<std::uint32_t>& slots : sendSlots_)
+        if (std::find(slots.begin(), slots.end(), slot) != slots.end()) return true;
+    return false;
+}
+
+void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double width) {
+    const Stopwatch watch(seconds.rebuild);
+    require(p.ghostCount == 0, "makeGhosts: the store holds ghosts already");
+    const int n = ranks();
+    sendSlots_.assign(n, {});
+    ghostWidth_ = width;
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+        forEachOtherRankNear(p.position[i], p.species[i], domain, width, [&](int r) { sendSlots_[r].push_back(i); });
     std::vector<Bytes> outgoing(n);
     for (int r = 0; r < n; ++r) {
         Packer out(outgoing[r]);

@@ -69,6 +69,11 @@ public:
     // Each step: the ghosts get their owners' positions, velocities, spins, last forces and
     // orientations.
     void updateGhosts(ParticleStore& particles);
+    // Whether a particle of this species at x, owned here, is one that no other rank needs as a
+    // ghost by the width of the last makeGhosts (the neighbour list's relisting on ranks), and
+    // whether the owned particle in a slot is sent to another rank as a ghost.
+    bool nobodyElseNeeds(const Vec3& x, std::uint32_t species, const Domain& domain) const;
+    bool isSentAsGhost(std::uint32_t slot) const;
 
     // Output: the owned particles of every rank on rank 0, in rank order (empty elsewhere).
     ParticleStore gatherParticles(const ParticleStore& particles);
@@ -113,6 +118,12 @@ private:
     // Ghost exchange of the current list: slots sent to each partner, ghosts received from each.
     std::vector<int> sendTo_, receiveFrom_;
     std::vector<std::vector<std::uint32_t>> sendSlots_;
+    double ghostWidth_ = 0;  // of the last makeGhosts
+    // Calls f(r) for every rank r other than this one whose cell lies within width of x (through
+    // the periodic images, and through an active maser box's image for its members): those that
+    // hold a particle at x as a ghost.
+    template <class F>
+    void forEachOtherRankNear(const Vec3& x, std::uint32_t species, const Domain& domain, double width, F&& f) const;
     std::vector<std::size_t> receiveCount_;
     std::vector<Bytes> outgoing_, incoming_;
 };

@@ -49,6 +49,13 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     overlapsToAgree_.clear();
     bool rebuild = false;
     try {
+        // Particles that boundaries added or moved have their pairs relisted if no other rank
+        // needs them as ghosts (PairList::relist); else the list is built anew, on every rank.
+        for (std::uint32_t slot : list.noted())
+            if (slot < list.referencePosition.size() &&
+                !split_->nobodyElseNeeds(list.referencePosition[slot], p.species[slot], state_.domain))
+                list.valid = false;
+        list.relist(p, state_.domain, state_.walls);
         rebuild = list.needsRebuild(p, state_.domain, state_.time, dt);
     } catch (const Error& e) {
         if (failure.empty()) failure = e.what();

@@ -1,5 +1,7 @@
 #include "Particles/ParticleStore.h"
 
+#include <algorithm>
+
 #include <utility>
 
 #include "Error.h"
@@ -28,6 +30,12 @@ void ParticleStore::dropGhosts() {
     const std::size_t n = owned();
     forEachArray([n](auto& array) { array.resize(n); });
     ghostCount = 0;
+}
+
+std::size_t ParticleStore::moveLastBeforeGhosts() {
+    const std::size_t slot = size() - 1 - ghostCount;
+    forEachArray([slot](auto& array) { std::rotate(array.begin() + static_cast<std::ptrdiff_t>(slot), array.end() - 1, array.end()); });
+    return slot;
 }
 
 void ParticleStore::enableShapes() {

@@ -62,6 +62,9 @@ struct ParticleStore {
 
     // Drops the ghosts (the last ghostCount slots).
     void dropGhosts();
+    // The particle just appended (after the ghosts) becomes the last owned one: the ghosts move
+    // up a slot. Returns its slot.
+    std::size_t moveLastBeforeGhosts();
 
     // Removes slot i by moving the last particle into it (O(1); changes that particle's slot).
     // Not while there are ghosts (they stay last).
