@@ -58,7 +58,7 @@ public:
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
     double reach = 0;  // skin + 2 vmax dt at the last build
-    bool valid = false;  // false forces a rebuild (particles added, removed or reordered)
+    bool valid = false;  // false forces a rebuild (particles removed or reordered; added ones are relisted)
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
@@ -94,7 +94,7 @@ public:
     void noteJumped(std::uint32_t slot, const Vec3& jump);
     const std::vector<std::uint32_t>& noted() const { return noted_; }
     // Lists the pairs, one-way pairs and wall candidates of the noted particles by the rule of a
-    // build, applied to the reference positions (a new particle's is where it is now), and carries
+    // build, applied to the reference positions (a new particle's is where it was added), and carries
     // their histories over by ids. The list then holds every pair that can touch before the next
     // build, as a build would. It searches all particles for each noted one, so beyond
     // maxRelisted noted particles, for a noted particle within reach of a ghost (on ranks, the
