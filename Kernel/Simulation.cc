@@ -474,11 +474,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck
     // The forces of the last step become previousForce_ by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity.
     previousForce_.swap(p.force);
-    p.force.resize(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * state_.gravity);
-        p.torque[i].setZero();
-    }
+    startForcesWithGravity(p, state_.gravity);
     if (rebuild && onRanks())
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
     else if (rebuild)

@@ -6,8 +6,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
+#include "Math/EightParticleLanes.h"
 #include "Math/Vector.h"
 
 namespace talus {
@@ -52,13 +54,33 @@ struct Domain {
         for (int a = 0; a < 3; ++a)
             if (periodic[a]) wrapCoordinate(x[a], lo[a], hi[a], length(a));
     }
-    // The same for the first n of an array of positions, an axis at a time with the box read
-    // once (the compiler cannot keep lo and hi in registers across stores into a Vec3&).
+    // The same for the first n of an array of positions. With AVX-512, eight particles at a
+    // time are only compared with the box (Math/EightParticleLanes.h), and the few blocks with a
+    // particle outside wrapped one by one; otherwise an axis at a time with the box read once
+    // (the compiler cannot keep lo and hi in registers across stores into a Vec3&).
     void wrap(Vec3* x, std::size_t n) const {
+        std::size_t first = 0;
+#ifdef TALUS_AVX512_LANES
+        __m512d low[3], high[3];
+        const double inf = std::numeric_limits<double>::infinity();
+        lanes::perAxis(periodic[0] ? lo[0] : -inf, periodic[1] ? lo[1] : -inf, periodic[2] ? lo[2] : -inf, low);
+        lanes::perAxis(periodic[0] ? hi[0] : inf, periodic[1] ? hi[1] : inf, periodic[2] ? hi[2] : inf, high);
+        for (; first + 8 <= n; first += 8) {
+            const double* block = x[first].data();
+            __mmask8 outside = 0;
+            for (int c = 0; c < 3; ++c) {
+                const __m512d coordinates = _mm512_loadu_pd(block + 8 * c);
+                outside |= _mm512_cmp_pd_mask(coordinates, high[c], _CMP_GE_OQ) |
+                           _mm512_cmp_pd_mask(coordinates, low[c], _CMP_LT_OQ);
+            }
+            if (outside) [[unlikely]]
+                for (std::size_t i = first; i < first + 8; ++i) wrap(x[i]);
+        }
+#endif
         for (int a = 0; a < 3; ++a) {
             if (!periodic[a]) continue;
             const double l = lo[a], h = hi[a], L = length(a);
-            for (std::size_t i = 0; i < n; ++i) wrapCoordinate(x[i][a], l, h, L);
+            for (std::size_t i = first; i < n; ++i) wrapCoordinate(x[i][a], l, h, L);
         }
     }
     static void wrapCoordinate(double& c, double lo, double hi, double L) {
