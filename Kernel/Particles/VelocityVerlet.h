@@ -52,9 +52,9 @@ inline void advanceMobile(double* __restrict x, const double* __restrict rate, c
         // (Three statements, not a loop of three: GCC would vectorise that inner loop instead.)
         double* xi = x + 3 * i;
         const double* ri = rate + 3 * i;
-        xi[0] = unlessKept(xi[0], xi[0] + s * ri[0], keep);
-        xi[1] = unlessKept(xi[1], xi[1] + s * ri[1], keep);
-        xi[2] = unlessKept(xi[2], xi[2] + s * ri[2], keep);
+        xi[0] = unlessKept(xi[0], lanes::multiplyAdd(s, ri[0], xi[0]), keep);
+        xi[1] = unlessKept(xi[1], lanes::multiplyAdd(s, ri[1], xi[1]), keep);
+        xi[2] = unlessKept(xi[2], lanes::multiplyAdd(s, ri[2], xi[2]), keep);
     }
 }
 
@@ -86,12 +86,13 @@ inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const
         double* xi = x + 3 * i;
         double* vi = v + 3 * i;
         const double* fi = force + 3 * i;
-        const double v0 = unlessKept(vi[0], vi[0] + s * fi[0], keep), v1 = unlessKept(vi[1], vi[1] + s * fi[1], keep),
-                     v2 = unlessKept(vi[2], vi[2] + s * fi[2], keep);
+        const double v0 = unlessKept(vi[0], lanes::multiplyAdd(s, fi[0], vi[0]), keep),
+                     v1 = unlessKept(vi[1], lanes::multiplyAdd(s, fi[1], vi[1]), keep),
+                     v2 = unlessKept(vi[2], lanes::multiplyAdd(s, fi[2], vi[2]), keep);
         vi[0] = v0, vi[1] = v1, vi[2] = v2;
-        xi[0] = unlessKept(xi[0], xi[0] + dt * v0, keep);
-        xi[1] = unlessKept(xi[1], xi[1] + dt * v1, keep);
-        xi[2] = unlessKept(xi[2], xi[2] + dt * v2, keep);
+        xi[0] = unlessKept(xi[0], lanes::multiplyAdd(dt, v0, xi[0]), keep);
+        xi[1] = unlessKept(xi[1], lanes::multiplyAdd(dt, v1, xi[1]), keep);
+        xi[2] = unlessKept(xi[2], lanes::multiplyAdd(dt, v2, xi[2]), keep);
     }
 }
 }  // namespace detail
