@@ -1,5 +1,4 @@
-// The passes over the particles' coordinates (Particles/VelocityVerlet.h, Domain::wrap, the list
-// check's Contacts/LargestMoves.h): with
+// The passes over the particles' coordinates (Particles/VelocityVerlet.h, Domain::wrap): with
 // AVX-512 they take eight particles at a time in lanes (Math/EightParticleLanes.h) and the last
 // few one by one. Both must give the same results to the bit, whichever path a particle takes:
 // here each pass over all particles is compared with the same pass called for one particle at a
@@ -7,13 +6,10 @@
 // coordinates outside the periodic box. Without AVX-512 in the build both are the loop.
 #include <gtest/gtest.h>
 
-#include <bit>
-#include <cmath>
 #include <cstring>
 #include <random>
 
 #include "Boundaries/Domain.h"
-#include "Contacts/LargestMoves.h"
 #include "Particles/VelocityVerlet.h"
 
 using namespace talus;
@@ -113,46 +109,4 @@ TEST(VelocityVerlet, WrapInLanesEqualsTheParticleByParticleWrap) {
     }
     EXPECT_EQ(p.position[17].x(), -1);
     EXPECT_EQ(p.position[17].z(), 9);
-}
-
-// The list check's maxima over all particles against those of the particles one at a time.
-TEST(VelocityVerlet, ListCheckInLanesEqualsTheLoopToTheBit) {
-    Domain domain;
-    domain.lo = Vec3(-1.5, -1.5, -3);
-    domain.hi = Vec3(1.5, 1.5, 3);
-    domain.periodic = {true, false, true};
-    const PeriodicImage image(domain);
-    ParticleStore p = someParticles();
-    std::vector<Vec3> reference = someParticles().position;
-    for (Vec3& r : reference) r = -0.7 * r;  // differences up to 3.4: some nearest images differ
-    auto all = [&] { return largestMoves(p.position[0].data(), reference[0].data(), p.velocity[0].data(), count, image); };
-    auto oneByOne = [&] {
-        LargestMoves m{0, 0, true};
-        for (std::size_t i = 0; i < count; ++i) {
-            const LargestMoves one = largestMoves(p.position[i].data(), reference[i].data(), p.velocity[i].data(), 1, image);
-            m.displacement2 = std::max(m.displacement2, one.displacement2);
-            m.speed2 = std::max(m.speed2, one.speed2);
-            m.finite = m.finite && one.finite;
-        }
-        return m;
-    };
-    // Every particle in turn the only one that moved: its lane's sums against the loop's.
-    const ParticleStore moved = p;
-    for (std::size_t k = 0; k < count; ++k) {
-        p.position = reference;
-        p.velocity.assign(count, Vec3::Zero());
-        p.position[k] = moved.position[k];
-        p.velocity[k] = moved.velocity[k];
-        const LargestMoves a = all(), b = oneByOne();
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(a.displacement2), std::bit_cast<std::uint64_t>(b.displacement2)) << k;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(a.speed2), std::bit_cast<std::uint64_t>(b.speed2)) << k;
-        EXPECT_DOUBLE_EQ(a.speed2, p.velocity[k].squaredNorm()) << k;  // (summed in another order)
-        EXPECT_TRUE(a.finite);
-    }
-    p = moved;
-    p.position[12].y() = std::nan("");
-    EXPECT_FALSE(all().finite);
-    p.position[12].y() = 0;
-    p.velocity[44].z() = -INFINITY;
-    EXPECT_FALSE(all().finite);
 }

@@ -1,5 +1,5 @@
 // Eight particles at a time in AVX-512 lanes, for the passes over per-particle coordinates
-// (Particles/VelocityVerlet.h, Boundaries/Domain.h, Contacts/LargestMoves.h).
+// (Particles/VelocityVerlet.h, Boundaries/Domain.h).
 //
 // The coordinates are stored particle after particle (x y z, x y z, ...), so eight particles'
 // fill three vectors of eight lanes: lane l of vector c holds coordinate (8c + l) mod 3 of particle
@@ -15,10 +15,9 @@
 
 namespace talus::lanes {
 
-// The roundings that the lanes and the loops they stand in for share, written out: left to the
-// compiler, x + s r and a sum of squares are contracted to fused multiply-adds or not, and in
-// either order, depending on the code around them (one expression compiled two ways in two
-// places gave results one bit apart).
+// The rounding that the lanes and the loops they stand in for share, written out: left to the
+// compiler, x + s r is contracted to a fused multiply-add or not depending on the code around it
+// (a sum of squares compiled in two places gave results one bit apart).
 inline double multiplyAdd(double s, double r, double x) {
 #ifdef __FMA__
     return std::fma(s, r, x);
@@ -26,7 +25,6 @@ inline double multiplyAdd(double s, double r, double x) {
     return x + s * r;
 #endif
 }
-inline double sumOfSquares(double a, double b, double c) { return multiplyAdd(c, c, multiplyAdd(a, a, b * b)); }
 
 }  // namespace talus::lanes
 
@@ -50,19 +48,6 @@ inline void perAxis(double x, double y, double z, __m512d (&out)[3]) {
     out[0] = _mm512_set_pd(y, x, z, y, x, z, y, x);
     out[1] = _mm512_set_pd(x, z, y, x, z, y, x, z);
     out[2] = _mm512_set_pd(z, y, x, z, y, x, z, y);
-}
-
-// The block's 24 coordinates at `block` as three vectors of one axis each, lane b holding
-// particle b's: the layout the arithmetic of whole particles (norms, sums over the axes) needs.
-inline void loadByAxis(const double* block, __m512d (&axis)[3]) {
-    const __m512d a = _mm512_loadu_pd(block), b = _mm512_loadu_pd(block + 8), c = _mm512_loadu_pd(block + 16);
-    // Lane b of axis k is element 3b + k of the 24: of a (0-7), b (8-15), then c (16-23).
-    const __m512d x = _mm512_permutex2var_pd(a, _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0), b);
-    const __m512d y = _mm512_permutex2var_pd(a, _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1), b);
-    const __m512d z = _mm512_permutex2var_pd(a, _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2), b);
-    axis[0] = _mm512_permutex2var_pd(x, _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0), c);
-    axis[1] = _mm512_permutex2var_pd(y, _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0), c);
-    axis[2] = _mm512_permutex2var_pd(z, _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0), c);
 }
 
 // Which lanes of the three vectors belong to particles that move (fixed[b] == 0), from the
