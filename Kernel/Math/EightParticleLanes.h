@@ -50,17 +50,20 @@ inline void perAxis(double x, double y, double z, __m512d (&out)[3]) {
     out[2] = _mm512_set_pd(z, y, x, z, y, x, z, y);
 }
 
-// Which lanes of the three vectors belong to particles that move (fixed[b] == 0), from the
-// block's eight bytes of ParticleStore::fixed.
+// A block of eight particles for a pass that changes the mobile ones: which lanes of the three
+// vectors belong to particles that move (fixed[b] == 0, from the block's eight bytes of
+// ParticleStore::fixed), and the per-particle factor step * perParticle[b] spread over them.
 struct MobileLanes {
     __mmask8 of[3];
+    __m512d factor[3];
 
-    explicit MobileLanes(const std::uint8_t* fixed) {
+    MobileLanes(const std::uint8_t* fixed, double step, const double* perParticle) {
         const __m128i f = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(fixed));
         const unsigned mobile = ~static_cast<unsigned>(_mm_cmpneq_epi8_mask(f, _mm_setzero_si128())) & 0xffu;
         // Particle b's bit to lanes 3b, 3b + 1, 3b + 2 of the 24 (bits three apart, times 0b111).
         const unsigned lanes = _pdep_u32(mobile, 0x249249u) * 7u;
         for (int c = 0; c < 3; ++c) of[c] = static_cast<__mmask8>(lanes >> (8 * c));
+        spread(_mm512_mul_pd(_mm512_set1_pd(step), _mm512_loadu_pd(perParticle)), factor);
     }
     // x + s r in the mobile lanes of vector c (one rounding, as multiplyAdd), x in the others.
     __m512d advance(__m512d x, __m512d s, __m512d r, int c) const { return _mm512_mask3_fmadd_pd(s, r, x, of[c]); }

@@ -37,12 +37,10 @@ inline void advanceMobile(double* __restrict x, const double* __restrict rate, c
     std::size_t i = 0;
 #ifdef TALUS_AVX512_LANES
     for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i);
-        __m512d s[3];
-        lanes::spread(_mm512_mul_pd(_mm512_set1_pd(step), _mm512_loadu_pd(scale + i)), s);
+        const lanes::MobileLanes block(fixed + i, step, scale + i);
         for (int c = 0; c < 3; ++c) {
             double* xc = x + 3 * i + 8 * c;
-            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), s[c], _mm512_loadu_pd(rate + 3 * i + 8 * c), c));
+            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), block.factor[c], _mm512_loadu_pd(rate + 3 * i + 8 * c), c));
         }
     }
 #endif
@@ -67,14 +65,13 @@ inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const
     std::size_t i = 0;
 #ifdef TALUS_AVX512_LANES
     for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i);
-        __m512d s[3];
-        lanes::spread(_mm512_mul_pd(_mm512_set1_pd(step), _mm512_loadu_pd(invMass + i)), s);
+        const lanes::MobileLanes block(fixed + i, step, invMass + i);
         const __m512d drift = _mm512_set1_pd(dt);
         for (int c = 0; c < 3; ++c) {
             double* vc = v + 3 * i + 8 * c;
             double* xc = x + 3 * i + 8 * c;
-            const __m512d kicked = block.advance(_mm512_loadu_pd(vc), s[c], _mm512_loadu_pd(force + 3 * i + 8 * c), c);
+            const __m512d kicked =
+                block.advance(_mm512_loadu_pd(vc), block.factor[c], _mm512_loadu_pd(force + 3 * i + 8 * c), c);
             _mm512_storeu_pd(vc, kicked);
             _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), drift, kicked, c));
         }
@@ -113,11 +110,9 @@ inline void startForcesWithGravity(ParticleStore& p, const Vec3& gravity) {
     __m512d g[3];
     lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
     for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i);
-        __m512d m[3];
-        lanes::spread(_mm512_loadu_pd(mass + i), m);
+        const lanes::MobileLanes block(fixed + i, 1.0, mass + i);  // (1 m is m, exactly)
         for (int c = 0; c < 3; ++c) {
-            _mm512_storeu_pd(force + 3 * i + 8 * c, _mm512_maskz_mul_pd(block.of[c], m[c], g[c]));
+            _mm512_storeu_pd(force + 3 * i + 8 * c, _mm512_maskz_mul_pd(block.of[c], block.factor[c], g[c]));
             _mm512_storeu_pd(torque + 3 * i + 8 * c, _mm512_setzero_pd());
         }
     }
