@@ -141,6 +141,24 @@ TEST_P(HGridAgainstBruteForce, FindsExactlyThePairsOfTheDefinition) {
     }
 }
 
+// Cells kept in arrays or hashed: the same pairs in the same order (the order sets the order of
+// the force sums, so a run does not depend on which a level took).
+TEST_P(HGridAgainstBruteForce, DenseAndHashedCellsListTheSamePairsInTheSameOrder) {
+    const GridCase c = GetParam();
+    const Packing packing = randomPacking(2500, c.sizeRatio, c.periodic, 99 + static_cast<unsigned>(c.sizeRatio));
+    const double skin = c.skin * 0.5;
+    HGrid dense(c.cellSizeRatio), hashed(c.cellSizeRatio);
+    dense.denseCellsPerParticle = 1e9;
+    hashed.denseCellsPerParticle = 0;
+    std::vector<ParticlePair> fromDense, fromHashed;
+    dense.findPairs(packing.particles, packing.domain, skin, fromDense);
+    hashed.findPairs(packing.particles, packing.domain, skin, fromHashed);
+    EXPECT_GT(dense.denseLevelCount(), 0u);
+    EXPECT_EQ(hashed.denseLevelCount(), 0u);
+    ASSERT_FALSE(fromDense.empty());
+    EXPECT_TRUE(fromDense == fromHashed) << fromDense.size() << " pairs from arrays, " << fromHashed.size() << " hashed";
+}
+
 std::vector<GridCase> allGridCases() {
     std::vector<GridCase> cases;
     for (double sizeRatio : {1.0, 3.0, 20.0})
@@ -181,6 +199,10 @@ TEST(HGrid, WideMixtureIsCorrectWithFewLevels) {
     HGrid grid;
     const std::vector<Pair> found = gridPairs(packing, skin, grid);
     EXPECT_LE(grid.levelCount(), levelsNeeded(packing, skin, grid.cellSizeRatio()));
+    // The small spheres' levels are sparse (about 80 cells of the box per particle) and hashed,
+    // the large ones' dense: both kinds in one search.
+    EXPECT_GT(grid.denseLevelCount(), 0u);
+    EXPECT_LT(grid.denseLevelCount(), grid.levelCount());
     for (const Pair& q : found) {
         EXPECT_TRUE(withinReach(packing, q.first, q.second, skin)) << "(" << q.first << ", " << q.second << ") too far";
         EXPECT_FALSE(p.fixed[q.first] && p.fixed[q.second]) << "two fixed particles paired";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "Error.h"
@@ -68,40 +69,115 @@ std::size_t HGrid::bucketOf(std::uint32_t level, int cx, int cy, int cz) const {
     return static_cast<std::size_t>(h) & bucketMask_;
 }
 
+std::size_t HGrid::denseLevelCount() const {
+    return static_cast<std::size_t>(std::count_if(levels_.begin(), levels_.end(), [](const Level& l) { return l.dense; }));
+}
+
+void HGrid::placeDenseLevels(const std::vector<std::array<int, 3>>& cells) {
+    // The box of each level's cells: every cell along a periodic axis, the particles' span along
+    // an open one.
+    std::vector<std::array<int, 3>> lo(levels_.size(), {INT32_MAX, INT32_MAX, INT32_MAX});
+    std::vector<std::array<int, 3>> hi(levels_.size(), {INT32_MIN, INT32_MIN, INT32_MIN});
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        for (int a = 0; a < 3; ++a) {
+            lo[levelOf_[i]][a] = std::min(lo[levelOf_[i]][a], cells[i][a]);
+            hi[levelOf_[i]][a] = std::max(hi[levelOf_[i]][a], cells[i][a]);
+        }
+    std::size_t cellCount = 0;
+    for (std::size_t l = 0; l < levels_.size(); ++l) {
+        Level& level = levels_[l];
+        level.dense = false;
+        if (level.particles == 0) continue;
+        double boxCells = 1;  // in double: a particle far off must not overflow the product
+        for (int a = 0; a < 3; ++a) {
+            if (level.count[a] > 0) {
+                level.first[a] = 0;
+                level.extent[a] = level.count[a];
+            } else {
+                level.first[a] = lo[l][a];
+                level.extent[a] = static_cast<int>(std::min<std::int64_t>(
+                    std::int64_t{hi[l][a]} - lo[l][a] + 1, INT32_MAX));
+            }
+            boxCells *= level.extent[a];
+        }
+        if (denseCellsPerParticle <= 0 || boxCells > denseCellsPerParticle * static_cast<double>(level.particles) + 512)
+            continue;
+        level.dense = true;
+        level.cellBase = cellCount;
+        cellCount += static_cast<std::size_t>(boxCells);
+    }
+    cellStart_.assign(cellCount + 1, 0);
+}
+
+void HGrid::fillDenseCells(const std::vector<std::array<int, 3>>& cells) {
+    // Counting sort by cell, stable: within a cell the slots ascend.
+    const std::size_t n = cells.size();
+    std::vector<std::uint32_t> cell(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Level& level = levels_[levelOf_[i]];
+        if (!level.dense) continue;
+        cell[i] = static_cast<std::uint32_t>(denseCellOf(level, cells[i][0], cells[i][1], cells[i][2]));
+        ++cellStart_[cell[i] + 1];
+    }
+    for (std::size_t c = 0; c + 1 < cellStart_.size(); ++c) cellStart_[c + 1] += cellStart_[c];
+    cellEntries_.resize(cellStart_.back());
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        if (levels_[levelOf_[i]].dense) cellEntries_[fill[cell[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+void HGrid::fillBuckets(const std::vector<std::array<int, 3>>& cells) {
+    // Counting sort of the hashed levels' particles into hash buckets (2 to 4 buckets per
+    // particle), stable.
+    const std::size_t n = cells.size();
+    std::size_t hashed = 0;
+    for (const Level& level : levels_)
+        if (!level.dense) hashed += level.particles;
+    std::size_t buckets = 1;
+    while (buckets < 2 * hashed) buckets <<= 1;
+    bucketMask_ = buckets - 1;
+    bucketStart_.assign(buckets + 1, 0);
+    std::vector<std::uint32_t> bucket(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (levels_[levelOf_[i]].dense) continue;
+        bucket[i] = static_cast<std::uint32_t>(bucketOf(levelOf_[i], cells[i][0], cells[i][1], cells[i][2]));
+        ++bucketStart_[bucket[i] + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b) bucketStart_[b + 1] += bucketStart_[b];
+    entries_.resize(bucketStart_.back());
+    std::vector<std::uint32_t> fill(bucketStart_.begin(), bucketStart_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!levels_[levelOf_[i]].dense)
+            entries_[fill[bucket[i]]++] = {static_cast<std::uint32_t>(i), cells[i][0], cells[i][1], cells[i][2], levelOf_[i]};
+}
+
 void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, double skin,
                       std::vector<ParticlePair>& pairs) {
     const std::size_t n = particles.size();
     if (n == 0) return;
     buildLevels(particles, domain, skin);
-
-    // Counting sort of the particles into hash buckets (2 to 4 buckets per particle).
-    std::size_t buckets = 1;
-    while (buckets < 2 * n) buckets <<= 1;
-    bucketMask_ = buckets - 1;
-    bucketStart_.assign(buckets + 1, 0);
     std::vector<std::array<int, 3>> cells(n);
-    std::vector<std::uint32_t> bucket(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        cells[i] = cellOf(particles.position[i], levels_[levelOf_[i]], domain);
-        bucket[i] = static_cast<std::uint32_t>(bucketOf(levelOf_[i], cells[i][0], cells[i][1], cells[i][2]));
-        ++bucketStart_[bucket[i] + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b) bucketStart_[b + 1] += bucketStart_[b];
-    entries_.resize(n);
-    {
-        std::vector<std::uint32_t> fill(bucketStart_.begin(), bucketStart_.end() - 1);
-        for (std::size_t i = 0; i < n; ++i)
-            entries_[fill[bucket[i]]++] = {static_cast<std::uint32_t>(i), cells[i][0], cells[i][1], cells[i][2], levelOf_[i]};
-    }
+    for (std::size_t i = 0; i < n; ++i) cells[i] = cellOf(particles.position[i], levels_[levelOf_[i]], domain);
+    placeDenseLevels(cells);
+    fillDenseCells(cells);
+    fillBuckets(cells);
 
     const PeriodicImage image(domain);
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3& xi = particles.position[i];
-        const double di = 2 * particles.radius[i] + skin;
+        const double ri = particles.radius[i];
+        const double di = 2 * ri + skin;
         const bool fixedI = particles.fixed[i];
+        auto consider = [&](std::uint32_t j, bool ownLevel) {
+            if (ownLevel && j <= i) return;
+            if (fixedI && particles.fixed[j]) return;
+            if (withinListReach(image.nearest(xi - particles.position[j]), ri, particles.radius[j], skin))
+                pairs.push_back({static_cast<std::uint32_t>(i), j});
+        };
         for (std::uint32_t l = levelOf_[i]; l < levels_.size(); ++l) {
             const Level& level = levels_[l];
             if (level.particles == 0) continue;
+            const bool ownLevel = l == levelOf_[i];
             // A partner at this level has diameter <= level.size, so its centre is within
             // (di + level.size)/2 of xi along each axis: at most three cells per axis.
             const double reach = 0.5 * (di + level.size);
@@ -118,9 +194,26 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
                         if (std::find(range[a].begin(), range[a].begin() + rangeSize[a], wrapped) !=
                             range[a].begin() + rangeSize[a])
                             continue;
+                    } else if (level.dense && (c < level.first[a] || c >= level.first[a] + level.extent[a])) {
+                        continue;  // outside the box of cells: empty
                     }
                     range[a][rangeSize[a]++] = wrapped;
                 }
+            }
+            if (level.dense) {
+                // The cells along z of one (cx, cy) lie next to each other in cellStart_: each run
+                // of consecutive cz is one range of particles, in the order cell by cell.
+                for (int ix = 0; ix < rangeSize[0]; ++ix)
+                    for (int iy = 0; iy < rangeSize[1]; ++iy)
+                        for (int iz = 0; iz < rangeSize[2];) {
+                            int run = 1;
+                            while (iz + run < rangeSize[2] && range[2][iz + run] == range[2][iz] + run) ++run;
+                            const std::size_t c = denseCellOf(level, range[0][ix], range[1][iy], range[2][iz]);
+                            for (std::uint32_t e = cellStart_[c]; e < cellStart_[c + run]; ++e)
+                                consider(cellEntries_[e], ownLevel);
+                            iz += run;
+                        }
+                continue;
             }
             for (int ix = 0; ix < rangeSize[0]; ++ix)
                 for (int iy = 0; iy < rangeSize[1]; ++iy)
@@ -130,12 +223,7 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
                         for (std::uint32_t e = bucketStart_[b]; e < bucketStart_[b + 1]; ++e) {
                             const Entry& entry = entries_[e];
                             if (entry.level != l || entry.cx != cx || entry.cy != cy || entry.cz != cz) continue;
-                            const std::uint32_t j = entry.particle;
-                            if (l == levelOf_[i] && j <= i) continue;
-                            if (fixedI && particles.fixed[j]) continue;
-                            if (withinListReach(image.nearest(xi - particles.position[j]), particles.radius[i],
-                                                particles.radius[j], skin))
-                                pairs.push_back({static_cast<std::uint32_t>(i), j});
+                            consider(entry.particle, ownLevel);
                         }
                     }
         }

@@ -5,9 +5,13 @@
 // diameter D = 2r + skin; cell sizes grow by cellSizeRatio from level to level. A particle looks
 // for partners in its own level (only partners with a higher slot, so each pair is found once)
 // and in every coarser, non-empty level, in the at most 3x3x3 cells that can hold a partner.
-// Cells are hashed, so memory is O(N) whatever the extent of the packing, and the cells of
-// periodic axes wrap around. The cost per particle is bounded by the number of non-empty
-// levels, not by the size ratio: a 1:20 packing does not degrade to O(N^2).
+// The cells of periodic axes wrap around. A level whose particles' cells span a box of at most
+// denseCellsPerParticle cells per particle (a packing, a chute) keeps its cells in an array over
+// that box: a cell's particles are one range, the cells along z next to each other one range
+// too. A sparser level (a few particles spread wide, a particle flying off) hashes its cells, so
+// memory stays O(N) whatever the extent of the packing. Both give the same pairs in the same
+// order. The cost per particle is bounded by the number of non-empty levels, not by the size
+// ratio: a 1:20 packing does not degrade to O(N^2).
 #pragma once
 
 #include <cstdint>
@@ -40,6 +44,12 @@ public:
 
     std::size_t levelCount() const { return levels_.size(); }
     double cellSizeRatio() const { return cellSizeRatio_; }
+    // Levels that kept their cells in an array at the last findPairs (the rest hashed them).
+    std::size_t denseLevelCount() const;
+
+    // A level is kept dense while its box of cells has at most this many cells per particle of
+    // the level (plus a few hundred); 4 bytes a cell. 0 hashes every level.
+    double denseCellsPerParticle = 16;
 
 private:
     struct Level {
@@ -47,6 +57,12 @@ private:
         Vec3 cell;          // actual cell size per axis (stretched to divide periodic lengths)
         std::array<int, 3> count;  // cells along periodic axes; 0 along open axes
         std::size_t particles = 0;
+        // Dense levels: the box of cells [first, first + extent) that holds the level's
+        // particles, cell (cx, cy, cz) at cellBase + ((cx - first.x) extent.y + cy - first.y)
+        // extent.z + cz - first.z of cellStart_.
+        bool dense = false;
+        std::array<int, 3> first{}, extent{};
+        std::size_t cellBase = 0;
     };
     struct Entry {
         std::uint32_t particle;
@@ -61,8 +77,19 @@ private:
     double cellSizeRatio_;
     std::vector<Level> levels_;
     std::vector<std::uint32_t> levelOf_;   // per particle
-    std::vector<std::uint32_t> bucketStart_;  // size buckets + 1
-    std::vector<Entry> entries_;           // particles sorted by bucket
+    void placeDenseLevels(const std::vector<std::array<int, 3>>& cells);
+    void fillDenseCells(const std::vector<std::array<int, 3>>& cells);
+    void fillBuckets(const std::vector<std::array<int, 3>>& cells);
+    std::size_t denseCellOf(const Level& level, int cx, int cy, int cz) const {
+        return level.cellBase +
+               (static_cast<std::size_t>(cx - level.first[0]) * level.extent[1] + (cy - level.first[1])) * level.extent[2] +
+               (cz - level.first[2]);
+    }
+
+    std::vector<std::uint32_t> cellStart_;    // dense levels: size (their cells) + 1
+    std::vector<std::uint32_t> cellEntries_;  // dense levels' particles sorted by cell, then slot
+    std::vector<std::uint32_t> bucketStart_;  // hashed levels: size buckets + 1
+    std::vector<Entry> entries_;           // hashed levels' particles sorted by bucket, then slot
     std::size_t bucketMask_ = 0;
 };
 
