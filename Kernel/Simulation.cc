@@ -378,6 +378,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     std::size_t counted = state_.particles.size();
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
+    const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         const bool saving = (state_.step + 1) % every == 0 || k == steps;
         actionsBeforeTimeStep();
@@ -399,6 +400,9 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
         out << name() << ": neighbour list built " << builds << " times, every "
                   << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0) << " steps on average";
+        if (const std::uint64_t near = state_.pairList.near.makes - nearMakesAtStart; near > 0)
+            out << "; its near list (the pairs within " << state_.pairList.nearSkinFraction << " x the skin) made "
+                << near << " times, every " << static_cast<double>(steps) / static_cast<double>(near) << " steps";
         const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
         if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";

@@ -60,7 +60,9 @@ public:
           records_(records), shapes_(p.hasShapes() ? shapes : nullptr), perPair_(perPair),
           prefetchPartners_(p.size() >= prefetchFromParticles) {}
 
-    void particlePairs(PairList& list, const Domain& domain) {
+    // nearPairs: the near list may be swept (not with particles on prescribed motions, whose
+    // positions the step sets apart from their velocities).
+    void particlePairs(PairList& list, const Domain& domain, bool nearPairs) {
         const PeriodicImage image(domain);
         // Two passes per chunk of the list: a branch-free sweep over the listed pairs
         // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
@@ -71,25 +73,42 @@ public:
         // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
         // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
         // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
-        const double* sweepRadius = sweepRadii(list.sweepRadiusScratch);
+        const double growth = growRadiiByStep(p_, dt_, list.sweepRadiusScratch);
+        const double* sweepRadius = list.sweepRadiusScratch.data();
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
             chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), sweepRadius,
                             list.history.states(), image, swept);
-        const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
-        sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
-        sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
+        // The near list where it holds every pair the sweep can pick (PairSweep.h), else all pairs.
+        if (nearPairs && p_.ghostCount == 0 && useNearPairs(list, growth)) {
+            if (!list.near.made)
+                makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(), list.nearSkinFraction * list.skin,
+                              image, list.nearRadiusScratch, swept);
+            const NearPairs& near = list.near;
+            sweptContacts<false>(list, 0, near.interior, sweepRadius, image, swept, &near);
+            sweptContacts<true>(list, near.interior, near.index.size(), sweepRadius, image, swept, &near);
+        } else {
+            const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
+            sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
+            sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
+        }
         if constexpr (Law::batched) flush(list);
         if (shapes_) flushEllipsoids(list);
     }
 
-    // The listed pairs [from, to), a chunk at a time: the sweep, then the contacts it picked.
+    // The listed pairs [from, to) (or those of a near list), a chunk at a time: the sweep, then
+    // the contacts it picked.
     template <bool nearestImage>
     void sweptContacts(PairList& list, std::size_t from, std::size_t to, const double* sweepRadius,
-                       const PeriodicImage& image, SweptPairs& swept) {
+                       const PeriodicImage& image, SweptPairs& swept, const NearPairs* near = nullptr) {
         for (std::size_t begin = from; begin < to; begin += SweptPairs::capacity) {
-            sweepPairs<nearestImage>(list.pairs.data(), begin, std::min(to, begin + SweptPairs::capacity),
-                                     p_.position.data(), p_.size(), sweepRadius, list.history.states(), image, swept);
+            const std::size_t end = std::min(to, begin + SweptPairs::capacity);
+            if (near)
+                sweepNearPairs<nearestImage>(*near, begin, end, p_.position.data(), sweepRadius,
+                                             list.history.states(), image, swept);
+            else
+                sweepPairs<nearestImage>(list.pairs.data(), begin, end, p_.position.data(), p_.size(), sweepRadius,
+                                         list.history.states(), image, swept);
             for (std::size_t a = 0; a < swept.count; ++a) {
                 if (prefetchPartners_ && a + prefetchAhead < swept.count)
                     prefetchPartner(list.pairs[swept.pair[a + prefetchAhead]].j);
@@ -107,19 +126,6 @@ public:
         __builtin_prefetch(p_.velocity.data() + j);
         __builtin_prefetch(p_.angularVelocity.data() + j);
         __builtin_prefetch(previousForce_.data() + j);
-    }
-
-    // ri (1 + 1e-12) + 1.000001 |vi| dt for every particle, ghosts included (see particlePairs).
-    const double* sweepRadii(std::vector<double>& grown) const {
-        grown.resize(p_.size());
-        double* __restrict out = grown.data();  // (plain arrays: the loop vectorises)
-        const double* __restrict radius = p_.radius.data();
-        const double* __restrict v = p_.velocity.empty() ? nullptr : p_.velocity[0].data();
-        const double reachPerSpeed = 1.000001 * dt_;
-        for (std::size_t i = 0; i < grown.size(); ++i)
-            out[i] = radius[i] * (1 + 1e-12) +
-                     reachPerSpeed * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
-        return out;
     }
 
     // Pair k of the list, whose separation xi - xj (nearest image) is d.
@@ -592,7 +598,7 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>&
                       PairContribution* perPair = nullptr) {
     if (shapes && p.hasShapes()) placeShapedParticles(p, *shapes, list.shapedFrameScratch);
     ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair);
-    loop.particlePairs(list, domain);
+    loop.particlePairs(list, domain, motions.empty());
     loop.oneWayPairs(list, domain);
     loop.wallPairs(list, walls, motions);
 }

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -47,6 +48,19 @@ LargestMoves largestMoves(const double* __restrict x, const double* __restrict r
 }
 
 }  // namespace
+
+double PairList::defaultNearSkinFraction() {
+    static const double fraction = [] {
+        const char* text = std::getenv("TALUS_NEAR_SKIN_FRACTION");
+        if (!text) return 0.15;
+        char* end = nullptr;
+        const double f = std::strtod(text, &end);
+        require(end != text && *end == '\0' && f >= 0 && f < 1,
+                std::string("TALUS_NEAR_SKIN_FRACTION must be a number in [0, 1), got '") + text + "'");
+        return f;
+    }();
+    return fraction;
+}
 
 bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {
     const bool compare = valid && referencePosition.size() == particles.size();

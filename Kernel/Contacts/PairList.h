@@ -27,6 +27,23 @@ struct WallCandidate {
     bool operator==(const WallCandidate&) const = default;
 };
 
+// The force loop's near list (Contacts/PairSweep.h, makeNearPairs): the listed pairs closer
+// than ri + rj + skin, or with a contact pending, when it was made; the force loop sweeps these
+// instead of the whole list until some particle may have moved far enough to bring another
+// listed pair within its pick (moved, a bound on every particle's displacement since).
+struct NearPairs {
+    std::vector<std::uint32_t> index;  // into PairList::pairs, ascending
+    std::vector<ParticlePair> pairs;   // pairs[m] = PairList::pairs[index[m]] (read in sequence)
+    std::size_t interior = 0;          // index[0, interior) are interior pairs (PairList::interiorPairs)
+    double skin = 0;
+    double moved = 0;
+    bool made = false;
+    // The list it was made from: a build or a relisting changes the pairs and unmakes it.
+    std::uint64_t builds = 0, relisted = 0;
+    std::size_t listed = 0;
+    std::uint64_t makes = 0;  // times made (for the run's report)
+};
+
 // The history of one pair, keyed by the global ids (smaller first; a wall w is b = ~w, an id no
 // particle has); the spring is stored as seen from the smaller id. What a rebuild carries over,
 // and what an MPI split sends along with a particle that changes rank.
@@ -63,6 +80,14 @@ public:
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
     std::vector<double> sweepRadiusScratch;  // the force loop's radii grown by the step's reach (ContactForces.h)
+    // The near list of the force loop, made with nearSkinFraction x skin (0: the whole list is
+    // swept every step), and its scratch radii. 0.15 was the fastest of 0.06-0.4 on the
+    // benchmark chute (Documentation/Performance.md); the environment variable
+    // TALUS_NEAR_SKIN_FRACTION sets another (for measurements).
+    NearPairs near;
+    double nearSkinFraction = defaultNearSkinFraction();
+    static double defaultNearSkinFraction();
+    std::vector<double> nearRadiusScratch;
 
     // True when some particle will have moved more than skin/2 since the last build by the end of
     // the next step (nearest-image displacement, so wrapping through a periodic face is not a

@@ -20,12 +20,14 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define TALUS_AVX512_SWEEP 1
@@ -65,6 +67,24 @@ inline SweepForm& sweepForm() {
     static SweepForm form = SweepForm::scalar;
 #endif
     return form;
+}
+
+// The scalar rule for pair k of the list, `pair`: its separation into out at `picked`, which moves on if it is picked.
+template <bool nearestImage>
+[[gnu::always_inline]] inline void sweepPair(ParticlePair pair, std::size_t k, const Vec3* position,
+                                             const double* radius, const ContactHistory::State* states,
+                                             const PeriodicImage& image, SweptPairs& out, std::size_t& picked) {
+    Vec3 d = position[pair.i] - position[pair.j];
+    if constexpr (nearestImage) d = image.nearest(d);
+    const double limit = radius[pair.i] + radius[pair.j];
+#ifdef __FMA__
+    const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
+#else
+    const double r2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
+#endif
+    out.pair[picked] = static_cast<std::uint32_t>(k);
+    out.dx[picked] = d.x(), out.dy[picked] = d.y(), out.dz[picked] = d.z();
+    picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
 }
 
 // Pairs [begin, end) of the list, at most SweptPairs::capacity of them, in the given form
@@ -119,20 +139,102 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
     }
 #pragma GCC diagnostic pop
 #endif
-    for (; k < end; ++k) {
-        Vec3 d = position[pairs[k].i] - position[pairs[k].j];
-        if constexpr (nearestImage) d = image.nearest(d);
-        const double limit = radius[pairs[k].i] + radius[pairs[k].j];
-#ifdef __FMA__
-        const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
-#else
-        const double r2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
-#endif
-        out.pair[picked] = static_cast<std::uint32_t>(k);
-        out.dx[picked] = d.x(), out.dy[picked] = d.y(), out.dz[picked] = d.z();
-        picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
-    }
+    for (; k < end; ++k) sweepPair<nearestImage>(pairs[k], k, position, radius, states, image, out, picked);
     out.count = picked;
+}
+
+// The same rule for the pairs [begin, end) of a near list (NearPairs), at most
+// SweptPairs::capacity of them; out.pair holds the pairs' places in the whole list.
+template <bool nearestImage>
+inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t end, const Vec3* position,
+                           const double* radius, const ContactHistory::State* states, const PeriodicImage& image,
+                           SweptPairs& out) {
+    std::size_t picked = 0;
+    for (std::size_t m = begin; m < end; ++m)
+        sweepPair<nearestImage>(near.pairs[m], near.index[m], position, radius, states, image, out, picked);
+    out.count = picked;
+}
+
+// The radii the sweep tests, grown by how far each particle can move within the step:
+// ri (1 + 1e-12) + 1.000001 |vi| dt for every particle, ghosts included (the force loop explains
+// the margins). Returns the largest growth, 1.000001 |vi| dt + 1e-12 ri.
+inline double growRadiiByStep(const ParticleStore& p, double dt, std::vector<double>& grown) {
+    grown.resize(p.size());
+    double* __restrict out = grown.data();  // (plain arrays: the loops vectorise)
+    const double* __restrict radius = p.radius.data();
+    const double* __restrict v = p.velocity.empty() ? nullptr : p.velocity[0].data();
+    const double reachPerSpeed = 1.000001 * dt;
+    for (std::size_t i = 0; i < grown.size(); ++i)
+        out[i] = radius[i] * (1 + 1e-12) +
+                 reachPerSpeed * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+    // The largest of the non-negative growths as bit patterns (the order of the values, and
+    // vectorised where a floating-point maximum is not); a NaN wins.
+    std::uint64_t largest = 0;
+    for (std::size_t i = 0; i < grown.size(); ++i)
+        largest = std::max(largest, std::bit_cast<std::uint64_t>(std::max(out[i] - radius[i], 0.0)));
+    return std::bit_cast<double>(largest);
+}
+
+// Whether this step may sweep the near list (made now if it is not). Every particle moved by at
+// most its growth in the drift before this step (the drift used the velocity the growth is
+// made of), so `moved` adds the largest growth each step. A pair left out of the near list was
+// at least ri + rj + skin apart when the list was made and is now at least that less 2 moved;
+// the sweep picks it only within the sum of the two grown radii, at most ri + rj + 2 growth.
+// So the near list holds every pair the sweep would pick while moved + growth < skin / 2 (a
+// billionth less, for the rounding of the tests). A change of the list unmakes it; a near list
+// made now is usable if a step's growth is below skin / 2 (else the whole list is swept).
+inline bool useNearPairs(PairList& list, double growth) {
+    NearPairs& near = list.near;
+    const double skin = list.nearSkinFraction * list.skin;
+    if (!(skin > 0) || !(growth < 0.5 * skin * (1 - 1e-9))) {
+        near.made = false;
+        return false;
+    }
+    if (near.made && (near.builds != list.builds || near.relisted != list.relistedParticles ||
+                      near.listed != list.pairs.size() || near.skin != skin))
+        near.made = false;
+    if (near.made) {
+        near.moved += growth;
+        if (!(near.moved + growth < 0.5 * skin * (1 - 1e-9))) near.made = false;
+    }
+    return true;
+}
+
+// The near list (NearPairs): the pairs of `list` that the sweep's rule picks with every radius
+// grown by skin / 2 (closer than ri + rj + skin, or pending), in list order. Until a particle
+// may have moved so far that a pair left out could come within the pick of a step, sweeping it
+// picks exactly the pairs the whole list's sweep picks, in the same order (ContactForces.h).
+inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t particleCount, const double* radius,
+                          double skin, const PeriodicImage& image, std::vector<double>& grownScratch,
+                          SweptPairs& scratch) {
+    NearPairs& near = list.near;
+    grownScratch.resize(particleCount);
+    for (std::size_t i = 0; i < particleCount; ++i) grownScratch[i] = radius[i] + 0.5 * skin;
+    near.index.clear();
+    const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
+    for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
+        const std::size_t end = std::min(list.pairs.size(), begin + SweptPairs::capacity);
+        // (A chunk across the end of the interior pairs: the image for all of it, which only
+        // finds the separations, not which pairs are picked, different.)
+        if (end <= interior)
+            sweepPairs<false>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
+                              list.history.states(), image, scratch);
+        else
+            sweepPairs<true>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
+                             list.history.states(), image, scratch);
+        near.index.insert(near.index.end(), scratch.pair, scratch.pair + scratch.count);
+    }
+    near.pairs.resize(near.index.size());
+    for (std::size_t m = 0; m < near.index.size(); ++m) near.pairs[m] = list.pairs[near.index[m]];
+    near.interior = static_cast<std::size_t>(
+        std::lower_bound(near.index.begin(), near.index.end(), static_cast<std::uint32_t>(interior)) - near.index.begin());
+    near.skin = skin;
+    near.moved = 0;
+    near.made = true;
+    near.builds = list.builds;
+    near.relisted = list.relistedParticles;
+    near.listed = list.pairs.size();
+    ++near.makes;
 }
 
 // Decides sweepForm() if undecided: sweeps the first chunk of a list both ways, alternating,
