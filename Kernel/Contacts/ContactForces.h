@@ -88,6 +88,7 @@ public:
             sweptContacts<false>(list, 0, near.interior, sweepRadius, image, swept, &near);
             sweptContacts<true>(list, near.interior, near.index.size(), sweepRadius, image, swept, &near);
         } else {
+            list.near.made = false;  // (its bound of the displacements does not follow this step)
             const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
             sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
             sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
