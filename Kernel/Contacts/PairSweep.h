@@ -214,8 +214,8 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
     const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
     for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
         const std::size_t end = std::min(list.pairs.size(), begin + SweptPairs::capacity);
-        // (A chunk across the end of the interior pairs: the image for all of it, which only
-        // finds the separations, not which pairs are picked, different.)
+        // (A chunk across the end of the interior pairs: the image for all of it, which leaves
+        // an interior pair's direct difference as it is.)
         if (end <= interior)
             sweepPairs<false>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
                               list.history.states(), image, scratch);
