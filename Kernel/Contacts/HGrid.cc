@@ -109,27 +109,38 @@ void HGrid::placeDenseLevels(const std::vector<std::array<int, 3>>& cells) {
     cellStart_.assign(cellCount + 1, 0);
 }
 
+namespace {
+
+// Stable counting sort of the particles i with key[i] != skip into the ranges
+// [start[k], start[k + 1]) of their keys (start: keys + 1 entries, zero on entry): place(slot, i)
+// puts particle i at its slot, the slots of one key in ascending i.
+template <class Place>
+void countingSort(const std::vector<std::uint32_t>& key, std::uint32_t skip, std::vector<std::uint32_t>& start,
+                  Place place) {
+    for (std::uint32_t k : key)
+        if (k != skip) ++start[k + 1];
+    for (std::size_t k = 0; k + 1 < start.size(); ++k) start[k + 1] += start[k];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < key.size(); ++i)
+        if (key[i] != skip) place(fill[key[i]]++, static_cast<std::uint32_t>(i));
+}
+
+constexpr std::uint32_t otherKind = UINT32_MAX;  // a particle of a level of the other kind
+
+}  // namespace
+
 void HGrid::fillDenseCells(const std::vector<std::array<int, 3>>& cells) {
-    // Counting sort by cell, stable: within a cell the slots ascend.
-    const std::size_t n = cells.size();
-    std::vector<std::uint32_t> cell(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Level& level = levels_[levelOf_[i]];
-        if (!level.dense) continue;
-        cell[i] = static_cast<std::uint32_t>(denseCellOf(level, cells[i][0], cells[i][1], cells[i][2]));
-        ++cellStart_[cell[i] + 1];
-    }
-    for (std::size_t c = 0; c + 1 < cellStart_.size(); ++c) cellStart_[c + 1] += cellStart_[c];
+    std::vector<std::uint32_t> cell(cells.size(), otherKind);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        if (const Level& level = levels_[levelOf_[i]]; level.dense)
+            cell[i] = static_cast<std::uint32_t>(denseCellOf(level, cells[i][0], cells[i][1], cells[i][2]));
+    cellEntries_.resize(cells.size());
+    countingSort(cell, otherKind, cellStart_, [&](std::uint32_t slot, std::uint32_t i) { cellEntries_[slot] = i; });
     cellEntries_.resize(cellStart_.back());
-    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-        if (levels_[levelOf_[i]].dense) cellEntries_[fill[cell[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 void HGrid::fillBuckets(const std::vector<std::array<int, 3>>& cells) {
-    // Counting sort of the hashed levels' particles into hash buckets (2 to 4 buckets per
-    // particle), stable.
-    const std::size_t n = cells.size();
+    // Hash buckets for the hashed levels' particles (2 to 4 buckets per particle).
     std::size_t hashed = 0;
     for (const Level& level : levels_)
         if (!level.dense) hashed += level.particles;
@@ -137,18 +148,15 @@ void HGrid::fillBuckets(const std::vector<std::array<int, 3>>& cells) {
     while (buckets < 2 * hashed) buckets <<= 1;
     bucketMask_ = buckets - 1;
     bucketStart_.assign(buckets + 1, 0);
-    std::vector<std::uint32_t> bucket(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (levels_[levelOf_[i]].dense) continue;
-        bucket[i] = static_cast<std::uint32_t>(bucketOf(levelOf_[i], cells[i][0], cells[i][1], cells[i][2]));
-        ++bucketStart_[bucket[i] + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b) bucketStart_[b + 1] += bucketStart_[b];
-    entries_.resize(bucketStart_.back());
-    std::vector<std::uint32_t> fill(bucketStart_.begin(), bucketStart_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
+    std::vector<std::uint32_t> bucket(cells.size(), otherKind);
+    for (std::size_t i = 0; i < cells.size(); ++i)
         if (!levels_[levelOf_[i]].dense)
-            entries_[fill[bucket[i]]++] = {static_cast<std::uint32_t>(i), cells[i][0], cells[i][1], cells[i][2], levelOf_[i]};
+            bucket[i] = static_cast<std::uint32_t>(bucketOf(levelOf_[i], cells[i][0], cells[i][1], cells[i][2]));
+    entries_.resize(cells.size());
+    countingSort(bucket, otherKind, bucketStart_, [&](std::uint32_t slot, std::uint32_t i) {
+        entries_[slot] = {i, cells[i][0], cells[i][1], cells[i][2], levelOf_[i]};
+    });
+    entries_.resize(bucketStart_.back());
 }
 
 void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, double skin,
