@@ -80,7 +80,9 @@ public:
             chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), sweepRadius,
                             list.history.states(), image, swept);
         // The near list where it holds every pair the sweep can pick (PairSweep.h), else all pairs.
-        if (nearPairs && p_.ghostCount == 0 && useNearPairs(list, growth)) {
+        // On ranks each keeps its own: a ghost moved by the drift of its owner with the velocity
+        // that came with it, which its growth holds, and any other move of a ghost rebuilds.
+        if (nearPairs && useNearPairs(list, growth)) {
             if (!list.near.made)
                 makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(), list.nearSkinFraction * list.skin,
                               image, list.nearRadiusScratch, swept);

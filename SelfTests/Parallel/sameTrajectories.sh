@@ -13,7 +13,10 @@
 #     across the chute and along its height, which is not periodic);
 #  5. with --id-ordered-sums on: the same particle states to the bit on 1, 2, 3 and 4 ranks and
 #     in a serial run in another particle order, and a run saved on 2 ranks and restarted on 3
-#     writes bitwise the files of the uninterrupted run.
+#     writes bitwise the files of the uninterrupted run;
+#  6. the near list (Documentation/UserGuide/NeighbourSearch.md) changes nothing on ranks: 3 ranks
+#     from the bed stirred by random velocities (it is remade tens of times between list builds)
+#     write bitwise the files of the same run with it off (TALUS_NEAR_SKIN_FRACTION=0).
 # Usage: sameTrajectories.sh MPIRUN BENCHMARK compareRuns.py
 set -euo pipefail
 mpirun=("$1" --oversubscribe)
@@ -74,4 +77,11 @@ mkdir -p orderedRestart3 && cp orderedPart.* orderedRestart3/
 (cd orderedRestart3 && "${mpirun[@]}" -np 3 "$benchmark" --restart orderedPart.restart --end-time 0.2 --id-ordered-sums on > run.log)
 for f in data ene; do cmp orderedWhole.$f orderedRestart3/orderedPart.$f; done
 echo "--id-ordered-sums on, saved on 2 ranks, restarted on 3: bitwise the same .data and .ene"
+run 3 nearOn --end-time 0.2 --perturbation 2
+TALUS_NEAR_SKIN_FRACTION=0 run 3 nearOff --end-time 0.2 --perturbation 2
+grep -q "near list .* made [1-9][0-9]* times" nearOn.log || { echo "the near list was not used"; exit 1; }
+grep -q "near list" nearOff.log && { echo "the near list was not switched off"; exit 1; }
+for f in data fstat ene; do cmp nearOn.$f nearOff.$f; done
+cmp <(sed 2d nearOn.restart) <(sed 2d nearOff.restart)  # (line 2 is the run's name)
+echo "near list on 3 ranks: $(grep -o "made [0-9]* times" nearOn.log) on rank 0, bitwise the same files as without it"
 echo "parallel trajectories ok"
