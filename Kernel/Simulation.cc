@@ -384,7 +384,10 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         actionsBeforeTimeStep();
         integrate(saving);
         actionsAfterTimeStep();
-        if (saving) writeOutput();
+        if (saving) {
+            writeOutput();
+            records_.release();  // (the next output step records anew)
+        }
         // Boundaries may add and delete particles: count again when the number changed (on
         // ranks, where that takes all ranks, every 256 steps).
         if (onRanks() ? (k & 255) == 0 : state_.particles.size() != counted) {
@@ -461,9 +464,10 @@ void Simulation::initialise(bool restarted) {
     computeForces(&records_, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
     writeOutput();
+    records_.release();
 }
 
-void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck check) {
+void Simulation::computeForces(ContactRecords* records, OverlapCheck check) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
@@ -486,7 +490,7 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck
     if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
     PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
-    if (records) records->clear();
+    if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
@@ -496,12 +500,12 @@ void Simulation::computeForces(std::vector<ContactRecord>* records, OverlapCheck
         laws_);
     if (idOrderedSums_) idOrderedForceSums_.addTo(p);
     if (records) {
-        // A pair across ranks is computed on both: its record is kept where its first particle
-        // is owned (PairList::rebuild puts the smaller id first).
-        if (p.ghostCount > 0) std::erase_if(*records, [&p](const ContactRecord& r) { return r.i >= p.owned(); });
-        elasticEnergy_ = 0;
-        for (const ContactRecord& r : *records) elasticEnergy_ += r.elasticEnergy;
-        if (onRanks()) elasticEnergy_ = sumOverRanks(elasticEnergy_);
+        elasticEnergy_ = records->elasticEnergy();
+        recordedContacts_ = records->count();
+        if (onRanks()) {
+            elasticEnergy_ = sumOverRanks(elasticEnergy_);
+            recordedContacts_ = static_cast<std::size_t>(sumOverRanks(static_cast<double>(recordedContacts_)));
+        }
     }
     if (check != OverlapCheck::none)
         checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, check == OverlapCheck::now);
@@ -603,7 +607,7 @@ void Simulation::writeOutput() {
     // Particles added since the forces (a driver's actionsAfterTimeStep) are relisted now, in the
     // run that goes on and, through the restart file, in the one that restarts from here.
     state_.pairList.relist(state_.particles, state_.domain, state_.walls);
-    files_->writeFrame(state_, records_, elasticEnergy_);
+    files_->writeFrame(state_, records_.each(), recordedContacts_, elasticEnergy_);
     saveKeptValues();
     files_->writeRestart(state_);
 }

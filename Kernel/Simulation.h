@@ -188,7 +188,7 @@ private:
     // collective per step instead of two. Output steps and the last step agree at once, so that
     // no file holds a state past a blow-up that a rank has found.
     enum class OverlapCheck { none, now, withNextStep };
-    void computeForces(std::vector<ContactRecord>* records, OverlapCheck check = OverlapCheck::now);
+    void computeForces(ContactRecords* records, OverlapCheck check = OverlapCheck::now);
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);
     std::size_t slotOf(std::uint64_t id, bool ghosts) const;
     void integrate(bool recordContacts);
@@ -216,7 +216,8 @@ private:
     LawTables laws_;
     ContactSummary summary_;
     double elasticEnergy_ = 0;
-    std::vector<ContactRecord> records_;
+    ContactRecords records_;        // of the last output step (each contact only with .fstat)
+    std::size_t recordedContacts_ = 0;  // their number (on ranks, over all ranks)
     bool idOrderedSums_ = false;  // --id-ordered-sums (Contacts/IdOrderedForceSums.h)
     IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)

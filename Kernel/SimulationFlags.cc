@@ -36,6 +36,10 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
+    cl.add("fstat", "on|off",
+           "write the .fstat file of every contact (off: output steps keep only the contacts' number and elastic "
+           "energy for .ene, not 120 bytes per contact)",
+           [&c](const std::string& v) { c.writeFstat = CommandLine::toBool("fstat", v); });
     cl.add("files", "on|off", "write any output files at all",
            [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
     cl.add("id-ordered-sums", "on|off",

@@ -54,7 +54,7 @@ class ContactForceLoop {
 public:
     ContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt, double maxSpeed,
                      const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                     std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr,
+                     ContactRecords* records, const std::vector<Superquadric>* shapes = nullptr,
                      PairContribution* perPair = nullptr)
         : p_(p), laws_(laws), dt_(dt), closing_(2 * maxSpeed * dt), previousForce_(previousForce), summary_(summary),
           records_(records), shapes_(p.hasShapes() ? shapes : nullptr), perPair_(perPair),
@@ -460,8 +460,8 @@ private:
         ++summary_.contacts;
         noteOverlap(i, j, g.overlap, size);
         if (records_) [[unlikely]]
-            records_->push_back({i, j, g.contactPoint, g.overlap, history.spring.norm(), f.normalForce, n,
-                                 f.tangentialForce, law.elasticEnergy(c, history.spring)});
+            records_->add({i, j, g.contactPoint, g.overlap, history.spring.norm(), f.normalForce, n,
+                           f.tangentialForce, law.elasticEnergy(c, history.spring)});
     }
 
     // The largest overlap of the step, as a fraction of the smaller size (j < 0: wall -j - 1).
@@ -523,8 +523,8 @@ private:
 
     [[gnu::noinline]] void record(std::uint32_t i, std::int64_t j, ContactKinematics c, Arms arms,
                                   ContactHistory history, const Law& law, ContactForce f) {
-        records_->push_back({i, j, p_.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(),
-                             f.normalForce, c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
+        records_->add({i, j, p_.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(), f.normalForce,
+                       c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
     }
 
     // Apart now: a pair that stopped touching during the last step gets its separation impulse,
@@ -570,8 +570,8 @@ private:
                 ContactKinematics c{};
                 c.overlap = b.overlap[l];
                 const Vec3 tangential = force - b.fn[l] * n;
-                records_->push_back({i, j, p_.position[i] - (b.ri[l] - 0.5 * b.overlap[l]) * n, b.overlap[l],
-                                     spring.norm(), b.fn[l], n, tangential, b.law(l).elasticEnergy(c, spring)});
+                records_->add({i, j, p_.position[i] - (b.ri[l] - 0.5 * b.overlap[l]) * n, b.overlap[l],
+                               spring.norm(), b.fn[l], n, tangential, b.law(l).elasticEnergy(c, spring)});
             }
         }
         summary_.contacts += static_cast<std::size_t>(b.count);
@@ -585,7 +585,7 @@ private:
     const double dt_, closing_;
     const std::vector<Vec3>& previousForce_;
     ContactSummary& summary_;
-    std::vector<ContactRecord>* records_;
+    ContactRecords* records_;
     const std::vector<Superquadric>* shapes_;  // null in scenes of spheres only
     PairContribution* perPair_;  // non-null: pair forces kept for sums in id order (IdOrderedForceSums.h)
     const bool prefetchPartners_;  // a large scene: the contact pass asks for its partners' data ahead
@@ -597,7 +597,7 @@ template <class Law>
 void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>& walls,
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
-                      std::vector<ContactRecord>* records, const std::vector<Superquadric>* shapes = nullptr,
+                      ContactRecords* records, const std::vector<Superquadric>* shapes = nullptr,
                       PairContribution* perPair = nullptr) {
     if (shapes && p.hasShapes()) placeShapedParticles(p, *shapes, list.shapedFrameScratch);
     ContactForceLoop<Law> loop(p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair);

@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
+#include <limits>
 
 #include "Math/Vector.h"
 
@@ -21,6 +23,48 @@ struct ContactRecord {
     Vec3 normal;             // from j (or the wall) to i
     Vec3 tangentialForce;    // on i
     double elasticEnergy;
+};
+
+// The records of a step, in a deque: it grows block by block, never holding the old and the new
+// copy of the whole as a vector does when it reallocates (up to 3x its size at the last doubling).
+using ContactRecordList = std::deque<ContactRecord>;
+
+// The contacts of an output step: each one's record where the .fstat file wants them, else only
+// what the .ene file and Simulation::energies() take from them, their number and elastic energy.
+// (A record is 120 bytes: at the output steps of a large scene without .fstat the records were
+// the largest array, more than the particles; Documentation/Performance.md, "Scaling and memory".)
+// On ranks a pair across two ranks is computed on both and counts where its first particle is
+// owned (PairList::rebuild puts the smaller id first): pairs whose first particle is a ghost are
+// left out.
+class ContactRecords {
+public:
+    // Empties the records for a new step; keepEach: keep every record, not only the sums.
+    void start(bool keepEach, std::size_t ownedParticles) {
+        keepEach_ = keepEach;
+        owned_ = ownedParticles;
+        each_.clear();
+        count_ = 0;
+        elasticEnergy_ = 0;
+    }
+    void add(const ContactRecord& r) {
+        if (r.i >= owned_) return;
+        ++count_;
+        elasticEnergy_ += r.elasticEnergy;  // (in the order of the records, as a sum over them)
+        if (keepEach_) each_.push_back(r);
+    }
+    // Gives the memory of the records back (between output steps).
+    void release() { ContactRecordList().swap(each_); }
+
+    const ContactRecordList& each() const { return each_; }  // empty unless kept
+    std::size_t count() const { return count_; }
+    double elasticEnergy() const { return elasticEnergy_; }
+
+private:
+    bool keepEach_ = true;
+    std::size_t owned_ = std::numeric_limits<std::size_t>::max();
+    ContactRecordList each_;
+    std::size_t count_ = 0;
+    double elasticEnergy_ = 0;
 };
 
 // What the force loop learned about the contacts of this step.

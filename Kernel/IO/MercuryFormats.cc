@@ -31,7 +31,8 @@ std::vector<std::uint32_t> slotsById(const ParticleStore& particles) {
 // Sphere orientation is not tracked, so their three angle columns are 0; a non-spherical
 // particle's are the roll, pitch and yaw angles (Tait-Bryan Z-Y-X) of its orientation, as
 // MercuryDPM writes them, and r is its bounding radius.
-void appendDataFrame(std::string& out, const SimulationState& state, const std::vector<std::uint32_t>& order) {
+void appendDataFrame(std::string& out, const SimulationState& state, const std::vector<std::uint32_t>& order,
+                     const Spill& spill) {
     const ParticleStore& p = state.particles;
     const Domain& d = state.domain;
     append(out, "%zu %.10g %.10g %.10g %.10g %.10g %.10g %.10g \n", p.size(), state.time, d.lo.x(), d.lo.y(), d.lo.z(),
@@ -47,6 +48,7 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
         }
         append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %u\n", x.x(), x.y(),
                x.z(), v.x(), v.y(), v.z(), p.radius[i], th.x(), th.y(), th.z(), w.x(), w.y(), w.z(), p.species[i]);
+        if (spill && out.size() >= spillBytes) spill(out);
     }
 }
 
@@ -54,7 +56,8 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
 // side; i, j are global ids, walls are j = -(wall + 1). A pair is written from both sides
 // (n and t negated on the second) except from the side of a fixed particle; a wall contact
 // once, with n and t pointing into the wall as MercuryDPM writes them.
-void appendFstatFrame(std::string& out, const SimulationState& state, const std::vector<ContactRecord>& contacts) {
+void appendFstatFrame(std::string& out, const SimulationState& state, const ContactRecordList& contacts,
+                      const Spill& spill) {
     const ParticleStore& p = state.particles;
     const Domain& d = state.domain;
     double rmin = NAN, rmax = NAN;
@@ -84,6 +87,7 @@ void appendFstatFrame(std::string& out, const SimulationState& state, const std:
         const auto idJ = static_cast<long long>(p.id[j]);
         if (!p.fixed[c.i]) line(idI, idJ, c, 1.0);
         if (!p.fixed[j]) line(static_cast<std::uint64_t>(idJ), static_cast<long long>(idI), c, -1.0);
+        if (spill && out.size() >= spillBytes) spill(out);
     }
 }
 

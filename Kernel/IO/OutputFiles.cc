@@ -41,23 +41,33 @@ void OutputFiles::open(File& file, const std::string& path, bool restarted, std:
     if (!file.handle) throw Error("cannot open output file " + path);
 }
 
-std::uint64_t OutputFiles::append(File& file, const std::string& text) {
-    if (std::fwrite(text.data(), 1, text.size(), file.handle) != text.size() || std::fflush(file.handle) != 0)
+void OutputFiles::write(File& file, std::string& text) {
+    if (std::fwrite(text.data(), 1, text.size(), file.handle) != text.size())
         throw Error("error while writing " + file.path + " (disk full?)");
+    text.clear();
+}
+
+std::uint64_t OutputFiles::append(File& file, std::string& text) {
+    write(file, text);
+    if (std::fflush(file.handle) != 0) throw Error("error while writing " + file.path + " (disk full?)");
     return static_cast<std::uint64_t>(std::ftell(file.handle));
 }
 
-void OutputFiles::writeFrame(SimulationState& state, const std::vector<ContactRecord>& records, double elasticEnergy) {
+void OutputFiles::writeFrame(SimulationState& state, const ContactRecordList& records, std::size_t contacts,
+                             double elasticEnergy) {
     const RunSettings& c = state.settings;
     const std::vector<std::uint32_t> order = slotsById(state.particles);
+    // The frames are written 64 KB at a time (MercuryFormats.h); the restart file records
+    // the size after the whole frame (a restart cuts the file back to it).
+    const auto spillTo = [this](File& file) { return [this, &file](std::string& text) { write(file, text); }; };
     if (data_.handle) {
         buffer_.clear();
-        appendDataFrame(buffer_, state, order);
+        appendDataFrame(buffer_, state, order, spillTo(data_));
         state.output.dataBytes = append(data_, buffer_);
     }
     if (fstat_.handle) {
         buffer_.clear();
-        appendFstatFrame(buffer_, state, records);
+        appendFstatFrame(buffer_, state, records, spillTo(fstat_));
         state.output.fstatBytes = append(fstat_, buffer_);
     }
     if (ene_.handle) {
@@ -65,7 +75,7 @@ void OutputFiles::writeFrame(SimulationState& state, const std::vector<ContactRe
         if (state.output.savedFrames == 0) buffer_ = eneHeader();
         Energies e = particleEnergies(state.particles, state.gravity);
         e.elastic = elasticEnergy;
-        appendEneLine(buffer_, state.time, e, records.size());
+        appendEneLine(buffer_, state.time, e, contacts);
         state.output.eneBytes = append(ene_, buffer_);
     }
     if (c.writeVtu) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "Contacts/ContactReport.h"
 #include "SimulationState.h"
 
 namespace talus {
@@ -24,8 +25,10 @@ public:
     OutputFiles(const OutputFiles&) = delete;
     OutputFiles& operator=(const OutputFiles&) = delete;
 
-    // Appends the frame of the current state; records are the contacts of the last force loop.
-    void writeFrame(SimulationState& state, const std::vector<struct ContactRecord>& records, double elasticEnergy);
+    // Appends the frame of the current state. records: each contact of the last force loop (read
+    // only for .fstat, and empty without it); contacts: their number, for .ene.
+    void writeFrame(SimulationState& state, const ContactRecordList& records, std::size_t contacts,
+                    double elasticEnergy);
     void writeRestart(const SimulationState& state);
 
 private:
@@ -34,7 +37,8 @@ private:
         std::string path;
     };
     void open(File& file, const std::string& path, bool restarted, std::uint64_t bytes);
-    std::uint64_t append(File& file, const std::string& text);
+    void write(File& file, std::string& text);            // writes text and empties it
+    std::uint64_t append(File& file, std::string& text);  // the same, flushed; returns the file's size
 
     File data_, fstat_, ene_;
     std::string buffer_;

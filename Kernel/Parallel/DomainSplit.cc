@@ -327,7 +327,7 @@ ParticleStore DomainSplit::gatherParticles(const ParticleStore& p) {
     return gathered;
 }
 
-std::vector<ContactRecord> DomainSplit::gatherRecords(const ParticleStore& p, const std::vector<ContactRecord>& records,
+ContactRecordList DomainSplit::gatherRecords(const ParticleStore& p, const ContactRecordList& records,
                                                       const ParticleStore& gathered) {
     Bytes mine;
     Packer out(mine);
@@ -337,7 +337,7 @@ std::vector<ContactRecord> DomainSplit::gatherRecords(const ParticleStore& p, co
         out.put(r.j >= 0 ? static_cast<std::int64_t>(p.id[r.j]) : r.j);
     }
     const std::vector<Bytes> all = communicator_.gatherToRoot(mine);
-    std::vector<ContactRecord> result;
+    ContactRecordList result;
     if (all.empty()) return result;
     std::unordered_map<std::uint64_t, std::uint32_t> slotOf;
     for (std::uint32_t i = 0; i < gathered.size(); ++i) slotOf.emplace(gathered.id[i], i);

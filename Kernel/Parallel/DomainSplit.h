@@ -26,13 +26,12 @@
 #include <vector>
 
 #include "Boundaries/Domain.h"
+#include "Contacts/ContactReport.h"
 #include "Contacts/PairList.h"
 #include "Parallel/Communicator.h"
 #include "Particles/ParticleStore.h"
 
 namespace talus {
-
-struct ContactRecord;
 
 class DomainSplit {
 public:
@@ -78,7 +77,7 @@ public:
     // Output: the owned particles of every rank on rank 0, in rank order (empty elsewhere).
     ParticleStore gatherParticles(const ParticleStore& particles);
     // The contact records (slots of this rank) on rank 0, with slots of the gathered store.
-    std::vector<ContactRecord> gatherRecords(const ParticleStore& particles, const std::vector<ContactRecord>& records,
+    ContactRecordList gatherRecords(const ParticleStore& particles, const ContactRecordList& records,
                                              const ParticleStore& gathered);
     // Histories (of the pairs listed first on this rank) on rank 0, sorted.
     std::vector<CarriedHistory> gatherHistories(const std::vector<CarriedHistory>& mine);

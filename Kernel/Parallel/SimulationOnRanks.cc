@@ -190,7 +190,7 @@ void Simulation::writeGatheredOutput() {
     renumberNewParticles();
     ParticleStore& p = state_.particles;
     ParticleStore gathered = split_->gatherParticles(p);
-    std::vector<ContactRecord> records = split_->gatherRecords(p, records_, gathered);
+    const ContactRecordList records = split_->gatherRecords(p, records_.each(), gathered);
     const std::vector<CarriedHistory> histories =
         split_->gatherHistories(state_.pairList.carriedHistories(p, /*firstOwned*/ true));
     if (rank() == 0 && files_) {
@@ -202,7 +202,7 @@ void Simulation::writeGatheredOutput() {
             std::swap(state_.pairList, saved);
         };
         try {
-            files_->writeFrame(state_, records, elasticEnergy_);
+            files_->writeFrame(state_, records, recordedContacts_, elasticEnergy_);
             files_->writeRestart(state_);
         } catch (...) {
             swapBack();
