@@ -26,11 +26,7 @@ void settleInBox(SceneSimulation& s, const std::string& name, bool fstat) {
         scene.setGravity(Vec3(0, 0, -1));
         scene.setDomain(Vec3::Zero(), Vec3(side, side, 8.4));
         const auto species = scene.addSpecies("glass", unitMassDensity, LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5).withFriction(0.4));
-        scene.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        scene.addWall(Vec3::UnitX(), Vec3::Zero(), species);
-        scene.addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
-        scene.addWall(Vec3::UnitY(), Vec3::Zero(), species);
-        scene.addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
+        addOpenBox(scene, side, species);
         std::mt19937_64 random(11);
         std::uniform_real_distribution<double> radiusOf(0.4, 0.5), velocityOf(-0.5, 0.5);
         for (int k = 0; k < 5; ++k)

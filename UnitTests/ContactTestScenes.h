@@ -1,5 +1,5 @@
 // Shared scenes for the contact-physics tests (ContactCollisionTest.cc, ObliqueImpactTest.cc,
-// RollingTest.cc, SettlingEnergyTest.cc): real simulations driven through the public driver
+// RollingTest.cc, SettlingEnergyTest.cc, ContactReportTest.cc): real simulations driven through the public driver
 // API (talus::Simulation), so that the tests check what a driver gets, time loop included.
 #pragma once
 
@@ -19,6 +19,16 @@ inline double sphereMass(double radius, double density = unitMassDensity) {
 }
 
 using Scene = SceneSimulation;
+
+// A square box of side `side` open at the top: a floor at z = 0 and four side walls, all of
+// `species` (SettlingEnergyTest.cc, ContactReportTest.cc).
+inline void addOpenBox(Simulation& s, double side, std::size_t species) {
+    s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    s.addWall(Vec3::UnitX(), Vec3::Zero(), species);
+    s.addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
+    s.addWall(Vec3::UnitY(), Vec3::Zero(), species);
+    s.addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
+}
 
 // What a head-on collision measured.
 struct HeadOnResult {

@@ -28,11 +28,7 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
         s.setGravity(Vec3(0, 0, -1));
         s.setDomain(Vec3::Zero(), Vec3(side, side, 7 * spacing));
         const auto species = s.addSpecies("glass", unitMassDensity, law);
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        s.addWall(Vec3::UnitX(), Vec3::Zero(), species);
-        s.addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
-        s.addWall(Vec3::UnitY(), Vec3::Zero(), species);
-        s.addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
+        addOpenBox(s, side, species);
         // 45 spheres on a loose lattice, polydisperse and with random velocities so that they
         // do not stack into a crystal.
         std::mt19937_64 random(7);
