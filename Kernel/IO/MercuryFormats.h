@@ -1,8 +1,8 @@
 // Frames of MercuryDPM's .data, .fstat and .ene layouts (Documentation/FileFormats/), so that
 // MercuryDPM's tools and Talus's coarse graining read Talus output. Each function appends one
 // frame to a buffer; with a `spill`, it hands the buffer on (OutputFiles writes it to the file)
-// each time it has grown past spillBytes (64 KB), so that a frame of a large scene is never held whole
-// (the .fstat text of 10^5 contacts is about 60 MB).
+// each time it has grown past spillBytes (64 KB), so that a frame of a large scene is never held
+// whole (the .fstat text of 10^5 contacts is about 60 MB).
 #pragma once
 
 #include <functional>

@@ -328,7 +328,7 @@ ParticleStore DomainSplit::gatherParticles(const ParticleStore& p) {
 }
 
 ContactRecordList DomainSplit::gatherRecords(const ParticleStore& p, const ContactRecordList& records,
-                                                      const ParticleStore& gathered) {
+                                             const ParticleStore& gathered) {
     Bytes mine;
     Packer out(mine);
     for (const ContactRecord& r : records) {

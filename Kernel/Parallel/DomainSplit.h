@@ -78,7 +78,7 @@ public:
     ParticleStore gatherParticles(const ParticleStore& particles);
     // The contact records (slots of this rank) on rank 0, with slots of the gathered store.
     ContactRecordList gatherRecords(const ParticleStore& particles, const ContactRecordList& records,
-                                             const ParticleStore& gathered);
+                                    const ParticleStore& gathered);
     // Histories (of the pairs listed first on this rank) on rank 0, sorted.
     std::vector<CarriedHistory> gatherHistories(const std::vector<CarriedHistory>& mine);
 
