@@ -35,12 +35,12 @@ for spec in "1 2500" "2 1000" "6 100" "18 25"; do
     short=$(run "$1" "$2")
     long=$(run "$1" $((2 * $2)))
     echo "$long"
-    flowing=$(echo "$long" | field flowing)
-    awk -v n="$2" -v flowing="$flowing" -v s="$(echo "$short" | field wall)" -v line="$long" 'BEGIN {
-        split(line, f, " "); for (i = 1; i < length(f); ++i) v[f[i]] = f[i + 1]
-        rate = v["steps"] * flowing / v["wall"]
-        printf "%s,%s,%s,%.4g,%.2f,%s,%.2f\n", flowing, v["steps"], v["wall"], rate, 1e9 / rate, v["memory"],
-               1e9 * (v["wall"] - s) / (n * flowing)
+    awk -v n="$2" -v flowing="$(echo "$long" | field flowing)" -v steps="$(echo "$long" | field steps)" \
+        -v wall="$(echo "$long" | field wall)" -v memory="$(echo "$long" | field memory)" \
+        -v shortWall="$(echo "$short" | field wall)" 'BEGIN {
+        rate = steps * flowing / wall
+        printf "%s,%s,%s,%.4g,%.2f,%s,%.2f\n", flowing, steps, wall, rate, 1e9 / rate, memory,
+               1e9 * (wall - shortWall) / (n * flowing)
     }' >> scaling.csv
     tail -1 scaling.csv
 done
