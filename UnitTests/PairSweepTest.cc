@@ -62,6 +62,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             states.push_back(static_cast<ContactHistory::State>(random() % 7 == 0 ? 1 + random() % 2 : 0));
         }
         std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> sweeps[2];
+        std::size_t wrongParticles = 0;  // picked pairs whose particles are not the listed pair's
         for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
             std::vector<std::uint32_t> picked;
             std::vector<Vec3> separations;
@@ -70,6 +71,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
                 sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(),
                            n, grown.data(), states.data(), image, swept, form);
                 for (std::size_t a = 0; a < swept.count; ++a) {
+                    if (!(swept.particles[a] == pairs[swept.pair[a]])) ++wrongParticles;
                     picked.push_back(swept.pair[a]);
                     separations.push_back(swept.separation(a));
                 }
@@ -79,6 +81,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         const auto& [picked, separations] = sweeps[1];
         EXPECT_EQ(sweeps[0].first, picked) << "the two forms pick the same pairs";
         EXPECT_EQ(sweeps[0].second, separations) << "with the same separations";
+        EXPECT_EQ(wrongParticles, 0u) << "each picked pair comes with its particles";
         std::vector<std::uint32_t> expected;
         std::vector<Vec3> expectedSeparations;
         for (std::size_t k = 0; k < pairs.size(); ++k) {

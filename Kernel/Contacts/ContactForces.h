@@ -88,7 +88,7 @@ public:
                               image, list.nearRadiusScratch, swept);
             const NearPairs& near = list.near;
             sweptContacts<false>(list, 0, near.interior, sweepRadius, image, swept, &near);
-            sweptContacts<true>(list, near.interior, near.index.size(), sweepRadius, image, swept, &near);
+            sweptContacts<true>(list, near.interior, near.pairs.size(), sweepRadius, image, swept, &near);
         } else {
             list.near.made = false;  // (its bound of the displacements does not follow this step)
             const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
@@ -114,8 +114,8 @@ public:
                                          list.history.states(), image, swept);
             for (std::size_t a = 0; a < swept.count; ++a) {
                 if (prefetchPartners_ && a + prefetchAhead < swept.count)
-                    prefetchPartner(list.pairs[swept.pair[a + prefetchAhead]].j);
-                pairContact(list, swept.pair[a], swept.separation(a));
+                    prefetchPartner(swept.particles[a + prefetchAhead].j);
+                pairContact(list, swept.pair[a], swept.particles[a], swept.separation(a));
             }
         }
     }
@@ -131,9 +131,9 @@ public:
         __builtin_prefetch(previousForce_.data() + j);
     }
 
-    // Pair k of the list, whose separation xi - xj (nearest image) is d.
-    [[gnu::always_inline]] void pairContact(PairList& list, std::size_t k, const Vec3& d) {
-        const std::uint32_t i = list.pairs[k].i, j = list.pairs[k].j;
+    // Pair k of the list, of particles ij, whose separation xi - xj (nearest image) is d.
+    [[gnu::always_inline]] void pairContact(PairList& list, std::size_t k, ParticlePair ij, const Vec3& d) {
+        const std::uint32_t i = ij.i, j = ij.j;
         if (perPair_) [[unlikely]]
             currentPair_ = k;
         if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {

@@ -32,9 +32,14 @@ struct WallCandidate {
 // instead of the whole list until some particle may have moved far enough to bring another
 // listed pair within its pick (moved, a bound on every particle's displacement since).
 struct NearPairs {
-    std::vector<std::uint32_t> index;  // into PairList::pairs, ascending
-    std::vector<ParticlePair> pairs;   // pairs[m] = PairList::pairs[index[m]] (read in sequence)
-    std::size_t interior = 0;          // index[0, interior) are interior pairs (PairList::interiorPairs)
+    // A near pair: its place in PairList::pairs (ascending along the near list) and its particles,
+    // in one record (one memory stream for the sweep, Documentation/Performance.md).
+    struct Pair {
+        ParticlePair particles;
+        std::uint32_t index;
+    };
+    std::vector<Pair> pairs;
+    std::size_t interior = 0;  // pairs[0, interior) are interior pairs (PairList::interiorPairs)
     double skin = 0;
     double moved = 0;
     bool made = false;

@@ -41,11 +41,13 @@
 namespace talus {
 
 // The picked pairs of one chunk of the list: small enough to stay in the first-level cache
-// between the two passes (and on the stack: no allocation).
+// between the two passes (and on the stack: no allocation). Each with its two particles, so
+// that the second pass does not read the list's pairs again (one memory stream less).
 struct SweptPairs {
     static constexpr std::size_t capacity = 512;
     std::size_t count = 0;
     std::uint32_t pair[capacity];
+    ParticlePair particles[capacity];
     double dx[capacity], dy[capacity], dz[capacity];  // xi - xj, nearest image
 
     Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
@@ -83,6 +85,7 @@ template <bool nearestImage>
     const double r2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
 #endif
     out.pair[picked] = static_cast<std::uint32_t>(k);
+    out.particles[picked] = pair;
     out.dx[picked] = d.x(), out.dy[picked] = d.y(), out.dz[picked] = d.z();
     picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
 }
@@ -116,7 +119,8 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
     double* separation[3] = {out.dx, out.dy, out.dz};
     for (; k + 8 <= vectorEnd; k += 8) {
         // i in the low eight 32-bit lanes, j in the high eight.
-        const __m512i ij = _mm512_permutexvar_epi32(evenLanes, _mm512_loadu_si512(pairs + k));
+        const __m512i listed = _mm512_loadu_si512(pairs + k);
+        const __m512i ij = _mm512_permutexvar_epi32(evenLanes, listed);
         const __m256i i = _mm512_castsi512_si256(ij), j = _mm512_extracti64x4_epi64(ij, 1);
         const __m256i i3 = _mm256_mullo_epi32(i, three), j3 = _mm256_mullo_epi32(j, three);
         __m512d d[3];
@@ -134,6 +138,7 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         const __mmask8 pick = near | _mm256_test_epi32_mask(state, state);
         _mm256_mask_compressstoreu_epi32(out.pair + picked, pick,
                                          _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(k)), laneOffsets));
+        _mm512_mask_compressstoreu_epi64(out.particles + picked, pick, listed);
         for (int a = 0; a < 3; ++a) _mm512_mask_compressstoreu_pd(separation[a] + picked, pick, d[a]);
         picked += static_cast<std::size_t>(__builtin_popcount(pick));
     }
@@ -151,7 +156,8 @@ inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t
                            SweptPairs& out) {
     std::size_t picked = 0;
     for (std::size_t m = begin; m < end; ++m)
-        sweepPair<nearestImage>(near.pairs[m], near.index[m], position, radius, states, image, out, picked);
+        sweepPair<nearestImage>(near.pairs[m].particles, near.pairs[m].index, position, radius, states, image, out,
+                                picked);
     out.count = picked;
 }
 
@@ -210,7 +216,7 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
     NearPairs& near = list.near;
     grownScratch.resize(particleCount);
     for (std::size_t i = 0; i < particleCount; ++i) grownScratch[i] = radius[i] + 0.5 * skin;
-    near.index.clear();
+    near.pairs.clear();
     const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
     for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
         const std::size_t end = std::min(list.pairs.size(), begin + SweptPairs::capacity);
@@ -222,12 +228,12 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
         else
             sweepPairs<true>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
                              list.history.states(), image, scratch);
-        near.index.insert(near.index.end(), scratch.pair, scratch.pair + scratch.count);
+        for (std::size_t a = 0; a < scratch.count; ++a) near.pairs.push_back({scratch.particles[a], scratch.pair[a]});
     }
-    near.pairs.resize(near.index.size());
-    for (std::size_t m = 0; m < near.index.size(); ++m) near.pairs[m] = list.pairs[near.index[m]];
     near.interior = static_cast<std::size_t>(
-        std::lower_bound(near.index.begin(), near.index.end(), static_cast<std::uint32_t>(interior)) - near.index.begin());
+        std::partition_point(near.pairs.begin(), near.pairs.end(),
+                             [&](const NearPairs::Pair& pair) { return pair.index < interior; }) -
+        near.pairs.begin());
     near.skin = skin;
     near.moved = 0;
     near.made = true;
