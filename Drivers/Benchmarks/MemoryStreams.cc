@@ -1,0 +1,79 @@
+// How the memory bandwidth of one core depends on the number of arrays a loop reads at once
+// (Documentation/Performance.md "Scaling and memory"). A structure of arrays makes a pass that
+// needs k quantities per particle read k arrays side by side; on the hosts of 2026-12 such a
+// pass over arrays larger than the caches got 9-12 GB/s with 4-8 arrays but 3-5 GB/s with 16-32,
+// while the same bytes in one array of k-value records came at 13-18 GB/s. This program measures
+// both on the machine at hand, so that a layout decision rests on numbers from it.
+//
+//   MemoryStreams [megabytes per array, default 16] [repeats, default 3]
+//
+// Each row: k arrays of n 8-byte integers read in step (element i of every array, then i + 1),
+// and one array of n records of k integers read in order; the same bytes, the fastest of the
+// repeats. (Integer sums: one cycle per add, so that the loop waits on memory, not on its adds.)
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// A positive whole number from argument `index`, or `fallback` if it is absent; stops with a
+// message naming the argument if it is not one.
+long positiveArgument(int argc, char** argv, int index, long fallback, const char* name) {
+    if (argc <= index) return fallback;
+    char* end = nullptr;
+    const long value = std::strtol(argv[index], &end, 10);
+    if (*argv[index] == '\0' || *end != '\0' || value <= 0 || value > 4096) {
+        std::fprintf(stderr, "MemoryStreams: %s must be a whole number from 1 to 4096, got '%s'\n", name, argv[index]);
+        std::exit(2);
+    }
+    return value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const long megabytes = positiveArgument(argc, argv, 1, 16, "megabytes per array (argument 1)");
+    const long repeats = positiveArgument(argc, argv, 2, 3, "repeats (argument 2)");
+    // (Not a power of two, so that the arrays do not line up on the same cache sets.)
+    const std::size_t n = static_cast<std::size_t>(megabytes) * (1 << 20) / 8 - 1237;
+    const int counts[] = {1, 2, 4, 8, 12, 16, 24, 32};
+    const int mostArrays = 32;
+    std::vector<std::vector<std::uint64_t>> arrays(mostArrays, std::vector<std::uint64_t>(n, 1));
+    std::vector<std::uint64_t> records(n * mostArrays, 1);
+    std::printf("MemoryStreams: %ld MB per array, fastest of %ld\n", megabytes, repeats);
+    std::printf("%7s %22s %26s %8s\n", "arrays", "separate arrays GB/s", "one array of records GB/s", "ratio");
+    std::uint64_t check = 0;
+    for (const int k : counts) {
+        double separate = 1e300, interleaved = 1e300;
+        std::vector<const std::uint64_t*> at(k);
+        for (int a = 0; a < k; ++a) at[a] = arrays[a].data();
+        for (long r = 0; r < repeats; ++r) {
+            std::uint64_t sum = 0;
+            Clock::time_point start = Clock::now();
+            for (std::size_t i = 0; i < n; ++i)
+                for (int a = 0; a < k; ++a) sum += at[a][i];
+            separate = std::min(separate, secondsSince(start));
+            start = Clock::now();
+            const std::uint64_t* record = records.data();
+            for (std::size_t i = 0; i < n * k; ++i) sum += record[i];
+            interleaved = std::min(interleaved, secondsSince(start));
+            check += sum;
+        }
+        const double bytes = 8.0 * n * k;
+        std::printf("%7d %22.2f %26.2f %8.2f\n", k, bytes / separate * 1e-9, bytes / interleaved * 1e-9,
+                    separate / interleaved);
+    }
+    // (Every element is 1: the sums are known, and printing them keeps the loops from being dropped.)
+    const std::uint64_t expected = static_cast<std::uint64_t>(repeats) * 2 * n * (1 + 2 + 4 + 8 + 12 + 16 + 24 + 32);
+    std::printf("MemoryStreams: %s (sum %llu)\n", check == expected ? "done" : "WRONG SUM",
+                static_cast<unsigned long long>(check));
+    return check == expected ? 0 : 1;
+}
