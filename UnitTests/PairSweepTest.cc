@@ -61,6 +61,8 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             pairs.push_back({i, j});
             states.push_back(static_cast<ContactHistory::State>(random() % 7 == 0 ? 1 + random() % 2 : 0));
         }
+        std::vector<SweepPoint> points(n);  // (as the force loop passes them)
+        for (std::size_t i = 0; i < n; ++i) points[i] = {position[i].x(), position[i].y(), position[i].z(), grown[i]};
         std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> sweeps[2];
         std::size_t wrongParticles = 0;  // picked pairs whose particles are not the listed pair's
         for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
@@ -68,8 +70,8 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
             std::vector<Vec3> separations;
             SweptPairs swept;
             for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
-                sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), position.data(),
-                           n, grown.data(), states.data(), image, swept, form);
+                sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), points.data(),
+                           n, states.data(), image, swept, form);
                 for (std::size_t a = 0; a < swept.count; ++a) {
                     if (!(swept.particles[a] == pairs[swept.pair[a]])) ++wrongParticles;
                     picked.push_back(swept.pair[a]);

@@ -73,27 +73,27 @@ public:
         // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
         // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
         // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
-        const double growth = growRadiiByStep(p_, dt_, list.sweepRadiusScratch);
-        const double* sweepRadius = list.sweepRadiusScratch.data();
+        const double growth = sweepPointsForStep(p_, dt_, list.sweepPointScratch);
+        const SweepPoint* points = list.sweepPointScratch.data();
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
-            chooseSweepForm(list.pairs.data(), list.pairs.size(), p_.position.data(), p_.size(), sweepRadius,
-                            list.history.states(), image, swept);
+            chooseSweepForm(list.pairs.data(), list.pairs.size(), points, p_.size(), list.history.states(), image,
+                            swept);
         // The near list where it holds every pair the sweep can pick (PairSweep.h), else all pairs.
         // On ranks each keeps its own: a ghost moved by the drift of its owner with the velocity
         // that came with it, which its growth holds, and any other move of a ghost rebuilds.
         if (nearPairs && useNearPairs(list, growth)) {
             if (!list.near.made)
                 makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(), list.nearSkinFraction * list.skin,
-                              image, list.nearRadiusScratch, swept);
+                              image, list.nearPointScratch, swept);
             const NearPairs& near = list.near;
-            sweptContacts<false>(list, 0, near.interior, sweepRadius, image, swept, &near);
-            sweptContacts<true>(list, near.interior, near.pairs.size(), sweepRadius, image, swept, &near);
+            sweptContacts<false>(list, 0, near.interior, points, image, swept, &near);
+            sweptContacts<true>(list, near.interior, near.pairs.size(), points, image, swept, &near);
         } else {
             list.near.made = false;  // (its bound of the displacements does not follow this step)
             const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
-            sweptContacts<false>(list, 0, interior, sweepRadius, image, swept);
-            sweptContacts<true>(list, interior, list.pairs.size(), sweepRadius, image, swept);
+            sweptContacts<false>(list, 0, interior, points, image, swept);
+            sweptContacts<true>(list, interior, list.pairs.size(), points, image, swept);
         }
         if constexpr (Law::batched) flush(list);
         if (shapes_) flushEllipsoids(list);
@@ -102,16 +102,15 @@ public:
     // The listed pairs [from, to) (or those of a near list), a chunk at a time: the sweep, then
     // the contacts it picked.
     template <bool nearestImage>
-    void sweptContacts(PairList& list, std::size_t from, std::size_t to, const double* sweepRadius,
+    void sweptContacts(PairList& list, std::size_t from, std::size_t to, const SweepPoint* points,
                        const PeriodicImage& image, SweptPairs& swept, const NearPairs* near = nullptr) {
         for (std::size_t begin = from; begin < to; begin += SweptPairs::capacity) {
             const std::size_t end = std::min(to, begin + SweptPairs::capacity);
             if (near)
-                sweepNearPairs<nearestImage>(*near, begin, end, p_.position.data(), sweepRadius,
-                                             list.history.states(), image, swept);
+                sweepNearPairs<nearestImage>(*near, begin, end, points, list.history.states(), image, swept);
             else
-                sweepPairs<nearestImage>(list.pairs.data(), begin, end, p_.position.data(), p_.size(), sweepRadius,
-                                         list.history.states(), image, swept);
+                sweepPairs<nearestImage>(list.pairs.data(), begin, end, points, p_.size(), list.history.states(), image,
+                                         swept);
             for (std::size_t a = 0; a < swept.count; ++a) {
                 if (prefetchPartners_ && a + prefetchAhead < swept.count)
                     prefetchPartner(swept.particles[a + prefetchAhead].j);

@@ -27,6 +27,16 @@ struct WallCandidate {
     bool operator==(const WallCandidate&) const = default;
 };
 
+// A particle as the force loop's sweep reads it (Contacts/PairSweep.h): its position and its
+// radius as the sweep tests it (grown by the step's reach), in one 32-byte record: one memory
+// stream and half a cache line per particle, where two arrays would be two streams and up to
+// three lines (a pass that reads many arrays side by side gets a fraction of the bandwidth of
+// one reading records on our hosts; Documentation/Performance.md "Scaling and memory").
+struct SweepPoint {
+    double x, y, z, radius;
+};
+static_assert(sizeof(SweepPoint) == 32);
+
 // The force loop's near list (Contacts/PairSweep.h, makeNearPairs): the listed pairs closer
 // than ri + rj + skin, or with a contact pending, when it was made; the force loop sweeps these
 // instead of the whole list until some particle may have moved far enough to bring another
@@ -84,7 +94,7 @@ public:
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
-    std::vector<double> sweepRadiusScratch;  // the force loop's radii grown by the step's reach (ContactForces.h)
+    std::vector<SweepPoint> sweepPointScratch;  // the force loop's positions and radii grown by the step's reach (PairSweep.h)
     // The near list of the force loop, made with nearSkinFraction x skin (0: the whole list is
     // swept every step), and its scratch radii. 0.15 was the fastest of 0.06-0.4 on the
     // benchmark chute (Documentation/Performance.md); the environment variable
@@ -92,7 +102,7 @@ public:
     NearPairs near;
     double nearSkinFraction = defaultNearSkinFraction();
     static double defaultNearSkinFraction();
-    std::vector<double> nearRadiusScratch;
+    std::vector<SweepPoint> nearPointScratch;
 
     // True when some particle will have moved more than skin/2 since the last build by the end of
     // the next step (nearest-image displacement, so wrapping through a periodic face is not a

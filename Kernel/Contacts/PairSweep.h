@@ -73,12 +73,13 @@ inline SweepForm& sweepForm() {
 
 // The scalar rule for pair k of the list, `pair`: its separation into out at `picked`, which moves on if it is picked.
 template <bool nearestImage>
-[[gnu::always_inline]] inline void sweepPair(ParticlePair pair, std::size_t k, const Vec3* position,
-                                             const double* radius, const ContactHistory::State* states,
-                                             const PeriodicImage& image, SweptPairs& out, std::size_t& picked) {
-    Vec3 d = position[pair.i] - position[pair.j];
+[[gnu::always_inline]] inline void sweepPair(ParticlePair pair, std::size_t k, const SweepPoint* points,
+                                             const ContactHistory::State* states, const PeriodicImage& image,
+                                             SweptPairs& out, std::size_t& picked) {
+    const SweepPoint &a = points[pair.i], &b = points[pair.j];
+    Vec3 d(a.x - b.x, a.y - b.y, a.z - b.z);
     if constexpr (nearestImage) d = image.nearest(d);
-    const double limit = radius[pair.i] + radius[pair.j];
+    const double limit = a.radius + b.radius;
 #ifdef __FMA__
     const double r2 = std::fma(d.z(), d.z(), std::fma(d.y(), d.y(), d.x() * d.x()));  // as the AVX-512 lanes
 #else
@@ -95,19 +96,18 @@ template <bool nearestImage>
 // Without nearestImage the separation is the direct difference xi - xj: for the pairs that a
 // build found to keep it as their nearest image (PairList::interiorPairs).
 template <bool nearestImage = true>
-inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const Vec3* position,
-                       [[maybe_unused]] std::size_t particleCount, const double* radius,
-                       const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
-                       [[maybe_unused]] SweepForm form = sweepForm()) {
+inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t end, const SweepPoint* points,
+                       [[maybe_unused]] std::size_t particleCount, const ContactHistory::State* states,
+                       const PeriodicImage& image, SweptPairs& out, [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, k = begin;
 #ifdef TALUS_AVX512_SWEEP
-    // (The gathers index the coordinates with 32-bit 3 i; GCC 12 warns about the intrinsics' own
-    // undefined pass-through operands.)
-    const std::size_t vectorEnd = form == SweepForm::lanes && particleCount < (std::size_t{1} << 31) / 3 ? end : begin;
+    // (The gathers index the records' numbers with 32-bit 4 i; GCC 12 warns about the intrinsics'
+    // own undefined pass-through operands.)
+    const std::size_t vectorEnd = form == SweepForm::lanes && particleCount < (std::size_t{1} << 31) / 4 ? end : begin;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-    static_assert(sizeof(ParticlePair) == 8 && sizeof(Vec3) == 24 && sizeof(ContactHistory::State) == 1);
-    const double* coordinates = position[0].data();
+    static_assert(sizeof(ParticlePair) == 8 && sizeof(ContactHistory::State) == 1);
+    const double* numbers = &points[0].x;  // x, y, z, radius of each particle in turn
     __m512d length[3], half[3], minusHalf[3];
     for (int a = 0; a < 3; ++a) {
         length[a] = _mm512_set1_pd(image.length(a));
@@ -115,24 +115,24 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         minusHalf[a] = _mm512_set1_pd(-image.halfLength(a));
     }
     const __m512i evenLanes = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
-    const __m256i three = _mm256_set1_epi32(3), laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     double* separation[3] = {out.dx, out.dy, out.dz};
     for (; k + 8 <= vectorEnd; k += 8) {
         // i in the low eight 32-bit lanes, j in the high eight.
         const __m512i listed = _mm512_loadu_si512(pairs + k);
         const __m512i ij = _mm512_permutexvar_epi32(evenLanes, listed);
         const __m256i i = _mm512_castsi512_si256(ij), j = _mm512_extracti64x4_epi64(ij, 1);
-        const __m256i i3 = _mm256_mullo_epi32(i, three), j3 = _mm256_mullo_epi32(j, three);
+        const __m256i i4 = _mm256_slli_epi32(i, 2), j4 = _mm256_slli_epi32(j, 2);
         __m512d d[3];
         for (int a = 0; a < 3; ++a) {
-            d[a] = _mm512_sub_pd(_mm512_i32gather_pd(i3, coordinates + a, 8), _mm512_i32gather_pd(j3, coordinates + a, 8));
+            d[a] = _mm512_sub_pd(_mm512_i32gather_pd(i4, numbers + a, 8), _mm512_i32gather_pd(j4, numbers + a, 8));
             if constexpr (nearestImage) {
                 d[a] = _mm512_mask_sub_pd(d[a], _mm512_cmp_pd_mask(d[a], half[a], _CMP_GT_OQ), d[a], length[a]);
                 d[a] = _mm512_mask_add_pd(d[a], _mm512_cmp_pd_mask(d[a], minusHalf[a], _CMP_LT_OQ), d[a], length[a]);
             }
         }
         const __m512d r2 = _mm512_fmadd_pd(d[2], d[2], _mm512_fmadd_pd(d[1], d[1], _mm512_mul_pd(d[0], d[0])));
-        const __m512d limit = _mm512_add_pd(_mm512_i32gather_pd(i, radius, 8), _mm512_i32gather_pd(j, radius, 8));
+        const __m512d limit = _mm512_add_pd(_mm512_i32gather_pd(i4, numbers + 3, 8), _mm512_i32gather_pd(j4, numbers + 3, 8));
         const __mmask8 near = _mm512_cmp_pd_mask(r2, _mm512_mul_pd(limit, limit), _CMP_LT_OQ);
         const __m256i state = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(states + k)));
         const __mmask8 pick = near | _mm256_test_epi32_mask(state, state);
@@ -144,40 +144,42 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
     }
 #pragma GCC diagnostic pop
 #endif
-    for (; k < end; ++k) sweepPair<nearestImage>(pairs[k], k, position, radius, states, image, out, picked);
+    for (; k < end; ++k) sweepPair<nearestImage>(pairs[k], k, points, states, image, out, picked);
     out.count = picked;
 }
 
 // The same rule for the pairs [begin, end) of a near list (NearPairs), at most
 // SweptPairs::capacity of them; out.pair holds the pairs' places in the whole list.
 template <bool nearestImage>
-inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t end, const Vec3* position,
-                           const double* radius, const ContactHistory::State* states, const PeriodicImage& image,
-                           SweptPairs& out) {
+inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t end, const SweepPoint* points,
+                           const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out) {
     std::size_t picked = 0;
     for (std::size_t m = begin; m < end; ++m)
-        sweepPair<nearestImage>(near.pairs[m].particles, near.pairs[m].index, position, radius, states, image, out,
-                                picked);
+        sweepPair<nearestImage>(near.pairs[m].particles, near.pairs[m].index, points, states, image, out, picked);
     out.count = picked;
 }
 
-// The radii the sweep tests, grown by how far each particle can move within the step:
-// ri (1 + 1e-12) + 1.000001 |vi| dt for every particle, ghosts included (the force loop explains
-// the margins). Returns the largest growth, 1.000001 |vi| dt + 1e-12 ri.
-inline double growRadiiByStep(const ParticleStore& p, double dt, std::vector<double>& grown) {
-    grown.resize(p.size());
-    double* __restrict out = grown.data();  // (plain arrays: the loops vectorise)
+// The particles as the sweep reads them: each position, and each radius grown by how far the
+// particle can move within the step, ri (1 + 1e-12) + 1.000001 |vi| dt, for every particle,
+// ghosts included (the force loop explains the margins). Returns the largest growth,
+// 1.000001 |vi| dt + 1e-12 ri.
+inline double sweepPointsForStep(const ParticleStore& p, double dt, std::vector<SweepPoint>& points) {
+    points.resize(p.size());
+    if (points.empty()) return 0;
+    SweepPoint* __restrict out = points.data();  // (plain arrays: the loops vectorise)
     const double* __restrict radius = p.radius.data();
-    const double* __restrict v = p.velocity.empty() ? nullptr : p.velocity[0].data();
+    const double* __restrict x = p.position[0].data();
+    const double* __restrict v = p.velocity[0].data();
     const double reachPerSpeed = 1.000001 * dt;
-    for (std::size_t i = 0; i < grown.size(); ++i)
-        out[i] = radius[i] * (1 + 1e-12) +
-                 reachPerSpeed * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        out[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2],
+                  radius[i] * (1 + 1e-12) +
+                      reachPerSpeed * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2])};
     // The largest of the non-negative growths as bit patterns (the order of the values, and
     // vectorised where a floating-point maximum is not); a NaN wins.
     std::uint64_t largest = 0;
-    for (std::size_t i = 0; i < grown.size(); ++i)
-        largest = std::max(largest, std::bit_cast<std::uint64_t>(std::max(out[i] - radius[i], 0.0)));
+    for (std::size_t i = 0; i < points.size(); ++i)
+        largest = std::max(largest, std::bit_cast<std::uint64_t>(std::max(out[i].radius - radius[i], 0.0)));
     return std::bit_cast<double>(largest);
 }
 
@@ -211,11 +213,12 @@ inline bool useNearPairs(PairList& list, double growth) {
 // may have moved so far that a pair left out could come within the pick of a step, sweeping it
 // picks exactly the pairs the whole list's sweep picks, in the same order (ContactForces.h).
 inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t particleCount, const double* radius,
-                          double skin, const PeriodicImage& image, std::vector<double>& grownScratch,
+                          double skin, const PeriodicImage& image, std::vector<SweepPoint>& grownScratch,
                           SweptPairs& scratch) {
     NearPairs& near = list.near;
     grownScratch.resize(particleCount);
-    for (std::size_t i = 0; i < particleCount; ++i) grownScratch[i] = radius[i] + 0.5 * skin;
+    for (std::size_t i = 0; i < particleCount; ++i)
+        grownScratch[i] = {position[i].x(), position[i].y(), position[i].z(), radius[i] + 0.5 * skin};
     near.pairs.clear();
     const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
     for (std::size_t begin = 0; begin < list.pairs.size(); begin += SweptPairs::capacity) {
@@ -223,11 +226,11 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
         // (A chunk across the end of the interior pairs: the image for all of it, which leaves
         // an interior pair's direct difference as it is.)
         if (end <= interior)
-            sweepPairs<false>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
-                              list.history.states(), image, scratch);
+            sweepPairs<false>(list.pairs.data(), begin, end, grownScratch.data(), particleCount, list.history.states(),
+                              image, scratch);
         else
-            sweepPairs<true>(list.pairs.data(), begin, end, position, particleCount, grownScratch.data(),
-                             list.history.states(), image, scratch);
+            sweepPairs<true>(list.pairs.data(), begin, end, grownScratch.data(), particleCount, list.history.states(),
+                             image, scratch);
         for (std::size_t a = 0; a < scratch.count; ++a) near.pairs.push_back({scratch.particles[a], scratch.pair[a]});
     }
     near.interior = static_cast<std::size_t>(
@@ -247,8 +250,8 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
 // and keeps the faster (the fastest of 30 sweeps each, so that a busy machine's interruptions
 // do not decide). Called by the force loop on the first list long enough (a few chunks) for
 // the sweep to matter; the picks are the same either way, so only the speed depends on it.
-inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const Vec3* position,
-                            std::size_t particleCount, const double* radius, const ContactHistory::State* states,
+inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const SweepPoint* points,
+                            std::size_t particleCount, const ContactHistory::State* states,
                             const PeriodicImage& image, SweptPairs& scratch) {
     if (sweepForm() != SweepForm::undecided) return;
     using Clock = std::chrono::steady_clock;
@@ -257,7 +260,7 @@ inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const 
     for (int round = 0; round < 30; ++round)
         for (int form = 0; form < 2; ++form) {
             const Clock::time_point start = Clock::now();
-            sweepPairs(pairs, 0, end, position, particleCount, radius, states, image, scratch,
+            sweepPairs(pairs, 0, end, points, particleCount, states, image, scratch,
                        form == 0 ? SweepForm::scalar : SweepForm::lanes);
             fastest[form] = std::min(fastest[form], Clock::now() - start);
         }
