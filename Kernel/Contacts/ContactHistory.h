@@ -43,8 +43,8 @@ struct ContactHistory {
 // step but the spring only of the few that touch or are about to, so the states are kept apart,
 // one byte each; the spring and the last normal force, read and written together, share one
 // 32-byte record (one memory stream instead of two: on the hosts of 2026-12 a pass that reads
-// more than about eight arrays at once gets a third of the bandwidth of one that reads a single
-// array of records; Documentation/Performance.md "Scaling and memory").
+// 16 or more arrays at once gets under half the bandwidth of one that reads a single array of
+// records; Documentation/Performance.md "Scaling and memory").
 class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }
