@@ -112,17 +112,22 @@ public:
                 sweepPairs<nearestImage>(list.pairs.data(), begin, end, points, p_.size(), list.history.states(), image,
                                          swept);
             for (std::size_t a = 0; a < swept.count; ++a) {
-                if (prefetchPartners_ && a + prefetchAhead < swept.count)
+                if (prefetchPartners_ && a + prefetchAhead < swept.count) {
                     prefetchPartner(swept.particles[a + prefetchAhead].j);
+                    list.history.prefetch(swept.pair[a + prefetchAhead]);
+                }
                 pairContact(list, swept.pair[a], swept.particles[a], swept.separation(a));
             }
         }
     }
 
-    // The partner's data that the contact pass reads, asked for a few picked pairs ahead: the
-    // partners' slots jump about, and once the arrays outgrow the caches those loads miss. Only
-    // in large scenes: measured on the benchmark chute (Documentation/Performance.md), 7-10% faster
-    // at 108000 particles, no gain at 27000 and 1.5-2% slower at 3000 and 12000.
+    // The partner's data that the contact pass reads, and the pair's history, asked for a few
+    // picked pairs ahead: the partners' slots jump about, and the picked pairs are a sparse subset
+    // of the list whose histories no hardware prefetcher foresees, so once the arrays outgrow the
+    // caches those loads miss (the history's was the hottest instruction of the force loop at
+    // 108000). Only in large scenes: measured on the benchmark chute (Documentation/Performance.md),
+    // the partner's 7-10% faster at 108000 particles, no gain at 27000 and 1.5-2% slower at 3000
+    // and 12000; the history's another 6-8% at 108000, from the settled bed and the flow.
     static constexpr std::size_t prefetchAhead = 8, prefetchFromParticles = 65536;
     void prefetchPartner(std::uint32_t j) const {
         __builtin_prefetch(p_.velocity.data() + j);

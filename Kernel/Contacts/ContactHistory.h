@@ -72,6 +72,7 @@ public:
     void clearLastNormalForce(std::size_t k) { forces_[k].lastNormalForce = 0; }
     double& gapBoundOf(std::size_t k) { return forces_[k].spring.x(); }  // (ContactHistory::gapBound)
     double lastNormalForceOf(std::size_t k) const { return forces_[k].lastNormalForce; }
+    void prefetch(std::size_t k) const { __builtin_prefetch(forces_.data() + k); }  // (its spring and last force)
     const Vec3& springOf(std::size_t k) const { return forces_[k].spring; }
     void assign(std::size_t n) {
         forces_.assign(n, {});
