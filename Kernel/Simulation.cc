@@ -502,9 +502,11 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check) {
     if (records) {
         elasticEnergy_ = records->elasticEnergy();
         recordedContacts_ = records->count();
-        if (onRanks()) {
-            elasticEnergy_ = sumOverRanks(elasticEnergy_);
-            recordedContacts_ = static_cast<std::size_t>(sumOverRanks(static_cast<double>(recordedContacts_)));
+        if (onRanks()) {  // (one reduction for both)
+            std::vector<double> totals{elasticEnergy_, static_cast<double>(recordedContacts_)};
+            sumOverRanks(totals);
+            elasticEnergy_ = totals[0];
+            recordedContacts_ = static_cast<std::size_t>(totals[1]);
         }
     }
     if (check != OverlapCheck::none)
