@@ -309,14 +309,15 @@ private:
     // `created` terms (Math/SummationRounding.h), far below one particle's mass.
     bool conservationReported(const Census& c, double created, double deleted) const {
         const double createdMass = maser.seededMass() + maser.createdMass();
+        const double accountedMass = c.chuteMass + outlet.mass();
         const bool conserved = created == static_cast<double>(c.chute) + deleted &&
                                c.box == static_cast<std::size_t>(boxParticles_) &&
-                               equalUpToSummationRounding(createdMass, c.chuteMass + outlet.mass(), created);
+                               equalUpToSummationRounding(createdMass, accountedMass, created);
         if (rank() != 0) return conserved;
         std::printf("%s: created %.0f (seeded %.0f + crossed %.0f) = in the chute %zu + deleted %.0f; maser holds %zu of "
                     "%.0f; created mass %.10g, in the chute + deleted %.10g (apart by %.2g): mass conserved: %s\n", name().c_str(),
                     created, maser.seeded(), maser.crossings(), c.chute, deleted, c.box, boxParticles_, createdMass,
-                    c.chuteMass + outlet.mass(), std::abs(createdMass - c.chuteMass - outlet.mass()), conserved ? "yes" : "NO");
+                    accountedMass, std::abs(createdMass - accountedMass), conserved ? "yes" : "NO");
         // The inflow's composition: the small spheres' share of the created mass, against the
         // share of the mass the maser's flow carried through its face (the integral of m vx / L).
         const double carried[2] = {boxMassDisplacement_[0] / maserLength, boxMassDisplacement_[1] / maserLength};

@@ -96,7 +96,7 @@ public:
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
     std::vector<SweepPoint> sweepPointScratch;  // the force loop's positions and radii grown by the step's reach (PairSweep.h)
     // The near list of the force loop, made with nearSkinFraction x skin (0: the whole list is
-    // swept every step), and its scratch radii. 0.15 was the fastest of 0.06-0.4 on the
+    // swept every step), and its scratch points (positions, radii grown by half that skin). 0.15 was the fastest of 0.06-0.4 on the
     // benchmark chute (Documentation/Performance.md); the environment variable
     // TALUS_NEAR_SKIN_FRACTION sets another (for measurements).
     NearPairs near;
