@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 #include "Contacts/PairSweep.h"
@@ -99,4 +100,81 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         EXPECT_GT(expected.size(), pairs.size() / 10) << "the test must include pairs that need work";
         EXPECT_LT(expected.size(), pairs.size() / 2) << "and pairs that do not";
     }
+}
+
+// The growths in the flow's frame (sweepFrameVelocity, sweepPointsForStep): spheres moving
+// together at a large velocity with small fluctuations. Every pair that the force loop must
+// treat (touching, or apart but closing the gap within the step, as ContactForceLoop::pairContact
+// tests it) is picked with the frame as with the speeds, and the frame picks far fewer of the
+// others. The frame is the sampled mean velocity of the mobile spheres, zero without any or if
+// it is not finite.
+TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const Vec3 box(12, 12, 12), common(3, -1, 0.5);
+    Domain domain;
+    domain.lo = Vec3::Zero();
+    domain.hi = box;
+    domain.periodic = {true, true, true};
+    const PeriodicImage image(domain);
+    const double dt = 2e-3, fluctuation = 0.2;
+    // Spheres in pairs (2m, 2m + 1), the second at a gap of -0.01 to 0.02 from the first in a random
+    // direction: touching, closing within the step, and apart by up to a few steps' travel at
+    // the common speed (3.3 dt = 0.0066).
+    ParticleStore p;
+    const std::size_t n = 2000;
+    p.forEachArray([n](auto& array) { array.resize(n); });
+    std::vector<ParticlePair> pairs;
+    for (std::size_t i = 0; i < n; i += 2) {
+        p.position[i] = Vec3(unit(random) * box.x(), unit(random) * box.y(), unit(random) * box.z());
+        const Vec3 direction = Vec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5).normalized();
+        p.position[i + 1] = p.position[i] + (1 - 0.01 + 0.03 * unit(random)) * direction;
+        pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i + 1)});
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        p.velocity[i] = common + fluctuation * Vec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
+        p.radius[i] = 0.5;
+        p.fixed[i] = 0;
+    }
+    const Vec3 frame = sweepFrameVelocity(p);
+    EXPECT_LT((frame - common).norm(), fluctuation) << "the sample's mean is near the common velocity";
+    const std::vector<ContactHistory::State> states(pairs.size(), ContactHistory::apart);
+    auto pick = [&](const Vec3& u) {
+        std::vector<SweepPoint> points;
+        sweepPointsForStep(p, dt, u, points);
+        std::vector<std::uint32_t> picked;
+        SweptPairs swept;
+        for (std::size_t begin = 0; begin < pairs.size(); begin += SweptPairs::capacity) {
+            sweepPairs(pairs.data(), begin, std::min(pairs.size(), begin + SweptPairs::capacity), points.data(), n,
+                       states.data(), image, swept, SweepForm::scalar);
+            picked.insert(picked.end(), swept.pair, swept.pair + swept.count);
+        }
+        return picked;
+    };
+    const std::vector<std::uint32_t> inFrame = pick(frame), withSpeeds = pick(Vec3::Zero());
+    std::size_t needed = 0, missed = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const std::uint32_t i = pairs[k].i, j = pairs[k].j;
+        const Vec3 d = image.nearest(p.position[i] - p.position[j]);
+        const double distance = d.norm(), gap = distance - p.radius[i] - p.radius[j];
+        const double approach = -(p.velocity[i] - p.velocity[j]).dot(d / distance);  // > 0: closing
+        if (!(gap < 0 || (approach > 0 && gap < approach * dt))) continue;
+        ++needed;
+        missed += !std::binary_search(inFrame.begin(), inFrame.end(), static_cast<std::uint32_t>(k));
+    }
+    std::printf("[ measured ] %zu listed pairs, %zu need work; picked %zu in the flow's frame, %zu with the speeds\n",
+                pairs.size(), needed, inFrame.size(), withSpeeds.size());
+    EXPECT_GT(needed, 50u) << "the test needs touching and closing pairs";
+    EXPECT_EQ(missed, 0u) << "pairs that need work and were not picked in the flow's frame";
+    EXPECT_TRUE(std::includes(withSpeeds.begin(), withSpeeds.end(), inFrame.begin(), inFrame.end()))
+        << "the frame's picks are among those of the larger growths";
+    EXPECT_LT(inFrame.size() - needed, (withSpeeds.size() - needed) / 4)
+        << "the frame should pick far fewer pairs that need no work";
+
+    ParticleStore none = p;
+    for (auto& fixed : none.fixed) fixed = 1;
+    EXPECT_EQ(sweepFrameVelocity(none), Vec3::Zero()) << "no mobile particles: no frame";
+    ParticleStore blownUp = p;
+    blownUp.velocity[0].x() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(sweepFrameVelocity(blownUp), Vec3::Zero()) << "a non-finite mean: no frame";
 }

@@ -67,13 +67,15 @@ public:
         // Two passes per chunk of the list: a branch-free sweep over the listed pairs
         // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
         // next step, or just separated), then the contacts are computed for those alone.
-        // The sweep sees each particle's radius grown by how far it moves within the step, |v| dt:
-        // a pair closes its gap by at most |vi - vj| dt <= (|vi| + |vj|) dt, so a pair whose grown
+        // The sweep sees each particle's radius grown by how far it moves within the step relative
+        // to a frame moving with a velocity u common to all, |v - u| dt (PairSweep.h): a pair
+        // closes its gap by at most |vi - vj| dt <= (|vi - u| + |vj - u|) dt, so a pair whose grown
         // spheres are apart cannot touch within the step (the test of pairContact below). The
         // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
         // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
         // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
-        const double growth = sweepPointsForStep(p_, dt_, list.sweepPointScratch);
+        const Vec3 frame = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
+        const double growth = sweepPointsForStep(p_, dt_, frame, list.sweepPointScratch);
         const SweepPoint* points = list.sweepPointScratch.data();
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "Error.h"
 
@@ -60,6 +61,18 @@ double PairList::defaultNearSkinFraction() {
         return f;
     }();
     return fraction;
+}
+
+bool PairList::defaultSweepInFlowFrame() {
+    static const bool inFlowFrame = [] {
+        const char* text = std::getenv("TALUS_SWEEP_FRAME");
+        if (!text) return true;
+        const std::string value = text;
+        require(value == "flow" || value == "off",
+                "TALUS_SWEEP_FRAME must be 'flow' or 'off', got '" + value + "'");
+        return value == "flow";
+    }();
+    return inFlowFrame;
 }
 
 bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {

@@ -159,11 +159,34 @@ inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t
     out.count = picked;
 }
 
+// A velocity common to all particles for the sweep's growths (sweepPointsForStep): the mean
+// velocity of the mobile particles, from every 16th slot (any common velocity keeps the sweep's
+// bound; the mean of a sample makes the growths small in a flow at a sixteenth of a pass). Zero
+// without mobile particles in the sample or if the sample's mean is not finite (a blow-up is
+// reported by the list's check, PairList::needsRebuild).
+inline Vec3 sweepFrameVelocity(const ParticleStore& p) {
+    constexpr std::size_t stride = 16;
+    Vec3 sum = Vec3::Zero();
+    std::size_t mobile = 0;
+    for (std::size_t i = 0; i < p.size(); i += stride)
+        if (!p.fixed[i]) sum += p.velocity[i], ++mobile;
+    const Vec3 mean = mobile > 0 ? Vec3(sum / static_cast<double>(mobile)) : Vec3::Zero();
+    return mean.allFinite() ? mean : Vec3::Zero();
+}
+
 // The particles as the sweep reads them: each position, and each radius grown by how far the
-// particle can move within the step, ri (1 + 1e-12) + 1.000001 |vi| dt, for every particle,
-// ghosts included (the force loop explains the margins). Returns the largest growth,
-// 1.000001 |vi| dt + 1e-12 ri.
-inline double sweepPointsForStep(const ParticleStore& p, double dt, std::vector<SweepPoint>& points) {
+// particle can move within the step relative to the frame that moves with the velocity u
+// (sweepFrameVelocity), ri (1 + 1e-12) + 1.000001 |vi - u| dt, for every particle, ghosts
+// included. A pair closes its gap within the step by at most |vi - vj| dt, and
+// vi - vj = (vi - u) - (vj - u) for any u common to both: so the sum of two growths bounds it
+// whatever u is, and the force loop's picks of the pairs that need work do not depend on u
+// (the force loop explains the margins). With u = 0 the growths are the particles' own speeds:
+// in a chute flow, where all particles move downslope at about the mean velocity, those are
+// many times the relative speeds, and the sweep picks many pairs that then turn out apart and
+// not closing (Documentation/Performance.md). Returns the largest growth,
+// 1.000001 |vi - u| dt + 1e-12 ri.
+inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& frameVelocity,
+                                 std::vector<SweepPoint>& points) {
     points.resize(p.size());
     if (points.empty()) return 0;
     SweepPoint* __restrict out = points.data();  // (plain arrays: the loops vectorise)
@@ -171,10 +194,12 @@ inline double sweepPointsForStep(const ParticleStore& p, double dt, std::vector<
     const double* __restrict x = p.position[0].data();
     const double* __restrict v = p.velocity[0].data();
     const double reachPerSpeed = 1.000001 * dt;
-    for (std::size_t i = 0; i < points.size(); ++i)
+    const double u0 = frameVelocity.x(), u1 = frameVelocity.y(), u2 = frameVelocity.z();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double w0 = v[3 * i] - u0, w1 = v[3 * i + 1] - u1, w2 = v[3 * i + 2] - u2;
         out[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2],
-                  radius[i] * (1 + 1e-12) +
-                      reachPerSpeed * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2])};
+                  radius[i] * (1 + 1e-12) + reachPerSpeed * std::sqrt(w0 * w0 + w1 * w1 + w2 * w2)};
+    }
     // The largest of the non-negative growths as bit patterns (the order of the values, and
     // vectorised where a floating-point maximum is not); a NaN wins.
     std::uint64_t largest = 0;
@@ -183,9 +208,10 @@ inline double sweepPointsForStep(const ParticleStore& p, double dt, std::vector<
     return std::bit_cast<double>(largest);
 }
 
-// Whether this step may sweep the near list (made now if it is not). Every particle moved by at
-// most its growth in the drift before this step (the drift used the velocity the growth is
-// made of), so `moved` adds the largest growth each step. A pair left out of the near list was
+// Whether this step may sweep the near list (made now if it is not). The separation of every
+// pair changed by at most the sum of its two growths in the drift before this step (the drift
+// used the velocities the growths are made of, and the frame's velocity is common to both), so
+// `moved` adds the largest growth each step. A pair left out of the near list was
 // at least ri + rj + skin apart when the list was made and is now at least that less 2 moved;
 // the sweep picks it only within the sum of the two grown radii, at most ri + rj + 2 growth.
 // So the near list holds every pair the sweep would pick while moved + growth < skin / 2 (a
