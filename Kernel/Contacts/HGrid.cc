@@ -176,8 +176,12 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
         const double ri = particles.radius[i];
         const double di = 2 * ri + skin;
         const bool fixedI = particles.fixed[i];
+        // Each pair of one level once, as (i, j) with the partner j before i in the particle
+        // order: the force loop goes through the list in the order of i, so a partner's data was
+        // read shortly before, for its own pairs, and is still in the caches (with j after i it
+        // is not yet: at 10^6 particles the step took 4.5-6.5% longer; Documentation/Performance.md).
         auto consider = [&](std::uint32_t j, bool ownLevel) {
-            if (ownLevel && j <= i) return;
+            if (ownLevel && j >= i) return;
             if (fixedI && particles.fixed[j]) return;
             if (withinListReach(image.nearest(xi - particles.position[j]), ri, particles.radius[j], skin))
                 pairs.push_back({static_cast<std::uint32_t>(i), j});
