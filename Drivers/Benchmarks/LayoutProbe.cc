@@ -157,12 +157,21 @@ struct Arrays {
     double radius(std::uint32_t i) const { return radii[i]; }
     double invMass(std::uint32_t i) const { return inverseMass[i]; }
     void integrate(std::size_t begin, std::size_t end) {
+        // (Plain restrict pointers, as Talus's integration: over the vectors the compiler must
+        // assume that the stores may move their data and checks it for every block.)
+        double* __restrict x = position.data();
+        double* __restrict v = velocity.data();
+        double* __restrict w = spin.data();
+        double* __restrict f = force.data();
+        double* __restrict t = torque.data();
+        const double* __restrict m = inverseMass.data();
+        const double* __restrict I = inverseInertia.data();
         for (std::size_t i = begin; i < end; ++i)
             for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) {
-                velocity[c] += dt * inverseMass[i] * force[c];
-                position[c] += dt * velocity[c];
-                spin[c] += dt * inverseInertia[i] * torque[c];
-                force[c] = torque[c] = 0;
+                v[c] += dt * m[i] * f[c];
+                x[c] += dt * v[c];
+                w[c] += dt * I[i] * t[c];
+                f[c] = t[c] = 0;
             }
     }
 };
