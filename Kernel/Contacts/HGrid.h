@@ -38,7 +38,9 @@ public:
     explicit HGrid(double cellSizeRatio = 2.0);
 
     // Appends to pairs every pair (i, j) closer than ri + rj + skin (nearest periodic image),
-    // except pairs of two fixed particles, in an order that depends only on the positions.
+    // except pairs of two fixed particles, in an order that depends only on the positions:
+    // grouped by i in ascending order, a pair of two particles of one level with j < i (the
+    // force loop finds the partner's data in the caches, HGrid.cc).
     void findPairs(const ParticleStore& particles, const Domain& domain, double skin,
                    std::vector<ParticlePair>& pairs);
 
