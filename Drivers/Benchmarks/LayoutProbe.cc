@@ -29,6 +29,8 @@
 #include <random>
 #include <vector>
 
+#include "WholeArgument.h"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -239,23 +241,9 @@ double timeSteps(const Scene& s, bool fused, int steps) {
 
 }  // namespace
 
-// A whole number from argument `index` within [least, most], or `fallback` if it is absent; stops
-// with a message naming the argument if it is not one.
-long wholeArgument(int argc, char** argv, int index, long fallback, long least, long most, const char* name) {
-    if (argc <= index) return fallback;
-    char* end = nullptr;
-    const long value = std::strtol(argv[index], &end, 10);
-    if (*argv[index] == '\0' || *end != '\0' || value < least || value > most) {
-        std::fprintf(stderr, "LayoutProbe: %s must be a whole number from %ld to %ld, got '%s'\n", name, least, most,
-                     argv[index]);
-        std::exit(2);
-    }
-    return value;
-}
-
 int main(int argc, char** argv) {
-    const auto largest = static_cast<std::size_t>(wholeArgument(argc, argv, 1, 1000000, 1000, 20000000, "the largest number of particles"));
-    const auto perRun = static_cast<std::size_t>(wholeArgument(argc, argv, 2, 3000000, 1000, 1000000000, "the particle-steps per run"));
+    const auto largest = static_cast<std::size_t>(wholeArgument(argc, argv, 1, 1000000, 1000, 20000000, "LayoutProbe", "the largest number of particles"));
+    const auto perRun = static_cast<std::size_t>(wholeArgument(argc, argv, 2, 3000000, 1000, 1000000000, "LayoutProbe", "the particle-steps per run"));
     std::printf("ns per particle-step (the fastest of 3 runs of about %zu particle-steps); in brackets: against the first row\n\n", perRun);
     std::printf("| particles | pairs, touching per particle | arrays, partner after | fused | records, partner after | fused | arrays, partner before | records, partner before |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");

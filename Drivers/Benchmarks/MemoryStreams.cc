@@ -18,30 +18,19 @@
 #include <string>
 #include <vector>
 
+#include "WholeArgument.h"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// A positive whole number from argument `index`, or `fallback` if it is absent; stops with a
-// message naming the argument if it is not one.
-long positiveArgument(int argc, char** argv, int index, long fallback, const char* name) {
-    if (argc <= index) return fallback;
-    char* end = nullptr;
-    const long value = std::strtol(argv[index], &end, 10);
-    if (*argv[index] == '\0' || *end != '\0' || value <= 0 || value > 4096) {
-        std::fprintf(stderr, "MemoryStreams: %s must be a whole number from 1 to 4096, got '%s'\n", name, argv[index]);
-        std::exit(2);
-    }
-    return value;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    const long megabytes = positiveArgument(argc, argv, 1, 16, "megabytes per array (argument 1)");
-    const long repeats = positiveArgument(argc, argv, 2, 3, "repeats (argument 2)");
+    const long megabytes = wholeArgument(argc, argv, 1, 16, 1, 4096, "MemoryStreams", "megabytes per array (argument 1)");
+    const long repeats = wholeArgument(argc, argv, 2, 3, 1, 4096, "MemoryStreams", "repeats (argument 2)");
     // (Not a power of two, so that the arrays do not line up on the same cache sets.)
     const std::size_t n = static_cast<std::size_t>(megabytes) * (1 << 20) / 8 - 1237;
     const int counts[] = {1, 2, 4, 8, 12, 16, 24, 32};
