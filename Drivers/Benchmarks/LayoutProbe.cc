@@ -5,6 +5,7 @@
 //
 //   LayoutProbe [largest number of particles, default 1000000: 3000, 12000, 108000, 972000]
 //               [particle-steps per run, default 3000000]
+//               [steps per wave, default 8] [strip width, default 32]
 //
 // The scene: spheres of radius 0.5 on a jittered cubic lattice of spacing 1 (+-0.1), 12 layers
 // deep and periodic sideways (a chute bed), in Morton order as Talus orders its particles; every
@@ -20,6 +21,11 @@
 // 2026-12-03) or before it (since), and with the integration as its own pass or fused into the
 // force loop block by block (a block of 128 particles is integrated as soon as its forces are
 // complete: with partners after i, once the block's own pairs are done).
+// Two more columns time the same bed ordered in strips (StripWave.h): records, one step per pass
+// over all particles, and records advanced k steps at a time in waves along the strips (time
+// skewing; k and the strip width are the third and fourth arguments; a bed narrower than the
+// strips is one strip, with k as large as its width allows). The waves' velocities, spins and
+// springs after 2 k steps must equal those of 2 k single steps to round-off, or the program stops.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,18 +35,15 @@
 #include <random>
 #include <vector>
 
+#include "LayoutModel.h"
+#include "StripWave.h"
 #include "WholeArgument.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using namespace layoutModel;
 
-struct Pair {
-    std::uint32_t i, j;
-};
-struct History {
-    double spring[3], lastNormalForce;
-};
+using Clock = std::chrono::steady_clock;
 
 struct Scene {
     std::size_t n = 0;
@@ -55,12 +58,6 @@ std::uint64_t spreadBits(std::uint64_t v) {
     std::uint64_t spread = 0;
     for (int b = 0; b < 21; ++b) spread |= ((v >> b) & 1) << (3 * b);
     return spread;
-}
-
-// The separation of i and j, nearest image along x and y.
-void separation(const double* xi, const double* xj, double side, double d[3]) {
-    for (int e = 0; e < 3; ++e) d[e] = xi[e] - xj[e];
-    for (int e = 0; e < 2; ++e) d[e] -= d[e] > 0.5 * side ? side : d[e] < -0.5 * side ? -side : 0;
 }
 
 Scene makeScene(std::size_t target, bool partnerBefore) {
@@ -113,104 +110,12 @@ Scene makeScene(std::size_t target, bool partnerBefore) {
     return s;
 }
 
-constexpr double stiffness = 2e5, normalDamping = 50, tangentialDamping = 10, dt = 1e-7;
-
-// The force of pair (i, j) on both, through an accessor of the layout.
+// One step: the forces of all pairs in the order listed, then the kick and drift of all particles.
 template <class Data>
-inline void pairForce(const Pair& pair, double side, History& h, Data& p) {
-    const std::uint32_t i = pair.i, j = pair.j;
-    double d[3];
-    separation(p.x(i), p.x(j), side, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], ri = p.radius(i), rj = p.radius(j);
-    if (r2 >= (ri + rj) * (ri + rj)) {
-        h.lastNormalForce = 0;
-        return;
-    }
-    const double r = std::sqrt(r2), inverse = 1 / r, n[3] = {d[0] * inverse, d[1] * inverse, d[2] * inverse};
-    const double *vi = p.v(i), *vj = p.v(j), *wi = p.w(i), *wj = p.w(j);
-    double v[3], spin[3];
-    for (int e = 0; e < 3; ++e) v[e] = vi[e] - vj[e], spin[e] = ri * wi[e] + rj * wj[e];
-    const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-    const double turn[3] = {spin[1] * n[2] - spin[2] * n[1], spin[2] * n[0] - spin[0] * n[2], spin[0] * n[1] - spin[1] * n[0]};
-    const double reducedMass = 1 / (p.invMass(i) + p.invMass(j));
-    const double fn = stiffness * (ri + rj - r) - normalDamping * reducedMass * vn;
-    double f[3];
-    for (int e = 0; e < 3; ++e) {
-        const double vt = v[e] - vn * n[e] - turn[e];
-        h.spring[e] += vt * dt;
-        f[e] = fn * n[e] - tangentialDamping * reducedMass * vt - 0.1 * stiffness * h.spring[e];
-    }
-    h.lastNormalForce = fn;
-    const double arm[3] = {n[1] * f[2] - n[2] * f[1], n[2] * f[0] - n[0] * f[2], n[0] * f[1] - n[1] * f[0]};
-    double *fi = p.f(i), *fj = p.f(j), *ti = p.t(i), *tj = p.t(j);
-    for (int e = 0; e < 3; ++e) fi[e] += f[e], fj[e] -= f[e], ti[e] -= ri * arm[e], tj[e] -= rj * arm[e];
+void singleStep(const std::vector<Pair>& pairs, double side, std::vector<History>& history, Data& data, std::size_t n) {
+    for (std::size_t k = 0; k < pairs.size(); ++k) pairForce(pairs[k], side, history[k], data);
+    data.integrate(0, n);
 }
-
-struct Arrays {
-    std::vector<double> position, velocity, spin, force, torque, radii, inverseMass, inverseInertia;
-    explicit Arrays(const Scene& s)
-        : position(s.x), velocity(3 * s.n, 0.01), spin(3 * s.n, 0), force(3 * s.n, 0), torque(3 * s.n, 0),
-          radii(s.n, 0.5), inverseMass(s.n, 1.9), inverseInertia(s.n, 19) {}
-    const double* x(std::uint32_t i) const { return &position[3 * i]; }
-    const double* v(std::uint32_t i) const { return &velocity[3 * i]; }
-    const double* w(std::uint32_t i) const { return &spin[3 * i]; }
-    double* f(std::uint32_t i) { return &force[3 * i]; }
-    double* t(std::uint32_t i) { return &torque[3 * i]; }
-    double radius(std::uint32_t i) const { return radii[i]; }
-    double invMass(std::uint32_t i) const { return inverseMass[i]; }
-    void integrate(std::size_t begin, std::size_t end) {
-        // (Plain restrict pointers, as Talus's integration: over the vectors the compiler must
-        // assume that the stores may move their data and checks it for every block.)
-        double* __restrict x = position.data();
-        double* __restrict v = velocity.data();
-        double* __restrict w = spin.data();
-        double* __restrict f = force.data();
-        double* __restrict t = torque.data();
-        const double* __restrict m = inverseMass.data();
-        const double* __restrict I = inverseInertia.data();
-        for (std::size_t i = begin; i < end; ++i)
-            for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) {
-                v[c] += dt * m[i] * f[c];
-                x[c] += dt * v[c];
-                w[c] += dt * I[i] * t[c];
-                f[c] = t[c] = 0;
-            }
-    }
-};
-
-struct Records {
-    struct alignas(32) Motion {
-        double x[3], radius, v[3], invMass, w[3], invInertia;
-    };
-    struct alignas(16) Load {
-        double f[3], t[3];
-    };
-    std::vector<Motion> motion;
-    std::vector<Load> load;
-    explicit Records(const Scene& s) : motion(s.n), load(s.n, Load{{0, 0, 0}, {0, 0, 0}}) {
-        for (std::size_t i = 0; i < s.n; ++i)
-            motion[i] = {{s.x[3 * i], s.x[3 * i + 1], s.x[3 * i + 2]}, 0.5, {0.01, 0.01, 0.01}, 1.9, {0, 0, 0}, 19};
-    }
-    const double* x(std::uint32_t i) const { return motion[i].x; }
-    const double* v(std::uint32_t i) const { return motion[i].v; }
-    const double* w(std::uint32_t i) const { return motion[i].w; }
-    double* f(std::uint32_t i) { return load[i].f; }
-    double* t(std::uint32_t i) { return load[i].t; }
-    double radius(std::uint32_t i) const { return motion[i].radius; }
-    double invMass(std::uint32_t i) const { return motion[i].invMass; }
-    void integrate(std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            Motion& m = motion[i];
-            Load& l = load[i];
-            for (int c = 0; c < 3; ++c) {
-                m.v[c] += dt * m.invMass * l.f[c];
-                m.x[c] += dt * m.v[c];
-                m.w[c] += dt * m.invInertia * l.t[c];
-                l.f[c] = l.t[c] = 0;
-            }
-        }
-    }
-};
 
 // Nanoseconds per particle-step, the fastest of three runs of `steps` steps.
 template <class Data>
@@ -222,8 +127,7 @@ double timeSteps(const Scene& s, bool fused, int steps) {
         const Clock::time_point start = Clock::now();
         for (int step = 0; step < steps; ++step) {
             if (!fused) {
-                for (std::size_t k = 0; k < s.pairs.size(); ++k) pairForce(s.pairs[k], s.side, history[k], data);
-                data.integrate(0, s.n);
+                singleStep(s.pairs, s.side, history, data, s.n);
                 continue;
             }
             constexpr std::size_t block = 128;
@@ -239,27 +143,82 @@ double timeSteps(const Scene& s, bool fused, int steps) {
     return fastest / steps / static_cast<double>(s.n) * 1e9;
 }
 
+// The same for the bed in strips (records): one step per pass, or (wave) k steps at a time.
+template <bool waves>
+double timeStrips(const StripScene& s, const WaveSchedule& wave, int steps) {
+    Records data(s);
+    std::vector<History> history(s.pairs.size(), History{{0, 0, 0}, 0});
+    steps = (steps + wave.levels() - 1) / wave.levels() * wave.levels();
+    double fastest = INFINITY;
+    for (int run = 0; run < 3; ++run) {
+        const Clock::time_point start = Clock::now();
+        if constexpr (waves)
+            for (int w = 0; w < steps / wave.levels(); ++w) wave.advance(s, data, history);
+        else
+            for (int step = 0; step < steps; ++step) singleStep(s.pairs, s.side, history, data, s.n);
+        fastest = std::min(fastest, std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return fastest / steps / static_cast<double>(s.n) * 1e9;
+}
+
+// The largest difference between two waves and 2 k single steps from the same start, in the
+// velocities, spins and springs, relative to the largest of each.
+double waveDeviation(const StripScene& s, const WaveSchedule& wave) {
+    Records single(s), waved(s);
+    std::vector<History> singleHistory(s.pairs.size(), History{{0, 0, 0}, 0}), wavedHistory = singleHistory;
+    for (int step = 0; step < 2 * wave.levels(); ++step) singleStep(s.pairs, s.side, singleHistory, single, s.n);
+    for (int w = 0; w < 2; ++w) wave.advance(s, waved, wavedHistory);
+    double largest[3] = {}, difference[3] = {};
+    const auto compare = [&](int kind, const double* a, const double* b) {
+        for (int e = 0; e < 3; ++e)
+            largest[kind] = std::max(largest[kind], std::fabs(a[e])), difference[kind] = std::max(difference[kind], std::fabs(a[e] - b[e]));
+    };
+    for (std::uint32_t i = 0; i < s.n; ++i) compare(0, single.v(i), waved.v(i)), compare(1, single.w(i), waved.w(i));
+    for (std::size_t k = 0; k < s.pairs.size(); ++k) compare(2, singleHistory[k].spring, wavedHistory[k].spring);
+    double worst = 0;
+    for (int kind = 0; kind < 3; ++kind) worst = std::max(worst, largest[kind] > 0 ? difference[kind] / largest[kind] : difference[kind]);
+    return worst;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const auto largest = static_cast<std::size_t>(wholeArgument(argc, argv, 1, 1000000, 1000, 20000000, "LayoutProbe", "the largest number of particles"));
     const auto perRun = static_cast<std::size_t>(wholeArgument(argc, argv, 2, 3000000, 1000, 1000000000, "LayoutProbe", "the particle-steps per run"));
+    const int levels = static_cast<int>(wholeArgument(argc, argv, 3, 8, 1, 100, "LayoutProbe", "the steps per wave"));
+    const int stripWidth = static_cast<int>(wholeArgument(argc, argv, 4, 32, 2 * levels + 1, 1000, "LayoutProbe", "the strip width (at least 2 steps per wave + 1)"));
     std::printf("ns per particle-step (the fastest of 3 runs of about %zu particle-steps); in brackets: against the first row\n\n", perRun);
-    std::printf("| particles | pairs, touching per particle | arrays, partner after | fused | records, partner after | fused | arrays, partner before | records, partner before |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
-    double first[6] = {};
+    std::printf("| particles | pairs, touching per particle | arrays, partner after | fused | records, partner after | fused | arrays, partner before | records, partner before "
+                "| in strips: particles (strip width, steps per wave) | records, a step per pass | in waves | the wave's schedule, bytes per particle | its deviation from single steps |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    double first[8] = {};
     for (const std::size_t target : {3000, 12000, 108000, 972000, 8748000}) {  // as Drivers/Benchmarks/scaling.sh, then 9x
         if (target > largest) break;
         const Scene after = makeScene(target, false), before = makeScene(target, true);
         const int steps = static_cast<int>(std::max<std::size_t>(3, perRun / after.n));
-        const double t[6] = {timeSteps<Arrays>(after, false, steps), timeSteps<Arrays>(after, true, steps),
+        const double t6[6] = {timeSteps<Arrays>(after, false, steps), timeSteps<Arrays>(after, true, steps),
                              timeSteps<Records>(after, false, steps), timeSteps<Records>(after, true, steps),
                              timeSteps<Arrays>(before, false, steps), timeSteps<Records>(before, false, steps)};
-        if (first[0] == 0) std::copy(t, t + 6, first);
+        // A bed narrower than the strips is one strip, its waves as long as that width allows.
+        const int width = std::min(stripWidth, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target) / StripScene::layers))));
+        const StripScene strips = makeStripScene(target, width);
+        const WaveSchedule wave(strips, std::min(levels, (width - 1) / 2));
+        const double deviation = waveDeviation(strips, wave);
+        const int stripSteps = static_cast<int>(std::max<std::size_t>(3, perRun / strips.n));
+        const double t[8] = {t6[0], t6[1], t6[2], t6[3], t6[4], t6[5], timeStrips<false>(strips, wave, stripSteps),
+                             timeStrips<true>(strips, wave, stripSteps)};
+        if (first[0] == 0) std::copy(t, t + 8, first);
         std::printf("| %zu | %.2f, %.2f |", after.n, static_cast<double>(after.pairs.size()) / static_cast<double>(after.n),
                     after.touching);
         for (int c = 0; c < 6; ++c) std::printf(" %.1f (%.2fx) |", t[c], t[c] / first[c]);
-        std::printf("\n");
+        std::printf(" %zu (%d, %d) |", strips.n, width, wave.levels());
+        for (int c = 6; c < 8; ++c) std::printf(" %.1f (%.2fx) |", t[c], t[c] / first[c]);
+        std::printf(" %.0f | %.1e |\n", wave.bytesPerParticle(strips), deviation);
+        if (!(deviation < 1e-12)) {
+            std::fprintf(stderr, "LayoutProbe: the wave of %d steps differs from single steps by %.2e (relative): its schedule is wrong\n",
+                         wave.levels(), deviation);
+            return 1;
+        }
         std::fflush(stdout);
     }
     std::printf("LayoutProbe: done\n");
