@@ -81,10 +81,17 @@ inline StripScene makeStripScene(std::size_t target, int width) {
 // u, level t) in the order of u + t, then t. A pair is computed at level t by the first region
 // holding either of its particles at that level, when both are at step t (the making checks this
 // with a step counter per particle and stops if it ever fails), and its forces go to both.
+//
+// Stored lean: a row of a phase and strip (a host) computes each of its pairs over a run of
+// levels, 1.6 hosts per pair on average with strips 32 wide and 8 levels (not 8 copies, one per
+// level). A host lists its pairs in three groups: those it computes from level 0 up to some last
+// level, by that level descending; those from some first level to the last, by the first
+// ascending; and the few others with their levels. At level t the first two groups' pairs are a
+// leading range each, whose lengths the host keeps per level.
 class WaveSchedule {
 public:
     WaveSchedule(const StripScene& s, int levels) : levels_(levels) {
-        if (levels < 1 || s.width < 2 * levels + 1) {
+        if (levels < 1 || levels > 255 || s.width < 2 * levels + 1) {
             std::fprintf(stderr, "WaveSchedule: %d steps per wave need strips at least %d rows wide, got %d\n", levels,
                          2 * levels + 1, s.width);
             std::exit(2);
@@ -98,82 +105,139 @@ public:
             partner[fill[p.i]] = p.j, pairOf[fill[p.i]++] = id;
             partner[fill[p.j]] = p.i, pairOf[fill[p.j]++] = id;
         }
+        // Each pair's current run of levels in one host, closed when the pair moves to another.
+        std::vector<Run> open(s.pairs.size(), Run{none, 0, 0, 0}), runs;
+        const auto compute = [&](std::uint32_t host, std::uint32_t id, int t) {
+            Run& r = open[id];
+            if (r.host == host && r.last + 1 == t) return void(++r.last);
+            if (r.host != none) runs.push_back(r);
+            r = {host, id, static_cast<std::uint8_t>(t), static_cast<std::uint8_t>(t)};
+        };
         std::vector<std::uint32_t> step(s.n, 0);
-        const int side = s.side;
-        for (int phase = 0; phase < 4; ++phase) {
-            const bool xSeam = phase & 1, ySeam = phase & 2;
-            for (int q = 0; q < s.strips; ++q)
-                for (int wave = 0; wave <= 2 * side + 2 * levels; ++wave)
-                    for (int t = 0; t < levels; ++t) {
-                        const int u = wave - t;  // the row along x, unwrapped across the seam
-                        if (xSeam ? u < side - 1 - t || u > side + t : u < t + 1 || u > side - 2 - t) continue;
-                        const int b = ySeam ? (q + 1) * s.width - 1 - t : q * s.width + t + 1;
-                        const int across = ySeam ? 2 * t + 2 : s.width - 2 - 2 * t;
-                        addRegion(s, first, partner, pairOf, step, u % side, b, across, static_cast<std::uint32_t>(t));
+        forEachRegion(s, [&](std::uint32_t host, int a, int b, int across, int t) {
+            const auto column = [&](int k) { return static_cast<std::uint32_t>(s.slot(a, (b + k + s.side) % s.side, 0)); };
+            for (int k = 0; k < across; ++k)
+                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i) step[i] = advancing;
+            for (int k = 0; k < across; ++k)
+                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i)
+                    for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
+                        const std::uint32_t j = partner[e];
+                        if (step[j] == advancing ? j < i : step[j] != static_cast<std::uint32_t>(t)) {
+                            if (step[j] != advancing && step[j] != static_cast<std::uint32_t>(t) + 1) {
+                                std::fprintf(stderr, "WaveSchedule: particle %u at step %u when %u advances from step %d\n",
+                                             j, step[j], i, t);
+                                std::exit(1);
+                            }
+                            continue;  // computed already: by this region, or by the one that advanced j
+                        }
+                        compute(host, pairOf[e], t);
                     }
-        }
+            for (int k = 0; k < across; ++k)
+                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i) step[i] = static_cast<std::uint32_t>(t) + 1;
+        });
+        for (const Run& r : open)
+            if (r.host != none) runs.push_back(r);
+        store(s, runs);
     }
 
     int levels() const { return levels_; }
     // Bytes of the schedule per particle of the scene.
     double bytesPerParticle(const StripScene& s) const {
-        return static_cast<double>(pairs_.size() * (sizeof(Pair) + sizeof(std::uint32_t)) + runs_.size() * sizeof(Pair) +
-                                   regions_.size() * sizeof(Region)) / static_cast<double>(s.n);
+        return static_cast<double>(pairs_.size() * (sizeof(Pair) + sizeof(std::uint32_t)) + counts_.size() * sizeof(std::uint32_t) +
+                                   hosts_.size() * sizeof(Host) + levelsOfOthers_.size() * 2) / static_cast<double>(s.n);
     }
 
     // Advances every particle by levels() steps.
     template <class Data>
     void advance(const StripScene& s, Data& data, std::vector<History>& history) const {
-        std::size_t e = 0, r = 0;
-        for (const Region& region : regions_) {
-            for (; e < region.pairsEnd; ++e) pairForce(pairs_[e], s.side, history[historyOf_[e]], data);
-            for (; r < region.runsEnd; ++r) data.integrate(runs_[r].i, runs_[r].j);
-        }
+        forEachRegion(s, [&](std::uint32_t host, int a, int b, int across, int t) {
+            const Host& h = hosts_[host];
+            const std::uint32_t* count = &counts_[2 * (static_cast<std::size_t>(host) * levels_ + t)];
+            for (std::uint32_t e = h.fromStart; e < h.fromStart + count[0]; ++e) pairForce(pairs_[e], s.side, history[historyOf_[e]], data);
+            for (std::uint32_t e = h.toEnd; e < h.toEnd + count[1]; ++e) pairForce(pairs_[e], s.side, history[historyOf_[e]], data);
+            for (std::uint32_t e = h.others; e < h.end; ++e) {
+                const std::uint8_t* l = &levelsOfOthers_[2 * (e - h.others + h.othersAt)];
+                if (l[0] <= t && t <= l[1]) pairForce(pairs_[e], s.side, history[historyOf_[e]], data);
+            }
+            // The region's columns: consecutive slots up to the edge of a strip, where a seam
+            // between strips goes on in the next strip.
+            const int b0 = (b + s.side) % s.side, inFirst = std::min(across, s.width - b0 % s.width);
+            const std::size_t begin = s.slot(a, b0, 0);
+            data.integrate(begin, begin + static_cast<std::size_t>(inFirst) * s.layers);
+            if (inFirst < across) {
+                const std::size_t next = s.slot(a, (b0 + inFirst) % s.side, 0);
+                data.integrate(next, next + static_cast<std::size_t>(across - inFirst) * s.layers);
+            }
+        });
     }
 
 private:
-    struct Region {
-        std::uint32_t pairsEnd, runsEnd;
+    struct Run {  // a pair computed by one host at levels first .. last
+        std::uint32_t host, pair;
+        std::uint8_t first, last;
     };
-    static constexpr std::uint32_t advancing = 0xffffffffu;
+    struct Host {  // its pairs: [fromStart, toEnd), [toEnd, others), [others, end)
+        std::uint32_t fromStart, toEnd, others, end, othersAt;
+    };
+    static constexpr std::uint32_t advancing = 0xffffffffu, none = 0xffffffffu;
 
-    // Row `a`, columns b .. b + across - 1 (wrapped) of the bed at level t.
-    void addRegion(const StripScene& s, const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& partner,
-                   const std::vector<std::uint32_t>& pairOf, std::vector<std::uint32_t>& step, int a, int b, int across,
-                   std::uint32_t t) {
-        const auto column = [&](int k) { return static_cast<std::uint32_t>(s.slot(a, (b + k + s.side) % s.side, 0)); };
-        for (int k = 0; k < across; ++k)
-            for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i) step[i] = advancing;
-        for (int k = 0; k < across; ++k)
-            for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i)
-                for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
-                    const std::uint32_t j = partner[e];
-                    if (step[j] == advancing ? j < i : step[j] != t) {
-                        if (step[j] != advancing && step[j] != t + 1) {
-                            std::fprintf(stderr, "WaveSchedule: particle %u at step %u when %u advances from step %u\n", j,
-                                         step[j], i, t);
-                            std::exit(1);
-                        }
-                        continue;  // computed already: by this region, or by the one that advanced j
+    // Calls visit(host, row a, first column b, columns, level t) for every region in turn.
+    template <class Visit>
+    void forEachRegion(const StripScene& s, Visit visit) const {
+        const int side = s.side;
+        for (int phase = 0; phase < 4; ++phase) {
+            const bool xSeam = phase & 1, ySeam = phase & 2;
+            for (int q = 0; q < s.strips; ++q)
+                for (int wave = 0; wave <= 2 * side + 2 * levels_; ++wave)
+                    for (int t = 0; t < levels_; ++t) {
+                        const int u = wave - t;  // the row along x, unwrapped across the seam
+                        if (xSeam ? u < side - 1 - t || u > side + t : u < t + 1 || u > side - 2 - t) continue;
+                        const int b = ySeam ? (q + 1) * s.width - 1 - t : q * s.width + t + 1;
+                        const int across = ySeam ? 2 * t + 2 : s.width - 2 - 2 * t;
+                        const auto host = static_cast<std::uint32_t>((phase * s.strips + q) * side + u % side);
+                        visit(host, u % side, b, across, t);
                     }
-                    const Pair& p = s.pairs[pairOf[e]];
-                    pairs_.push_back(p);
-                    historyOf_.push_back(pairOf[e]);
-                }
-        for (int k = 0; k < across; ++k) {
-            const std::uint32_t i = column(k);
-            if (!runs_.empty() && runs_.back().j == i) runs_.back().j += s.layers;
-            else runs_.push_back({i, i + s.layers});
-            for (std::uint32_t m = i; m < i + s.layers; ++m) step[m] = t + 1;
         }
-        regions_.push_back({static_cast<std::uint32_t>(pairs_.size()), static_cast<std::uint32_t>(runs_.size())});
+    }
+
+    // The runs as the hosts' three groups of pairs, with the lengths of the first two per level.
+    void store(const StripScene& s, std::vector<Run>& runs) {
+        const int last = levels_ - 1;
+        const auto group = [last](const Run& r) { return r.first == 0 ? 0 : r.last == last ? 1 : 2; };
+        std::sort(runs.begin(), runs.end(), [&](const Run& x, const Run& y) {
+            if (x.host != y.host) return x.host < y.host;
+            if (group(x) != group(y)) return group(x) < group(y);
+            if (group(x) == 0 && x.last != y.last) return x.last > y.last;
+            if (group(x) == 1 && x.first != y.first) return x.first < y.first;
+            return x.pair < y.pair;
+        });
+        const std::size_t hosts = static_cast<std::size_t>(4 * s.strips) * s.side;
+        hosts_.assign(hosts, Host{});
+        counts_.assign(2 * hosts * levels_, 0);
+        std::size_t r = 0;
+        for (std::uint32_t h = 0; h < hosts; ++h) {
+            Host& host = hosts_[h];
+            host.fromStart = static_cast<std::uint32_t>(pairs_.size());
+            for (int g = 0; g < 3; ++g) {
+                if (g == 1) host.toEnd = static_cast<std::uint32_t>(pairs_.size());
+                if (g == 2) host.others = static_cast<std::uint32_t>(pairs_.size()), host.othersAt = static_cast<std::uint32_t>(levelsOfOthers_.size() / 2);
+                for (; r < runs.size() && runs[r].host == h && group(runs[r]) == g; ++r) {
+                    pairs_.push_back(s.pairs[runs[r].pair]);
+                    historyOf_.push_back(runs[r].pair);
+                    for (int t = runs[r].first; t <= runs[r].last && g < 2; ++t) ++counts_[2 * (h * static_cast<std::size_t>(levels_) + t) + g];
+                    if (g == 2) levelsOfOthers_.insert(levelsOfOthers_.end(), {runs[r].first, runs[r].last});
+                }
+            }
+            host.end = static_cast<std::uint32_t>(pairs_.size());
+        }
     }
 
     int levels_;
-    std::vector<Pair> pairs_;               // the pairs each region computes, in turn
-    std::vector<std::uint32_t> historyOf_;  // their places in the history
-    std::vector<Pair> runs_;  // [i, j): particles to integrate
-    std::vector<Region> regions_;
+    std::vector<Pair> pairs_;                   // the pairs of each host, in its three groups
+    std::vector<std::uint32_t> historyOf_;      // their places in the history
+    std::vector<Host> hosts_;                   // by (phase, strip, row)
+    std::vector<std::uint32_t> counts_;         // per host and level: the first two groups' pairs computed
+    std::vector<std::uint8_t> levelsOfOthers_;  // the third group's first and last levels
 };
 
 }  // namespace
