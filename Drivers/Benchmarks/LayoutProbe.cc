@@ -117,14 +117,24 @@ void singleStep(const std::vector<Pair>& pairs, double side, std::vector<History
     data.integrate(0, n);
 }
 
-// Nanoseconds per particle-step, the fastest of three runs of `steps` steps.
+// Nanoseconds per particle-step of n particles: the fastest of three runs of run(), which
+// advances them by `steps` steps.
+template <class Run>
+double fastestOfThree(std::size_t n, int steps, Run run) {
+    double fastest = INFINITY;
+    for (int round = 0; round < 3; ++round) {
+        const Clock::time_point start = Clock::now();
+        run();
+        fastest = std::min(fastest, std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return fastest / steps / static_cast<double>(n) * 1e9;
+}
+
 template <class Data>
 double timeSteps(const Scene& s, bool fused, int steps) {
     Data data(s);
     std::vector<History> history(s.pairs.size(), History{{0, 0, 0}, 0});
-    double fastest = INFINITY;
-    for (int run = 0; run < 3; ++run) {
-        const Clock::time_point start = Clock::now();
+    return fastestOfThree(s.n, steps, [&] {
         for (int step = 0; step < steps; ++step) {
             if (!fused) {
                 singleStep(s.pairs, s.side, history, data, s.n);
@@ -138,27 +148,21 @@ double timeSteps(const Scene& s, bool fused, int steps) {
                 data.integrate(begin, end);
             }
         }
-        fastest = std::min(fastest, std::chrono::duration<double>(Clock::now() - start).count());
-    }
-    return fastest / steps / static_cast<double>(s.n) * 1e9;
+    });
 }
 
-// The same for the bed in strips (records): one step per pass, or (wave) k steps at a time.
+// The same for the bed in strips (records): one step per pass, or (waves) k steps at a time.
 template <bool waves>
 double timeStrips(const StripScene& s, const WaveSchedule& wave, int steps) {
     Records data(s);
     std::vector<History> history(s.pairs.size(), History{{0, 0, 0}, 0});
     steps = (steps + wave.levels() - 1) / wave.levels() * wave.levels();
-    double fastest = INFINITY;
-    for (int run = 0; run < 3; ++run) {
-        const Clock::time_point start = Clock::now();
+    return fastestOfThree(s.n, steps, [&] {
         if constexpr (waves)
             for (int w = 0; w < steps / wave.levels(); ++w) wave.advance(s, data, history);
         else
             for (int step = 0; step < steps; ++step) singleStep(s.pairs, s.side, history, data, s.n);
-        fastest = std::min(fastest, std::chrono::duration<double>(Clock::now() - start).count());
-    }
-    return fastest / steps / static_cast<double>(s.n) * 1e9;
+    });
 }
 
 // The largest difference between two waves and 2 k single steps from the same start, in the
