@@ -1,10 +1,11 @@
-// The model of LayoutProbe (Drivers/Benchmarks/LayoutProbe.cc): a pair of spheres, its contact
-// history and force, and the particle data in the two layouts it compares. Any scene with the
+// The model of LayoutProbe (Drivers/Benchmarks/LayoutProbe.cc): its chute bed, a pair of spheres,
+// its contact history and force, and the particle data in the two layouts it compares. Any scene with the
 // particle count `n` and positions `x` (3 n) can be loaded into either layout.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 // Internal to the one program that includes it, as the compiler inlines such functions more
@@ -23,6 +24,53 @@ struct History {
 inline void separation(const double* xi, const double* xj, double side, double d[3]) {
     for (int e = 0; e < 3; ++e) d[e] = xi[e] - xj[e];
     for (int e = 0; e < 2; ++e) d[e] -= d[e] > 0.5 * side ? side : d[e] < -0.5 * side ? -side : 0;
+}
+
+// The model's chute bed: spheres of radius 0.5 on a jittered cubic lattice of spacing 1 (+-0.1),
+// `layers` deep and `side` sites along x and y (periodic), site (a, b, c) at slot slotOf(a, b, c).
+// Every pair closer than 1.25 is listed once, grouped by the slot that lists it, with its
+// partner after it in the slot order (or before it: partnerBefore).
+struct LatticeBed {
+    std::size_t n = 0;
+    std::vector<double> x;    // 3 n
+    std::vector<Pair> pairs;  // grouped by i
+    double touching = 0;      // pairs closer than 1, per particle
+};
+
+template <class SlotOf>
+LatticeBed makeLatticeBed(int side, int layers, SlotOf slotOf, bool partnerBefore) {
+    LatticeBed bed;
+    bed.n = static_cast<std::size_t>(side) * side * layers;
+    bed.x.resize(3 * bed.n);
+    std::vector<int> site(3 * bed.n);  // (a, b, c) of each slot
+    std::mt19937_64 random(1);
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+    for (int a = 0; a < side; ++a)
+        for (int b = 0; b < side; ++b)
+            for (int c = 0; c < layers; ++c) {
+                const std::size_t k = slotOf(a, b, c);
+                double* p = &bed.x[3 * k];
+                p[0] = a + 0.5 + jitter(random), p[1] = b + 0.5 + jitter(random), p[2] = c + 0.5 + jitter(random);
+                site[3 * k] = a, site[3 * k + 1] = b, site[3 * k + 2] = c;
+            }
+    constexpr double listed = 1.25;
+    std::size_t touching = 0;
+    for (std::size_t k = 0; k < bed.n; ++k)
+        for (int da = -1; da <= 1; ++da)
+            for (int db = -1; db <= 1; ++db)
+                for (int dc = -1; dc <= 1; ++dc) {
+                    const int c = site[3 * k + 2] + dc;
+                    if (c < 0 || c >= layers) continue;
+                    const std::size_t m = slotOf((site[3 * k] + da + side) % side, (site[3 * k + 1] + db + side) % side, c);
+                    if (partnerBefore ? m >= k : m <= k) continue;  // each pair once
+                    double d[3];
+                    separation(&bed.x[3 * k], &bed.x[3 * m], side, d);
+                    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                    if (r2 < listed * listed) bed.pairs.push_back({static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(m)});
+                    touching += r2 < 1;
+                }
+    bed.touching = static_cast<double>(touching) / static_cast<double>(bed.n);
+    return bed;
 }
 
 constexpr double stiffness = 2e5, normalDamping = 50, tangentialDamping = 10, dt = 1e-7;

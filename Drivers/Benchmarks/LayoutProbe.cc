@@ -1,6 +1,6 @@
 // A model of the step's memory traffic, to tell which data layout could keep the time per
 // particle-step flat from 10^3 to 10^6 particles on the machine at hand (issue 3's goal;
-// Documentation/Performance.md "Scaling and memory"). Not Talus's code: a few dozen lines of
+// Documentation/CacheCliff.md). Not Talus's code: a few dozen lines of
 // force loop and integration, so that layouts can be swapped in an afternoon, not in a rewrite.
 //
 //   LayoutProbe [largest number of particles, default 1000000: 3000, 12000, 108000, 972000]
@@ -32,7 +32,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
 #include "LayoutModel.h"
@@ -62,50 +61,22 @@ std::uint64_t spreadBits(std::uint64_t v) {
 
 Scene makeScene(std::size_t target, bool partnerBefore) {
     constexpr int layers = 12;
-    Scene s;
     const int side = std::max(4, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target) / layers))));
-    s.side = side;
-    struct Site {
-        std::uint64_t key;
-        int a, b, c;
-        double x[3];
-    };
-    std::mt19937_64 random(1);
-    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-    std::vector<Site> sites;
+    // Each site's slot: its rank in the Morton order of (a, b, c).
+    const auto cell = [&](int a, int b, int c) { return (static_cast<std::size_t>(a) * side + b) * layers + c; };
+    std::vector<std::uint64_t> keyOf(static_cast<std::size_t>(side) * side * layers);
     for (int a = 0; a < side; ++a)
         for (int b = 0; b < side; ++b)
-            for (int c = 0; c < layers; ++c)
-                sites.push_back({spreadBits(a) | spreadBits(b) << 1 | spreadBits(c) << 2, a, b, c,
-                                 {a + 0.5 + jitter(random), b + 0.5 + jitter(random), c + 0.5 + jitter(random)}});
-    std::sort(sites.begin(), sites.end(), [](const Site& p, const Site& q) { return p.key < q.key; });
-    s.n = sites.size();
-    const auto cell = [&](int a, int b, int c) { return (static_cast<std::size_t>(a) * side + b) * layers + c; };
-    std::vector<std::uint32_t> slot(s.n);
-    s.x.resize(3 * s.n);
-    for (std::size_t k = 0; k < s.n; ++k) {
-        slot[cell(sites[k].a, sites[k].b, sites[k].c)] = static_cast<std::uint32_t>(k);
-        std::copy(sites[k].x, sites[k].x + 3, &s.x[3 * k]);
-    }
-    constexpr double listed = 1.25;
-    std::size_t touching = 0;
-    for (std::size_t k = 0; k < s.n; ++k)
-        for (int da = -1; da <= 1; ++da)
-            for (int db = -1; db <= 1; ++db)
-                for (int dc = -1; dc <= 1; ++dc) {
-                    const int c = sites[k].c + dc;
-                    if (c < 0 || c >= layers) continue;
-                    const std::uint32_t m = slot[cell((sites[k].a + da + side) % side, (sites[k].b + db + side) % side, c)];
-                    if (partnerBefore ? m >= k : m <= k) continue;  // each pair once
-                    double d[3];
-                    separation(&s.x[3 * k], &s.x[3 * m], s.side, d);
-                    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                    if (r2 < listed * listed) s.pairs.push_back({static_cast<std::uint32_t>(k), m});
-                    touching += r2 < 1;
-                }
-    s.touching = static_cast<double>(touching) / static_cast<double>(s.n);
+            for (int c = 0; c < layers; ++c) keyOf[cell(a, b, c)] = spreadBits(a) | spreadBits(b) << 1 | spreadBits(c) << 2;
+    std::vector<std::uint32_t> byKey(keyOf.size()), slot(keyOf.size());
+    for (std::uint32_t k = 0; k < byKey.size(); ++k) byKey[k] = k;
+    std::sort(byKey.begin(), byKey.end(), [&](std::uint32_t p, std::uint32_t q) { return keyOf[p] < keyOf[q]; });
+    for (std::uint32_t k = 0; k < byKey.size(); ++k) slot[byKey[k]] = k;
+    LatticeBed bed = makeLatticeBed(side, layers, [&](int a, int b, int c) { return slot[cell(a, b, c)]; }, partnerBefore);
+    Scene s;
+    s.n = bed.n, s.side = side, s.x = std::move(bed.x), s.pairs = std::move(bed.pairs), s.touching = bed.touching;
     s.firstPair.assign(s.n + 1, 0);
-    for (const Pair& p : s.pairs) ++s.firstPair[p.i + 1];
+    for (const Pair& pair : s.pairs) ++s.firstPair[pair.i + 1];
     for (std::size_t k = 0; k < s.n; ++k) s.firstPair[k + 1] += s.firstPair[k];
     return s;
 }

@@ -1,6 +1,6 @@
 // Time skewing for the model of LayoutProbe (Drivers/Benchmarks/LayoutProbe.cc): the particles
 // advanced several steps while their data is in the caches, instead of one step per pass over
-// all of them (Performance.md, "Scaling and memory"). A step of a pair force and a kick-drift
+// all of them (Documentation/CacheCliff.md). A step of a pair force and a kick-drift
 // per particle depends only on the particle's partners at the step before, so a region can be
 // advanced from step t to t + 1 as soon as it and its partners have reached step t, and before
 // its partners go on to t + 1. The wave below orders such advances so that each stretch of a
@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
 #include "LayoutModel.h"
@@ -42,33 +41,22 @@ inline StripScene makeStripScene(std::size_t target, int width) {
     s.width = width;
     s.strips = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(target) / s.layers) / width)));
     s.side = s.strips * width;
-    s.n = static_cast<std::size_t>(s.side) * s.side * s.layers;
-    s.x.resize(3 * s.n);
-    std::mt19937_64 random(1);
-    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-    for (int a = 0; a < s.side; ++a)
-        for (int b = 0; b < s.side; ++b)
-            for (int c = 0; c < s.layers; ++c) {
-                double* p = &s.x[3 * s.slot(a, b, c)];
-                p[0] = a + 0.5 + jitter(random), p[1] = b + 0.5 + jitter(random), p[2] = c + 0.5 + jitter(random);
-            }
-    constexpr double listed = 1.25;
-    for (std::size_t k = 0; k < s.n; ++k) {
-        const int c = static_cast<int>(k % s.layers), b0 = static_cast<int>(k / s.layers % width);
-        const int a = static_cast<int>(k / s.layers / width % s.side), b = static_cast<int>(k / s.layers / width / s.side) * width + b0;
-        for (int da = -1; da <= 1; ++da)
-            for (int db = -1; db <= 1; ++db)
-                for (int dc = -1; dc <= 1; ++dc) {
-                    if (c + dc < 0 || c + dc >= s.layers) continue;
-                    const std::size_t m = s.slot((a + da + s.side) % s.side, (b + db + s.side) % s.side, c + dc);
-                    if (m <= k) continue;
-                    double d[3];
-                    separation(&s.x[3 * k], &s.x[3 * m], s.side, d);
-                    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < listed * listed)
-                        s.pairs.push_back({static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(m)});
-                }
-    }
+    LatticeBed bed = makeLatticeBed(s.side, s.layers, [&](int a, int b, int c) { return s.slot(a, b, c); }, false);
+    s.n = bed.n, s.x = std::move(bed.x), s.pairs = std::move(bed.pairs);
     return s;
+}
+
+// The particles of row a, columns b .. b + across - 1 (wrapped): runs(begin, end) for each run of
+// consecutive slots, up to the edge of a strip, where a seam between strips goes on in the next.
+template <class Runs>
+void forEachRun(const StripScene& s, int a, int b, int across, Runs runs) {
+    const int b0 = (b + s.side) % s.side, inFirst = std::min(across, s.width - b0 % s.width);
+    const std::size_t begin = s.slot(a, b0, 0);
+    runs(begin, begin + static_cast<std::size_t>(inFirst) * s.layers);
+    if (inFirst < across) {
+        const std::size_t next = s.slot(a, (b0 + inFirst) % s.side, 0);
+        runs(next, next + static_cast<std::size_t>(across - inFirst) * s.layers);
+    }
 }
 
 // k steps of a StripScene as a sequence of regions, each a row (along x) of a strip's stretch
@@ -92,8 +80,8 @@ class WaveSchedule {
 public:
     WaveSchedule(const StripScene& s, int levels) : levels_(levels) {
         if (levels < 1 || levels > 255 || s.width < 2 * levels + 1) {
-            std::fprintf(stderr, "WaveSchedule: %d steps per wave need strips at least %d rows wide, got %d\n", levels,
-                         2 * levels + 1, s.width);
+            std::fprintf(stderr, "WaveSchedule: waves of 1 to 255 steps, in strips at least 2 steps + 1 rows wide; got %d steps, %d rows\n",
+                         levels, s.width);
             std::exit(2);
         }
         std::vector<std::uint32_t> first(s.n + 1, 0), partner(2 * s.pairs.size()), pairOf(2 * s.pairs.size());
@@ -115,11 +103,11 @@ public:
         };
         std::vector<std::uint32_t> step(s.n, 0);
         forEachRegion(s, [&](std::uint32_t host, int a, int b, int across, int t) {
-            const auto column = [&](int k) { return static_cast<std::uint32_t>(s.slot(a, (b + k + s.side) % s.side, 0)); };
-            for (int k = 0; k < across; ++k)
-                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i) step[i] = advancing;
-            for (int k = 0; k < across; ++k)
-                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i)
+            forEachRun(s, a, b, across, [&](std::size_t begin, std::size_t end) {
+                std::fill(step.begin() + static_cast<std::ptrdiff_t>(begin), step.begin() + static_cast<std::ptrdiff_t>(end), advancing);
+            });
+            forEachRun(s, a, b, across, [&](std::size_t begin, std::size_t end) {
+                for (auto i = static_cast<std::uint32_t>(begin); i < end; ++i)
                     for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
                         const std::uint32_t j = partner[e];
                         if (step[j] == advancing ? j < i : step[j] != static_cast<std::uint32_t>(t)) {
@@ -132,8 +120,11 @@ public:
                         }
                         compute(host, pairOf[e], t);
                     }
-            for (int k = 0; k < across; ++k)
-                for (std::uint32_t i = column(k); i < column(k) + s.layers; ++i) step[i] = static_cast<std::uint32_t>(t) + 1;
+            });
+            forEachRun(s, a, b, across, [&](std::size_t begin, std::size_t end) {
+                std::fill(step.begin() + static_cast<std::ptrdiff_t>(begin), step.begin() + static_cast<std::ptrdiff_t>(end),
+                          static_cast<std::uint32_t>(t) + 1);
+            });
         });
         for (const Run& r : open)
             if (r.host != none) runs.push_back(r);
@@ -159,15 +150,7 @@ public:
                 const std::uint8_t* l = &levelsOfOthers_[2 * (e - h.others + h.othersAt)];
                 if (l[0] <= t && t <= l[1]) pairForce(pairs_[e], s.side, history[historyOf_[e]], data);
             }
-            // The region's columns: consecutive slots up to the edge of a strip, where a seam
-            // between strips goes on in the next strip.
-            const int b0 = (b + s.side) % s.side, inFirst = std::min(across, s.width - b0 % s.width);
-            const std::size_t begin = s.slot(a, b0, 0);
-            data.integrate(begin, begin + static_cast<std::size_t>(inFirst) * s.layers);
-            if (inFirst < across) {
-                const std::size_t next = s.slot(a, (b0 + inFirst) % s.side, 0);
-                data.integrate(next, next + static_cast<std::size_t>(across - inFirst) * s.layers);
-            }
+            forEachRun(s, a, b, across, [&](std::size_t begin, std::size_t end) { data.integrate(begin, end); });
         });
     }
 

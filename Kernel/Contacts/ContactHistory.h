@@ -44,7 +44,7 @@ struct ContactHistory {
 // one byte each; the spring and the last normal force, read and written together, share one
 // 32-byte record (one memory stream instead of two: on the hosts of 2026-12 a pass that reads
 // 16 or more arrays at once gets under half the bandwidth of one that reads a single array of
-// records; Documentation/Performance.md "Scaling and memory").
+// records; Documentation/CacheCliff.md).
 class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }
