@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -467,7 +469,7 @@ void Simulation::initialise(bool restarted) {
     records_.release();
 }
 
-void Simulation::computeForces(ContactRecords* records, OverlapCheck check) {
+void Simulation::computeForces(ContactRecords* records, OverlapCheck check, const DriftPassResult* drifted) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
@@ -476,13 +478,17 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check) {
         rebuild = updateNeighbourhoodOnRanks(carried);
     } else {
         list.relist(p, state_.domain, state_.walls);  // particles added or moved by boundaries
-        rebuild = list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
-        if (rebuild && state_.settings.reorderParticles) reorderParticles();
+        rebuild = drifted ? list.needsRebuild(drifted->moves, p, state_.time, state_.settings.timeStep)
+                          : list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
+        if (rebuild && state_.settings.reorderParticles) reorderParticles(/*withPreviousForces*/ drifted != nullptr);
     }
     // The forces of the last step become previousForce_ by a swap (no copy: at 10^6 particles a
-    // step is bound by memory bandwidth), and the old array is overwritten with gravity.
-    previousForce_.swap(p.force);
-    startForcesWithGravity(p, state_.gravity);
+    // step is bound by memory bandwidth), and the old array is overwritten with gravity (done by
+    // the drift pass if there was one).
+    if (!drifted) {
+        previousForce_.swap(p.force);
+        startForcesWithGravity(p, state_.gravity);
+    }
     if (rebuild && onRanks())
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
     else if (rebuild)
@@ -525,7 +531,7 @@ std::size_t Simulation::slotOf(std::uint64_t id, bool ghosts) const {
 
 // Cells of the largest diameter: the particles of one cell and its neighbours, which make up most
 // listed pairs, end up close in memory.
-void Simulation::reorderParticles() {
+void Simulation::reorderParticles(bool withPreviousForces) {
     ParticleStore& p = state_.particles;
     double largest = 0;
     for (double r : p.radius) largest = std::max(largest, r);
@@ -537,6 +543,12 @@ void Simulation::reorderParticles() {
     for (std::size_t k = 0; k < order.size() && unchanged; ++k) unchanged = order[k] == k;
     if (unchanged) return;
     p.permute(order);
+    if (withPreviousForces) {  // (the drift pass has made them the last step's already)
+        std::vector<Vec3> sorted;
+        sorted.reserve(order.size());
+        for (std::size_t k : order) sorted.push_back(previousForce_[k]);
+        previousForce_.swap(sorted);
+    }
     state_.pairList.followPermutation(order);
 }
 
@@ -575,17 +587,51 @@ void Simulation::integrate(bool recordContacts) {
     const double dt = state_.settings.timeStep;
     const double half = 0.5 * dt;
     const std::size_t owned = p.owned();  // ghosts are their owners' business
-    halfKickAndDrift(p, owned, half, dt);
-    if (p.hasShapes()) turnShapedParticles(half, dt);
-    moveWithPrescribedMotion();
-    if (state_.domain.anyPeriodic()) state_.domain.wrap(p.position.data(), owned);
+    std::optional<DriftPassResult> drifted;
+    if (driftsInOnePass()) {
+        PairList& list = state_.pairList;
+        // The sweep's frame: the mean velocity the pass measured the step before, or a sample's.
+        const Vec3 frame = !list.sweepInFlowFrame ? Vec3::Zero()
+                           : driftFrame_          ? *driftFrame_
+                                                  : sweepFrameVelocity(p);
+        drifted = kickDriftAndStartForces(p, previousForce_, state_.domain,
+                                          list.comparable(p) ? &list.referencePosition : nullptr, state_.gravity,
+                                          frame, dt, list.sweepPointScratch);
+        list.sweepPointsGrowth = drifted->growth;
+        driftFrame_ = drifted->meanVelocity;
+    } else {
+        driftFrame_.reset();
+        halfKickAndDrift(p, owned, half, dt);
+        if (p.hasShapes()) turnShapedParticles(half, dt);
+        moveWithPrescribedMotion();
+        if (state_.domain.anyPeriodic()) state_.domain.wrap(p.position.data(), owned);
+    }
     state_.time += dt;
     ++state_.step;
     for (Boundary* b : boundaries_) b->afterDrift(*this);
     computeForces(recordContacts ? &records_ : nullptr,
-                  recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep);
+                  recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep, drifted ? &*drifted : nullptr);
     halfKick(p, p.owned(), half);
     if (p.hasShapes()) turnShapedParticles(half, 0);
+}
+
+// Particles/DriftPass.h: where nothing but the particles' own motion happens between the drift
+// and the forces, and the pair list's sweep is the one of one rank.
+bool Simulation::driftsInOnePass() const {
+    const ParticleStore& p = state_.particles;
+    return driftInOnePass_ && !onRanks() && p.ghostCount == 0 && !p.hasShapes() && state_.motions.empty() &&
+           boundaries_.empty() && !state_.domain.oneWay.active && state_.pairList.noted().empty();
+}
+
+bool Simulation::defaultDriftInOnePass() {
+    static const bool onePass = [] {
+        const char* text = std::getenv("TALUS_DRIFT_PASS");
+        if (!text) return true;
+        const std::string value = text;
+        require(value == "on" || value == "off", "TALUS_DRIFT_PASS must be 'on' or 'off', got '" + value + "'");
+        return value == "on";
+    }();
+    return onePass;
 }
 
 // The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half

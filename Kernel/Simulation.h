@@ -9,6 +9,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "Contacts/ContactForces.h"
 #include "Contacts/HGrid.h"
 #include "Error.h"
+#include "Particles/DriftPass.h"
 #include "Particles/Energies.h"
 #include "Particles/RigidBodyRotation.h"
 #include "SimulationState.h"
@@ -49,6 +51,11 @@ public:
     // Particles/SpaceFillingCurve.h). Slots then change during a run: find a particle by its id.
     void setParticleReordering(bool on) { state_.settings.reorderParticles = on; }
     void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
+    // The first half of each step in one pass over the particles where the scene allows it
+    // (Particles/DriftPass.h; default on, TALUS_DRIFT_PASS=off for measurements): the same
+    // trajectories as the pass-by-pass step, for tests that compare the two.
+    void setDriftInOnePass(bool on) { driftInOnePass_ = on; }
+    bool driftsInOnePass() const;  // whether the next step will
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
     RunSettings& settings() { return state_.settings; }
 
@@ -188,7 +195,10 @@ private:
     // collective per step instead of two. Output steps and the last step agree at once, so that
     // no file holds a state past a blow-up that a rank has found.
     enum class OverlapCheck { none, now, withNextStep };
-    void computeForces(ContactRecords* records, OverlapCheck check = OverlapCheck::now);
+    // drifted: what the step's drift pass measured (Particles/DriftPass.h), which has also made the
+    // sweep's points and started the forces; null: computeForces measures and starts them itself.
+    void computeForces(ContactRecords* records, OverlapCheck check = OverlapCheck::now,
+                       const DriftPassResult* drifted = nullptr);
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);
     std::size_t slotOf(std::uint64_t id, bool ghosts) const;
     void integrate(bool recordContacts);
@@ -196,7 +206,7 @@ private:
     void turnShapedParticles(double kick, double drift);
     void requireMotion(int motion, const std::string& what) const;
     std::size_t fixParticle(std::size_t slot, int motion);
-    void reorderParticles();
+    void reorderParticles(bool withPreviousForces);
     std::uint64_t saveEvery() const;
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
@@ -219,6 +229,9 @@ private:
     ContactRecords records_;        // of the last output step (each contact only with .fstat)
     std::size_t recordedContacts_ = 0;  // their number (on ranks, over all ranks)
     bool idOrderedSums_ = false;  // --id-ordered-sums (Contacts/IdOrderedForceSums.h)
+    bool driftInOnePass_ = defaultDriftInOnePass();
+    std::optional<Vec3> driftFrame_;  // the last drift pass's mean velocity (DriftPassResult)
+    static bool defaultDriftInOnePass();
     IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
     std::unique_ptr<CommandLine> commandLine_;

@@ -74,8 +74,14 @@ public:
         // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
         // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
         // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
-        const Vec3 frame = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
-        const double growth = sweepPointsForStep(p_, dt_, frame, list.sweepPointScratch);
+        double growth;
+        if (list.sweepPointsGrowth && list.sweepPointScratch.size() == p_.size()) {  // made with the drift
+            growth = *list.sweepPointsGrowth;
+        } else {
+            const Vec3 frame = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
+            growth = sweepPointsForStep(p_, dt_, frame, list.sweepPointScratch);
+        }
+        list.sweepPointsGrowth.reset();
         const SweepPoint* points = list.sweepPointScratch.data();
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]

@@ -16,36 +16,33 @@ namespace talus {
 namespace {
 
 // The largest squared displacement from the reference positions (nearest image), the largest
-// squared speed, and the largest |x|^2 + |v|^2 (not finite if any coordinate is not) of the
-// particles [0, n), over plain arrays. Squares are never negative, and for such doubles the order
-// of the bit patterns is the order of the values, NaN (all exponent bits set) above everything:
-// so the maxima are taken as unsigned integers, which GCC vectorises where it leaves a
-// floating-point maximum scalar (NaN semantics), and a NaN wins them. This pass runs every
-// step over every particle (6% of a dilute flow's step when it was scalar).
-struct LargestMoves {
-    double displacement2, speed2;
-    bool finite;
-};
+// squared speed, and whether the motion is sane (saneMotion) of the particles [0, n), over plain
+// arrays. Squares and magnitudes are never negative, and for such doubles the order of the bit
+// patterns is the order of the values, NaN (all exponent bits set) above everything: so the
+// maxima are taken as unsigned integers, which GCC vectorises where it leaves a floating-point
+// maximum scalar (NaN semantics), and a NaN wins them. This pass runs every step over every
+// particle (6% of a dilute flow's step when it was scalar) unless the drift pass does its work
+// (Particles/DriftPass.h).
 LargestMoves largestMoves(const double* __restrict x, const double* __restrict reference, const double* __restrict v,
                           std::size_t n, const PeriodicImage& image) {
     const double length[3] = {image.length(0), image.length(1), image.length(2)};
     const double half[3] = {image.halfLength(0), image.halfLength(1), image.halfLength(2)};
-    std::uint64_t displacement2 = 0, speed2 = 0, magnitude2 = 0;
+    std::uint64_t displacement2 = 0, speed2 = 0, coordinate = 0;
     for (std::size_t i = 0; i < n; ++i) {
         double d[3];
         for (int a = 0; a < 3; ++a) {  // PeriodicImage::nearest
             const double raw = x[3 * i + a] - reference[3 * i + a];
             d[a] = raw > half[a] ? raw - length[a] : raw < -half[a] ? raw + length[a] : raw;
         }
-        const double* xi = x + 3 * i;
         const double* vi = v + 3 * i;
         const double s2 = vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2];
         displacement2 = std::max(displacement2, std::bit_cast<std::uint64_t>(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
         speed2 = std::max(speed2, std::bit_cast<std::uint64_t>(s2));
-        magnitude2 = std::max(magnitude2, std::bit_cast<std::uint64_t>(s2 + (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2])));
+        for (int a = 0; a < 3; ++a) coordinate = std::max(coordinate, std::bit_cast<std::uint64_t>(std::abs(x[3 * i + a])));
     }
-    return {std::bit_cast<double>(displacement2), std::bit_cast<double>(speed2),
-            magnitude2 < std::bit_cast<std::uint64_t>(std::numeric_limits<double>::infinity())};
+    const double largestSpeed2 = std::bit_cast<double>(speed2);
+    return {std::bit_cast<double>(displacement2), largestSpeed2,
+            saneMotion(largestSpeed2, std::bit_cast<double>(coordinate))};
 }
 
 }  // namespace
@@ -76,7 +73,7 @@ bool PairList::defaultSweepInFlowFrame() {
 }
 
 bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {
-    const bool compare = valid && referencePosition.size() == particles.size();
+    const bool compare = comparable(particles);
     const std::size_t owned = particles.owned();  // ghosts are their owners' business (Parallel/DomainSplit.h)
     // Without a reference (a first build), the positions against themselves: no displacement.
     const double* x = owned ? particles.position[0].data() : nullptr;
@@ -84,12 +81,19 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
         owned == 0 ? LargestMoves{0, 0, true}
                    : largestMoves(x, compare ? referencePosition[0].data() : x, particles.velocity[0].data(), owned,
                                   PeriodicImage(domain));
+    return needsRebuild(moves, particles, time, dt);
+}
+
+bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& particles, double time, double dt) {
+    const bool compare = comparable(particles);
+    const std::size_t owned = particles.owned();
     if (!moves.finite) [[unlikely]] {
-        // One comparison catches NaN and infinity in any component of x or v (the sum is then not
-        // below infinity); huge finite values whose squares overflow are blow-ups too.
         for (std::size_t i = 0; i < owned; ++i) {
             const Vec3& xi = particles.position[i];
-            if (particles.velocity[i].squaredNorm() + xi.squaredNorm() < INFINITY) continue;
+            if (saneMotion(particles.velocity[i].squaredNorm(),
+                           std::max({std::abs(xi.x()), std::abs(xi.y()), std::abs(xi.z())})) &&
+                !std::isnan(xi.x() + xi.y() + xi.z()))
+                continue;
             std::ostringstream message;
             message << "blow-up at t = " << time << ": particle id " << particles.id[i]
                     << " has a non-finite position or velocity (" << xi.transpose() << "; "
@@ -97,7 +101,7 @@ bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain
                     << "); the time step may be too large for the stiffest contact";
             throw Error(message.str());
         }
-        throw Error("blow-up at t = " + std::to_string(time) + ": a position or velocity is too large to square");
+        throw Error("blow-up at t = " + std::to_string(time) + ": a position or velocity is not finite");
     }
     maxSpeed = std::sqrt(moves.speed2);
     return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach;
@@ -496,6 +500,7 @@ void PairList::clear() {
     oneWayPairs.clear();
     oneWayHistory.assign(0);
     referencePosition.clear();
+    sweepPointsGrowth.reset();
     valid = false;
 }
 
@@ -507,6 +512,7 @@ void PairList::followPermutation(const std::vector<std::size_t>& order) {
     for (ParticlePair& pair : oneWayPairs) pair = {newSlot[pair.i], newSlot[pair.j]};
     for (WallCandidate& candidate : wallPairs) candidate.particle = newSlot[candidate.particle];
     referencePosition.clear();
+    sweepPointsGrowth.reset();
     valid = false;
 }
 
@@ -549,6 +555,7 @@ void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
         return true;
     });
     referencePosition.clear();
+    sweepPointsGrowth.reset();
     valid = false;
 }
 

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include "Boundaries/Domain.h"
@@ -36,6 +38,22 @@ struct SweepPoint {
     double x, y, z, radius;
 };
 static_assert(sizeof(SweepPoint) == 32);
+
+// What the list's check measures over the particles each step (PairList::needsRebuild): the
+// largest squared displacement since the build (nearest image), the largest squared speed, and
+// whether the motion is sane (saneMotion).
+struct LargestMoves {
+    double displacement2, speed2;
+    bool finite;
+};
+
+// Not a blow-up: every squared speed finite (so every velocity too), and every position
+// coordinate finite and below 1e150 in magnitude (the arithmetic of distances squares them);
+// given the largest squared speed and the largest magnitude of a coordinate (NaN if any is).
+constexpr double largestSaneCoordinate = 1e150;
+inline bool saneMotion(double largestSpeed2, double largestCoordinate) {
+    return largestSpeed2 < std::numeric_limits<double>::infinity() && largestCoordinate < largestSaneCoordinate;
+}
 
 // The force loop's near list (Contacts/PairSweep.h, makeNearPairs): the listed pairs closer
 // than ri + rj + skin, or with a contact pending, when it was made; the force loop sweeps these
@@ -117,7 +135,17 @@ public:
     // Throws talus::Error naming the particle if a position is not finite.
     // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close.
     bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt);
+    // The same on moves measured by the caller (Particles/DriftPass.h, which measures them while
+    // it drifts the particles), from referencePosition if comparable(particles), else none.
+    bool needsRebuild(const LargestMoves& moves, const ParticleStore& particles, double time, double dt);
+    bool comparable(const ParticleStore& particles) const {
+        return valid && referencePosition.size() == particles.size();
+    }
     double maxSpeed = 0;
+    // Set when this step's sweepPointScratch was made by the drift (Particles/DriftPass.h) with
+    // this largest growth: the force loop takes the points as they are (and clears it).
+    // Cleared when the particles change slots.
+    std::optional<double> sweepPointsGrowth;
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.

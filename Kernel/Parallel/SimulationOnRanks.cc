@@ -83,7 +83,7 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     list.clear();
     if (rebalancePending_ || due) rebalance();
     split_->migrate(p, carried);
-    reorderParticles();
+    reorderParticles(/*withPreviousForces*/ false);
     split_->makeGhosts(p, state_.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
     return true;
 }

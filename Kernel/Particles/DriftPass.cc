@@ -1,0 +1,256 @@
+#include "Particles/DriftPass.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "Math/EightParticleLanes.h"
+#include "Particles/VelocityVerlet.h"
+
+namespace talus {
+
+namespace {
+
+// The sweep's margins (PairSweep.h sweepPointsForStep).
+constexpr double radiusMargin = 1 + 1e-12, reachMargin = 1.000001;
+
+// |a|^2 with one rounding order, the same in the lanes and the loop.
+inline double squaredNorm(double a0, double a1, double a2) {
+    return lanes::multiplyAdd(a2, a2, lanes::multiplyAdd(a1, a1, a0 * a0));
+}
+
+// The running maxima, as bit patterns of non-negative doubles (their order is the values' order,
+// and a NaN, all exponent bits set, wins: PairList.cc largestMoves).
+struct Maxima {
+    std::uint64_t displacement2 = 0, speed2 = 0, coordinate = 0, growth = 0;
+    double velocitySum[3] = {0, 0, 0};  // of the mobile particles, for the next step's frame
+    std::size_t mobile = 0;
+};
+
+// One particle, as the separate passes do it (the lanes below do the same for eight).
+struct OneParticle {
+    double* x;
+    double* v;
+    double* w;
+    const double* oldForce;
+    double* force;
+    double* torque;
+    const double *invMass, *invInertia, *mass, *radius, *reference;
+    const std::uint8_t* fixed;
+    SweepPoint* points;
+    const Domain& domain;
+    PeriodicImage image;
+    Vec3 gravity, frame;
+    double half, dt;
+
+    void operator()(std::size_t i, Maxima& m) const {
+        using detail::unlessKept;
+        const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
+        double* xi = x + 3 * i;
+        double* vi = v + 3 * i;
+        double* wi = w + 3 * i;
+        const double kick = half * invMass[i], turn = half * invInertia[i];
+        for (int c = 0; c < 3; ++c) {
+            vi[c] = unlessKept(vi[c], lanes::multiplyAdd(kick, oldForce[3 * i + c], vi[c]), keep);
+            xi[c] = unlessKept(xi[c], lanes::multiplyAdd(dt, vi[c], xi[c]), keep);
+            wi[c] = unlessKept(wi[c], lanes::multiplyAdd(turn, torque[3 * i + c], wi[c]), keep);
+            torque[3 * i + c] = 0;
+            force[3 * i + c] = fixed[i] ? 0.0 : mass[i] * gravity[c];
+        }
+        for (int c = 0; c < 3; ++c)
+            if (domain.periodic[c]) Domain::wrapCoordinate(xi[c], domain.lo[c], domain.hi[c], domain.length(c));
+        double d[3] = {0, 0, 0};
+        if (reference)
+            for (int c = 0; c < 3; ++c) {  // PeriodicImage::nearest
+                const double raw = xi[c] - reference[3 * i + c];
+                d[c] = raw > image.halfLength(c) ? raw - image.length(c)
+                       : raw < -image.halfLength(c) ? raw + image.length(c)
+                                                    : raw;
+            }
+        const double s2 = squaredNorm(vi[0], vi[1], vi[2]);
+        m.displacement2 = std::max(m.displacement2, std::bit_cast<std::uint64_t>(squaredNorm(d[0], d[1], d[2])));
+        m.speed2 = std::max(m.speed2, std::bit_cast<std::uint64_t>(s2));
+        for (int c = 0; c < 3; ++c) m.coordinate = std::max(m.coordinate, std::bit_cast<std::uint64_t>(std::abs(xi[c])));
+        if (!fixed[i]) {
+            for (int c = 0; c < 3; ++c) m.velocitySum[c] += vi[c];
+            ++m.mobile;
+        }
+        const double relative = std::sqrt(squaredNorm(vi[0] - frame[0], vi[1] - frame[1], vi[2] - frame[2]));
+        const double grown = lanes::multiplyAdd(reachMargin * dt, relative, radius[i] * radiusMargin);
+        points[i] = {xi[0], xi[1], xi[2], grown};
+        m.growth = std::max(m.growth, std::bit_cast<std::uint64_t>(std::max(grown - radius[i], 0.0)));
+    }
+};
+
+#ifdef TALUS_AVX512_LANES
+// The eight particles' values of one axis (0: x, 1: y, 2: z) from the three vectors that hold
+// their coordinates in storage order (EightParticleLanes.h).
+inline __m512d axisOf(const __m512d (&a)[3], int axis) {
+    const __m512i first = axis == 0   ? _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0)
+                          : axis == 1 ? _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1)
+                                      : _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2);
+    const __m512i second = axis == 0   ? _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0)
+                           : axis == 1 ? _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0)
+                                       : _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0);
+    return _mm512_permutex2var_pd(_mm512_permutex2var_pd(a[0], first, a[1]), second, a[2]);
+}
+
+// The eight particles' |a|^2 (squaredNorm's rounding).
+inline __m512d squaredNorms(const __m512d (&a)[3]) {
+    const __m512d x = axisOf(a, 0), y = axisOf(a, 1), z = axisOf(a, 2);
+    return _mm512_fmadd_pd(z, z, _mm512_fmadd_pd(y, y, _mm512_mul_pd(x, x)));
+}
+
+inline __m512i bitsOf(__m512d v) { return _mm512_castpd_si512(v); }
+
+// (The zero-masking forms of max and sqrt below, and these reductions by hand: GCC 12 warns,
+// wrongly, of uninitialised operands in the plain ones, as EightParticleLanes.h notes.)
+inline __m512i largerOf(__m512i a, __m512i b) { return _mm512_maskz_max_epu64(0xff, a, b); }
+inline std::uint64_t largestOf(__m512i a) {
+    alignas(64) std::uint64_t lanes[8];
+    _mm512_store_si512(lanes, a);
+    return *std::max_element(lanes, lanes + 8);
+}
+inline double sumOf(__m512d a) {
+    alignas(64) double lanes[8];
+    _mm512_store_pd(lanes, a);
+    return ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3])) + ((lanes[4] + lanes[5]) + (lanes[6] + lanes[7]));
+}
+
+// The eight sweep points (x, y, z, grown radius) from the positions' three vectors and the
+// grown radii: two points per vector.
+inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
+    const __m512i pick[4] = {_mm512_set_epi64(0, 5, 4, 3, 0, 2, 1, 0), _mm512_set_epi64(0, 11, 10, 9, 0, 8, 7, 6),
+                             _mm512_set_epi64(0, 9, 8, 7, 0, 6, 5, 4), _mm512_set_epi64(0, 7, 6, 5, 0, 4, 3, 2)};
+    const __m512d low[4] = {x[0], x[0], x[1], x[2]}, high[4] = {x[1], x[1], x[2], x[2]};
+    for (int k = 0; k < 4; ++k) {
+        const __m512d coordinates = _mm512_permutex2var_pd(low[k], pick[k], high[k]);
+        const __m512i radii = _mm512_set_epi64(2 * k + 1, 0, 0, 0, 2 * k, 0, 0, 0);
+        _mm512_storeu_pd(out + 8 * k, _mm512_mask_permutexvar_pd(coordinates, 0x88, radii, grown));
+    }
+}
+#endif
+
+}  // namespace
+
+DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
+                                        const std::vector<Vec3>* reference, const Vec3& gravity,
+                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points) {
+    const std::size_t n = p.size();
+    previousForce.swap(p.force);  // the last step's forces; p.force is refilled below
+    p.force.resize(n);
+    p.torque.resize(n);
+    points.resize(n);
+    DriftPassResult result;
+    result.moves = {0, 0, true};
+    if (n == 0) return result;
+    const OneParticle one{p.position[0].data(),
+                          p.velocity[0].data(),
+                          p.angularVelocity[0].data(),
+                          previousForce[0].data(),
+                          p.force[0].data(),
+                          p.torque[0].data(),
+                          p.invMass.data(),
+                          p.invInertia.data(),
+                          p.mass.data(),
+                          p.radius.data(),
+                          reference ? (*reference)[0].data() : nullptr,
+                          p.fixed.data(),
+                          points.data(),
+                          domain,
+                          PeriodicImage(domain),
+                          gravity,
+                          frameVelocity,
+                          0.5 * dt,
+                          dt};
+    Maxima m;
+    std::size_t i = 0;
+#ifdef TALUS_AVX512_LANES
+    {
+        const double inf = std::numeric_limits<double>::infinity();
+        __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
+        lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
+                       domain.periodic[2] ? domain.lo[2] : -inf, low);
+        lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
+                       domain.periodic[2] ? domain.hi[2] : inf, high);
+        lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
+        lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
+        lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
+        lanes::perAxis(frameVelocity.x(), frameVelocity.y(), frameVelocity.z(), u);
+        const __m512d drift = _mm512_set1_pd(dt), half = _mm512_set1_pd(one.half), zero = _mm512_setzero_pd();
+        const __m512d reach = _mm512_set1_pd(reachMargin * dt), margin = _mm512_set1_pd(radiusMargin);
+        __m512i displacement2 = _mm512_setzero_si512(), speed2 = displacement2, coordinate = displacement2,
+                growth = displacement2;
+        __m512d velocitySum[3] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+        const __m512i magnitude = _mm512_set1_epi64(0x7fffffffffffffff);  // (all bits but the sign)
+        for (; i + 8 <= n; i += 8) {
+            const lanes::MobileLanes kick(one.fixed + i, one.half, one.invMass + i);
+            m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(kick.of[0])) +  // (three lanes a particle)
+                                                 std::popcount(static_cast<unsigned>(kick.of[1])) +
+                                                 std::popcount(static_cast<unsigned>(kick.of[2]))) / 3;
+            __m512d turn[3], weight[3];
+            lanes::spread(_mm512_mul_pd(half, _mm512_loadu_pd(one.invInertia + i)), turn);
+            lanes::spread(_mm512_loadu_pd(one.mass + i), weight);
+            __m512d x[3], v[3];
+            for (int c = 0; c < 3; ++c) {
+                const std::size_t at = 3 * i + 8 * c;
+                v[c] = kick.advance(_mm512_loadu_pd(one.v + at), kick.factor[c], _mm512_loadu_pd(one.oldForce + at), c);
+                _mm512_storeu_pd(one.v + at, v[c]);
+                velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
+                x[c] = kick.advance(_mm512_loadu_pd(one.x + at), drift, v[c], c);
+                _mm512_storeu_pd(one.w + at, kick.advance(_mm512_loadu_pd(one.w + at), turn[c],
+                                                          _mm512_loadu_pd(one.torque + at), c));
+                _mm512_storeu_pd(one.torque + at, zero);
+                _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
+            }
+            __mmask8 outside = 0;
+            for (int c = 0; c < 3; ++c) {
+                _mm512_storeu_pd(one.x + 3 * i + 8 * c, x[c]);
+                outside |= _mm512_cmp_pd_mask(x[c], high[c], _CMP_GE_OQ) | _mm512_cmp_pd_mask(x[c], low[c], _CMP_LT_OQ);
+            }
+            if (outside) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
+                domain.wrap(p.position.data() + i, 8);
+                for (int c = 0; c < 3; ++c) x[c] = _mm512_loadu_pd(one.x + 3 * i + 8 * c);
+            }
+            if (one.reference) {
+                __m512d d[3];
+                for (int c = 0; c < 3; ++c) {
+                    const __m512d raw = _mm512_sub_pd(x[c], _mm512_loadu_pd(one.reference + 3 * i + 8 * c));
+                    const __mmask8 above = _mm512_cmp_pd_mask(raw, halfLength[c], _CMP_GT_OQ);
+                    const __mmask8 below =
+                        _mm512_cmp_pd_mask(raw, _mm512_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
+                    d[c] = _mm512_mask_add_pd(_mm512_mask_sub_pd(raw, above, raw, length[c]), below, raw, length[c]);
+                }
+                displacement2 = largerOf(displacement2, bitsOf(squaredNorms(d)));
+            }
+            const __m512d s2 = squaredNorms(v);
+            speed2 = largerOf(speed2, bitsOf(s2));
+            for (int c = 0; c < 3; ++c) coordinate = largerOf(coordinate, _mm512_and_si512(bitsOf(x[c]), magnitude));
+            __m512d relative[3];
+            for (int c = 0; c < 3; ++c) relative[c] = _mm512_sub_pd(v[c], u[c]);
+            const __m512d radius = _mm512_loadu_pd(one.radius + i);
+            const __m512d grown =
+                _mm512_fmadd_pd(reach, _mm512_maskz_sqrt_pd(0xff, squaredNorms(relative)), _mm512_mul_pd(radius, margin));
+            storePoints(x, grown, reinterpret_cast<double*>(one.points + i));
+            // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
+            growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
+        }
+        m.displacement2 = largestOf(displacement2);
+        m.speed2 = largestOf(speed2);
+        m.coordinate = largestOf(coordinate);
+        m.growth = largestOf(growth);
+        for (int axis = 0; axis < 3; ++axis) m.velocitySum[axis] = sumOf(axisOf(velocitySum, axis));
+    }
+#endif
+    for (; i < n; ++i) one(i, m);
+    result.moves = {std::bit_cast<double>(m.displacement2), std::bit_cast<double>(m.speed2),
+                    saneMotion(std::bit_cast<double>(m.speed2), std::bit_cast<double>(m.coordinate))};
+    result.growth = std::bit_cast<double>(m.growth);
+    const Vec3 mean = Vec3(m.velocitySum[0], m.velocitySum[1], m.velocitySum[2]) / static_cast<double>(std::max<std::size_t>(m.mobile, 1));
+    result.meanVelocity = mean.allFinite() ? mean : Vec3::Zero();
+    return result;
+}
+
+}  // namespace talus

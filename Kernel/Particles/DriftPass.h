@@ -1,0 +1,46 @@
+// The first half of a velocity Verlet step of spheres (SPEC.md 1) in one pass over the particles,
+// with everything else that a step reads the positions and velocities for before the contacts:
+//   1. the half kick v += (dt/2) F/m, w += (dt/2) T/I and the drift x += dt v of the mobile
+//      particles (Particles/VelocityVerlet.h halfKickAndDrift, the same arithmetic);
+//   2. the wrap into the periodic box (Domain::wrap);
+//   3. the pair list's check (PairList::needsRebuild): the largest displacement since the list
+//      was built, the largest speed, and whether the motion is sane (PairList.h saneMotion);
+//   4. the sweep's points (Contacts/PairSweep.h sweepPointsForStep): each position with its radius
+//      grown by 1.000001 |v - u| dt;
+//   5. the forces the step starts from (startForcesWithGravity): the last step's forces become
+//      `previousForce` by a swap, the array is refilled with m g, the torques with zeros.
+// Done pass by pass, these read and write every particle's data six times a step; at 10^6
+// particles the arrays are far beyond the caches and each pass streams them from memory
+// (Documentation/CacheCliff.md: about a fifth of the developed flow's step). The pass is for the
+// scenes whose steps do nothing else between the drift and the forces: spheres only, no
+// prescribed motions, no boundaries, one rank, nothing noted for relisting
+// (Simulation::integrate). Its results are those of the separate passes, except the sweep's frame
+// velocity u, which it is given, the mean velocity it measured the step before (any velocity
+// common to all keeps the sweep's bound, and the pairs that get forces do not depend on it:
+// PairSweep.h).
+#pragma once
+
+#include <vector>
+
+#include "Boundaries/Domain.h"
+#include "Contacts/PairList.h"
+#include "Particles/ParticleStore.h"
+
+namespace talus {
+
+struct DriftPassResult {
+    LargestMoves moves;  // for PairList::needsRebuild
+    double growth = 0;   // the sweep points' largest growth, 1.000001 |v - u| dt + 1e-12 r (useNearPairs)
+    // The mean velocity of the mobile particles after the kick (zero without any, or if not
+    // finite): the next step's frame velocity u, in place of a pass over a sample of them
+    // (sweepFrameVelocity). Any u keeps the sweep's bound.
+    Vec3 meanVelocity = Vec3::Zero();
+};
+
+// reference: the positions at the list's build, or null (no build to compare with: no
+// displacement). The particles are all owned (no ghosts).
+DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
+                                        const std::vector<Vec3>* reference, const Vec3& gravity,
+                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points);
+
+}  // namespace talus

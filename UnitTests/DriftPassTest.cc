@@ -1,0 +1,137 @@
+// The first half of a step in one pass (Particles/DriftPass.h) against the passes it stands in for
+// (Particles/VelocityVerlet.h, Domain::wrap, Contacts/PairSweep.h) and against the definitions of
+// what it measures, on particles with fixed ones among them, coordinates outside the periodic box
+// and a reference to measure displacements from: five blocks of eight in lanes (with AVX-512) and
+// a tail of five. (That the trajectories equal those of the pass-by-pass step to the bit:
+// PairListTest.cc, DriftInOnePassChangesNothing.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "Contacts/PairSweep.h"
+#include "Particles/DriftPass.h"
+#include "Particles/VelocityVerlet.h"
+
+using namespace talus;
+
+namespace {
+
+constexpr std::size_t count = 45;
+constexpr double dt = 0.05;
+
+ParticleStore someParticles() {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> between(-2, 2);
+    auto someVector = [&] { return Vec3(between(random), between(random), between(random)); };
+    ParticleStore p;
+    for (std::size_t i = 0; i < count; ++i) {
+        p.position.push_back(someVector());
+        p.velocity.push_back(someVector());
+        p.angularVelocity.push_back(someVector());
+        p.force.push_back(someVector());
+        p.torque.push_back(someVector());
+        p.radius.push_back(0.3 + 0.1 * between(random));
+        p.mass.push_back(1 + between(random) * between(random));
+        p.fixed.push_back(i % 5 == 2 || i == 8 || i == 43);
+        p.invMass.push_back(p.fixed.back() ? 0 : 1 / p.mass.back());
+        p.invInertia.push_back(p.fixed.back() ? 0 : 3 / p.mass.back());
+    }
+    return p;
+}
+
+Domain someDomain() {
+    Domain domain;
+    domain.lo = Vec3(-1, -0.5, -3);
+    domain.hi = Vec3(1, 0.5, 3);
+    domain.periodic = {true, true, false};
+    return domain;
+}
+
+bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+}  // namespace
+
+TEST(DriftPass, EqualsThePassesItStandsIn) {
+    const Domain domain = someDomain();
+    const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009), frame(0.3, -0.1, 0.05);
+    ParticleStore onePass = someParticles(), byPasses = someParticles();
+    // The reference: the wrapped positions a little while ago, some of them across a face.
+    std::vector<Vec3> reference = someParticles().position;
+    for (Vec3& x : reference) domain.wrap(x);
+    for (std::size_t i = 0; i < count; i += 4) reference[i].x() += reference[i].x() > 0 ? -1.9 : 1.9;
+    std::vector<Vec3> previousForce, points3;
+    std::vector<SweepPoint> points;
+    const DriftPassResult result =
+        kickDriftAndStartForces(onePass, previousForce, domain, &reference, gravity, frame, dt, points);
+
+    halfKickAndDrift(byPasses, count, 0.5 * dt, dt);
+    domain.wrap(byPasses.position.data(), count);
+    const std::vector<Vec3> lastForces = byPasses.force;
+    startForcesWithGravity(byPasses, gravity);
+    std::vector<SweepPoint> expectedPoints;
+    const double expectedGrowth = sweepPointsForStep(byPasses, dt, frame, expectedPoints);
+
+    EXPECT_TRUE(sameBits(onePass.position, byPasses.position));
+    EXPECT_TRUE(sameBits(onePass.velocity, byPasses.velocity));
+    EXPECT_TRUE(sameBits(onePass.angularVelocity, byPasses.angularVelocity));
+    EXPECT_TRUE(sameBits(onePass.force, byPasses.force));
+    EXPECT_TRUE(sameBits(onePass.torque, byPasses.torque));
+    EXPECT_TRUE(sameBits(previousForce, lastForces)) << "the last step's forces";
+    ASSERT_EQ(points.size(), count);
+    const PeriodicImage image(domain);
+    double displacement2 = 0, speed2 = 0, direct2 = 0;
+    Vec3 velocitySum = Vec3::Zero();
+    std::size_t mobile = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Vec3& x = byPasses.position[i];
+        EXPECT_TRUE(points[i].x == x.x() && points[i].y == x.y() && points[i].z == x.z()) << i;
+        // (The grown radius's sum of squares may round differently from sweepPointsForStep's.)
+        EXPECT_NEAR(points[i].radius, expectedPoints[i].radius, 1e-15) << i;
+        displacement2 = std::max(displacement2, image.nearest(x - reference[i]).squaredNorm());
+        direct2 = std::max(direct2, (x - reference[i]).squaredNorm());
+        speed2 = std::max(speed2, byPasses.velocity[i].squaredNorm());
+        if (!byPasses.fixed[i]) velocitySum += byPasses.velocity[i], ++mobile;
+    }
+    EXPECT_NEAR(result.growth, expectedGrowth, 1e-15);
+    EXPECT_GT(direct2, 1) << "the test should measure displacements across a face";
+    EXPECT_LT(displacement2, 0.25);
+    EXPECT_NEAR(result.moves.displacement2, displacement2, 1e-15);
+    EXPECT_NEAR(result.moves.speed2, speed2, 1e-14);
+    EXPECT_TRUE(result.moves.finite);
+    EXPECT_LT((result.meanVelocity - velocitySum / static_cast<double>(mobile)).norm(), 1e-14)
+        << "the mean velocity of the mobile particles after the kick";
+}
+
+TEST(DriftPass, WithoutAReferenceMeasuresNoDisplacement) {
+    ParticleStore p = someParticles();
+    std::vector<Vec3> previousForce;
+    std::vector<SweepPoint> points;
+    const DriftPassResult result =
+        kickDriftAndStartForces(p, previousForce, someDomain(), nullptr, Vec3(0, 0, -1), Vec3::Zero(), dt, points);
+    EXPECT_EQ(result.moves.displacement2, 0);
+    EXPECT_GT(result.moves.speed2, 1);
+}
+
+// A NaN or a position or velocity too large to square, in a block of lanes or in the tail, is
+// reported as not finite (the list's check then names the particle: PairList::needsRebuild).
+TEST(DriftPass, FindsWhatIsNotFinite) {
+    for (std::size_t bad : {3u, 21u, 42u}) {
+        for (int kind = 0; kind < 3; ++kind) {
+            ParticleStore p = someParticles();
+            p.fixed[bad] = 0;
+            p.invMass[bad] = p.invInertia[bad] = 1;
+            if (kind == 0) p.velocity[bad].y() = std::nan("");
+            if (kind == 1) p.position[bad].z() = 1e200;  // (z is not periodic: not wrapped)
+            if (kind == 2) p.force[bad].x() = INFINITY;
+            std::vector<Vec3> previousForce;
+            std::vector<SweepPoint> points;
+            const DriftPassResult result = kickDriftAndStartForces(p, previousForce, someDomain(), nullptr,
+                                                                   Vec3(0, 0, -1), Vec3::Zero(), dt, points);
+            EXPECT_FALSE(result.moves.finite) << "particle " << bad << ", kind " << kind;
+        }
+    }
+}
