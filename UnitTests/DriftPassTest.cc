@@ -8,11 +8,11 @@
 
 #include <cmath>
 #include <cstring>
-#include <random>
 
 #include "Contacts/PairSweep.h"
 #include "Particles/DriftPass.h"
 #include "Particles/VelocityVerlet.h"
+#include "TestHelpers.h"
 
 using namespace talus;
 
@@ -21,25 +21,7 @@ namespace {
 constexpr std::size_t count = 45;
 constexpr double dt = 0.05;
 
-ParticleStore someParticles() {
-    std::mt19937_64 random(7);
-    std::uniform_real_distribution<double> between(-2, 2);
-    auto someVector = [&] { return Vec3(between(random), between(random), between(random)); };
-    ParticleStore p;
-    for (std::size_t i = 0; i < count; ++i) {
-        p.position.push_back(someVector());
-        p.velocity.push_back(someVector());
-        p.angularVelocity.push_back(someVector());
-        p.force.push_back(someVector());
-        p.torque.push_back(someVector());
-        p.radius.push_back(0.3 + 0.1 * between(random));
-        p.mass.push_back(1 + between(random) * between(random));
-        p.fixed.push_back(i % 5 == 2 || i == 8 || i == 43);
-        p.invMass.push_back(p.fixed.back() ? 0 : 1 / p.mass.back());
-        p.invInertia.push_back(p.fixed.back() ? 0 : 3 / p.mass.back());
-    }
-    return p;
-}
+ParticleStore someParticles() { return test::someParticles(count, 7); }
 
 Domain someDomain() {
     Domain domain;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +17,29 @@
 #include "Simulation.h"
 
 namespace talus::test {
+
+// `count` particles in a store of their own for the passes over per-particle arrays: every
+// coordinate, velocity, force and torque in (-2, 2), masses about 1, radii in (0.2, 0.4), and
+// fixed ones among them (slots 2, 7, 12, ..., 8 and 43) with zero inverse mass and inertia.
+inline ParticleStore someParticles(std::size_t count, unsigned seed) {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> between(-2, 2);
+    auto someVector = [&] { return Vec3(between(random), between(random), between(random)); };
+    ParticleStore p;
+    for (std::size_t i = 0; i < count; ++i) {
+        p.position.push_back(someVector());
+        p.velocity.push_back(someVector());
+        p.angularVelocity.push_back(someVector());
+        p.force.push_back(someVector());
+        p.torque.push_back(someVector());
+        p.radius.push_back(0.3 + 0.05 * between(random));
+        p.mass.push_back(1 + between(random) * between(random));
+        p.fixed.push_back(i % 5 == 2 || i == 8 || i == 43);
+        p.invMass.push_back(p.fixed.back() ? 0 : 1 / p.mass.back());
+        p.invInertia.push_back(p.fixed.back() ? 0 : 3 / p.mass.back());
+    }
+    return p;
+}
 
 // A driver whose setup and after-step hook are lambdas, so that each test states its scene
 // next to its checks instead of in a class of its own.

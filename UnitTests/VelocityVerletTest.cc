@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <random>
 
 #include "Boundaries/Domain.h"
 #include "Particles/VelocityVerlet.h"
+#include "TestHelpers.h"
 
 using namespace talus;
 
@@ -19,21 +19,7 @@ namespace {
 constexpr std::size_t count = 45;  // five blocks of eight and a tail of five
 
 ParticleStore someParticles() {
-    std::mt19937_64 random(11);
-    std::uniform_real_distribution<double> between(-2, 2);
-    auto someVector = [&] { return Vec3(between(random), between(random), between(random)); };
-    ParticleStore p;
-    for (std::size_t i = 0; i < count; ++i) {
-        p.position.push_back(someVector());
-        p.velocity.push_back(someVector());
-        p.angularVelocity.push_back(someVector());
-        p.force.push_back(someVector());
-        p.torque.push_back(someVector());
-        p.mass.push_back(1 + between(random) * between(random));
-        p.fixed.push_back(i % 5 == 2 || i == 8 || i == 43);
-        p.invMass.push_back(p.fixed.back() ? 0 : 1 / p.mass.back());
-        p.invInertia.push_back(p.fixed.back() ? 0 : 3 / p.mass.back());
-    }
+    ParticleStore p = test::someParticles(count, 11);
     p.velocity[9] = Vec3(-0.0, 0.0, -0.0);  // x + 0 must keep the sign of zero where fixed
     p.position[2] = Vec3(-0.0, 1, -0.0);
     return p;
