@@ -185,6 +185,7 @@ inline Vec3 sweepFrameVelocity(const ParticleStore& p) {
 // many times the relative speeds, and the sweep picks many pairs that then turn out apart and
 // not closing (Documentation/Performance.md). Returns the largest growth,
 // 1.000001 |vi - u| dt + 1e-12 ri.
+constexpr double sweepRadiusMargin = 1 + 1e-12, sweepReachMargin = 1.000001;  // (the margins above)
 inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& frameVelocity,
                                  std::vector<SweepPoint>& points) {
     points.resize(p.size());
@@ -193,12 +194,12 @@ inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& 
     const double* __restrict radius = p.radius.data();
     const double* __restrict x = p.position[0].data();
     const double* __restrict v = p.velocity[0].data();
-    const double reachPerSpeed = 1.000001 * dt;
+    const double reachPerSpeed = sweepReachMargin * dt;
     const double u0 = frameVelocity.x(), u1 = frameVelocity.y(), u2 = frameVelocity.z();
     for (std::size_t i = 0; i < points.size(); ++i) {
         const double w0 = v[3 * i] - u0, w1 = v[3 * i + 1] - u1, w2 = v[3 * i + 2] - u2;
         out[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2],
-                  radius[i] * (1 + 1e-12) + reachPerSpeed * std::sqrt(w0 * w0 + w1 * w1 + w2 * w2)};
+                  radius[i] * sweepRadiusMargin + reachPerSpeed * std::sqrt(w0 * w0 + w1 * w1 + w2 * w2)};
     }
     // The largest of the non-negative growths as bit patterns (the order of the values, and
     // vectorised where a floating-point maximum is not); a NaN wins.

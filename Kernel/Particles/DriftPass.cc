@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "Contacts/PairSweep.h"
 #include "Math/EightParticleLanes.h"
 #include "Particles/VelocityVerlet.h"
 
@@ -13,8 +14,7 @@ namespace talus {
 
 namespace {
 
-// The sweep's margins (PairSweep.h sweepPointsForStep).
-constexpr double radiusMargin = 1 + 1e-12, reachMargin = 1.000001;
+constexpr double radiusMargin = sweepRadiusMargin, reachMargin = sweepReachMargin;  // (PairSweep.h)
 
 // |a|^2 with one rounding order, the same in the lanes and the loop.
 inline double squaredNorm(double a0, double a1, double a2) {
