@@ -117,3 +117,22 @@ TEST(DriftPass, FindsWhatIsNotFinite) {
         }
     }
 }
+
+// A NaN of either sign is larger than every number in the running maxima (they compare bit
+// patterns as unsigned integers; x86 makes its NaNs with the sign bit set): a fixed particle's
+// NaN velocity, which moves no coordinate, still makes the speed and the growth NaN.
+TEST(DriftPass, ANegativeNaNWinsTheMaxima) {
+    for (std::size_t bad : {3u, 21u, 42u})
+        for (double sign : {1.0, -1.0}) {
+            ParticleStore p = someParticles();
+            p.fixed[bad] = 1;
+            p.velocity[bad].x() = std::copysign(std::nan(""), sign);
+            std::vector<Vec3> previousForce;
+            std::vector<SweepPoint> points;
+            const DriftPassResult result = kickDriftAndStartForces(p, previousForce, someDomain(), nullptr,
+                                                                   Vec3(0, 0, -1), Vec3::Zero(), dt, points);
+            EXPECT_TRUE(std::isnan(result.moves.speed2)) << "particle " << bad << ", sign " << sign;
+            EXPECT_TRUE(std::isnan(result.growth)) << "particle " << bad << ", sign " << sign;
+            EXPECT_FALSE(result.moves.finite);
+        }
+}

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Math/EightParticleLanes.h"
+#include "Math/FourParticleLanes.h"
 #include "Math/Vector.h"
 
 namespace talus {
@@ -55,9 +56,10 @@ struct Domain {
             if (periodic[a]) wrapCoordinate(x[a], lo[a], hi[a], length(a));
     }
     // The same for the first n of an array of positions. With AVX-512, eight particles at a
-    // time are only compared with the box (Math/EightParticleLanes.h), and the few blocks with a
-    // particle outside wrapped one by one; otherwise an axis at a time with the box read once
-    // (the compiler cannot keep lo and hi in registers across stores into a Vec3&).
+    // time (four with AVX2 only) are only compared with the box (Math/EightParticleLanes.h,
+    // Math/FourParticleLanes.h), and the few blocks with a particle outside wrapped one by one;
+    // otherwise an axis at a time with the box read once (the compiler cannot keep lo and hi in
+    // registers across stores into a Vec3&).
     void wrap(Vec3* x, std::size_t n) const {
         std::size_t first = 0;
 #ifdef TALUS_AVX512_LANES
@@ -75,6 +77,22 @@ struct Domain {
             }
             if (outside) [[unlikely]]
                 for (std::size_t i = first; i < first + 8; ++i) wrap(x[i]);
+        }
+#elif defined(TALUS_AVX2_LANES)
+        __m256d low[3], high[3];
+        const double inf = std::numeric_limits<double>::infinity();
+        lanes::perAxis(periodic[0] ? lo[0] : -inf, periodic[1] ? lo[1] : -inf, periodic[2] ? lo[2] : -inf, low);
+        lanes::perAxis(periodic[0] ? hi[0] : inf, periodic[1] ? hi[1] : inf, periodic[2] ? hi[2] : inf, high);
+        for (; first + 4 <= n; first += 4) {
+            const double* block = x[first].data();
+            __m256d outside = _mm256_setzero_pd();
+            for (int c = 0; c < 3; ++c) {
+                const __m256d coordinates = _mm256_loadu_pd(block + 4 * c);
+                outside = _mm256_or_pd(outside, _mm256_or_pd(_mm256_cmp_pd(coordinates, high[c], _CMP_GE_OQ),
+                                                             _mm256_cmp_pd(coordinates, low[c], _CMP_LT_OQ)));
+            }
+            if (_mm256_movemask_pd(outside)) [[unlikely]]
+                for (std::size_t i = first; i < first + 4; ++i) wrap(x[i]);
         }
 #endif
         for (int a = 0; a < 3; ++a) {

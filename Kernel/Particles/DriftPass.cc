@@ -8,6 +8,7 @@
 
 #include "Contacts/PairSweep.h"
 #include "Math/EightParticleLanes.h"
+#include "Math/FourParticleLanes.h"
 #include "Particles/VelocityVerlet.h"
 
 namespace talus {
@@ -131,6 +132,185 @@ inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
         _mm512_storeu_pd(out + 8 * k, _mm512_mask_permutexvar_pd(coordinates, 0x88, radii, grown));
     }
 }
+
+// The blocks of eight particles of the pass; returns where the scalar loop goes on.
+std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
+    const std::size_t n = p.size();
+    std::size_t i = 0;
+    const double inf = std::numeric_limits<double>::infinity();
+    __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
+    lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
+                   domain.periodic[2] ? domain.lo[2] : -inf, low);
+    lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
+                   domain.periodic[2] ? domain.hi[2] : inf, high);
+    lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
+    lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
+    lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
+    lanes::perAxis(one.frame.x(), one.frame.y(), one.frame.z(), u);
+    const __m512d drift = _mm512_set1_pd(one.dt), half = _mm512_set1_pd(one.half), zero = _mm512_setzero_pd();
+    const __m512d reach = _mm512_set1_pd(reachMargin * one.dt), margin = _mm512_set1_pd(radiusMargin);
+    __m512i displacement2 = _mm512_setzero_si512(), speed2 = displacement2, coordinate = displacement2,
+            growth = displacement2;
+    __m512d velocitySum[3] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+    const __m512i magnitude = _mm512_set1_epi64(0x7fffffffffffffff);  // (all bits but the sign)
+    for (; i + 8 <= n; i += 8) {
+        const lanes::MobileLanes kick(one.fixed + i, one.half, one.invMass + i);
+        m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(kick.of[0])) +  // (three lanes a particle)
+                                             std::popcount(static_cast<unsigned>(kick.of[1])) +
+                                             std::popcount(static_cast<unsigned>(kick.of[2]))) / 3;
+        __m512d turn[3], weight[3];
+        lanes::spread(_mm512_mul_pd(half, _mm512_loadu_pd(one.invInertia + i)), turn);
+        lanes::spread(_mm512_loadu_pd(one.mass + i), weight);
+        __m512d x[3], v[3];
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t at = 3 * i + 8 * c;
+            v[c] = kick.advance(_mm512_loadu_pd(one.v + at), kick.factor[c], _mm512_loadu_pd(one.oldForce + at), c);
+            _mm512_storeu_pd(one.v + at, v[c]);
+            velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
+            x[c] = kick.advance(_mm512_loadu_pd(one.x + at), drift, v[c], c);
+            _mm512_storeu_pd(one.w + at, kick.advance(_mm512_loadu_pd(one.w + at), turn[c],
+                                                      _mm512_loadu_pd(one.torque + at), c));
+            _mm512_storeu_pd(one.torque + at, zero);
+            _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
+        }
+        __mmask8 outside = 0;
+        for (int c = 0; c < 3; ++c) {
+            _mm512_storeu_pd(one.x + 3 * i + 8 * c, x[c]);
+            outside |= _mm512_cmp_pd_mask(x[c], high[c], _CMP_GE_OQ) | _mm512_cmp_pd_mask(x[c], low[c], _CMP_LT_OQ);
+        }
+        if (outside) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
+            domain.wrap(p.position.data() + i, 8);
+            for (int c = 0; c < 3; ++c) x[c] = _mm512_loadu_pd(one.x + 3 * i + 8 * c);
+        }
+        if (one.reference) {
+            __m512d d[3];
+            for (int c = 0; c < 3; ++c) {
+                const __m512d raw = _mm512_sub_pd(x[c], _mm512_loadu_pd(one.reference + 3 * i + 8 * c));
+                const __mmask8 above = _mm512_cmp_pd_mask(raw, halfLength[c], _CMP_GT_OQ);
+                const __mmask8 below =
+                    _mm512_cmp_pd_mask(raw, _mm512_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
+                d[c] = _mm512_mask_add_pd(_mm512_mask_sub_pd(raw, above, raw, length[c]), below, raw, length[c]);
+            }
+            displacement2 = largerOf(displacement2, bitsOf(squaredNorms(d)));
+        }
+        const __m512d s2 = squaredNorms(v);
+        speed2 = largerOf(speed2, bitsOf(s2));
+        for (int c = 0; c < 3; ++c) coordinate = largerOf(coordinate, _mm512_and_si512(bitsOf(x[c]), magnitude));
+        __m512d relative[3];
+        for (int c = 0; c < 3; ++c) relative[c] = _mm512_sub_pd(v[c], u[c]);
+        const __m512d radius = _mm512_loadu_pd(one.radius + i);
+        const __m512d grown =
+            _mm512_fmadd_pd(reach, _mm512_maskz_sqrt_pd(0xff, squaredNorms(relative)), _mm512_mul_pd(radius, margin));
+        storePoints(x, grown, reinterpret_cast<double*>(one.points + i));
+        // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
+        growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
+    }
+    m.displacement2 = largestOf(displacement2);
+    m.speed2 = largestOf(speed2);
+    m.coordinate = largestOf(coordinate);
+    m.growth = largestOf(growth);
+    for (int axis = 0; axis < 3; ++axis) m.velocitySum[axis] = sumOf(axisOf(velocitySum, axis));
+    return i;
+}
+#endif
+
+#ifdef TALUS_AVX2_LANES
+// The same for blocks of four particles in AVX2 lanes (Math/FourParticleLanes.h): the kicks,
+// the drift and the forces in storage order, the norms and the sweep points per axis.
+std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
+    const std::size_t n = p.size();
+    std::size_t i = 0;
+    const double inf = std::numeric_limits<double>::infinity();
+    __m256d low[3], high[3], length[3], halfLength[3], g[3];
+    lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
+                   domain.periodic[2] ? domain.lo[2] : -inf, low);
+    lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
+                   domain.periodic[2] ? domain.hi[2] : inf, high);
+    lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
+    lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
+    lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
+    const __m256d u[3] = {_mm256_set1_pd(one.frame.x()), _mm256_set1_pd(one.frame.y()), _mm256_set1_pd(one.frame.z())};
+    const __m256d drift = _mm256_set1_pd(one.dt), half = _mm256_set1_pd(one.half), zero = _mm256_setzero_pd();
+    const __m256d reach = _mm256_set1_pd(reachMargin * one.dt), margin = _mm256_set1_pd(radiusMargin);
+    __m256i displacement2 = _mm256_setzero_si256(), speed2 = displacement2, coordinate = displacement2,
+            growth = displacement2;
+    __m256d velocitySum[3] = {zero, zero, zero};
+    const __m256i magnitude = _mm256_set1_epi64x(0x7fffffffffffffff);  // (all bits but the sign)
+    for (; i + 4 <= n; i += 4) {
+        const __m256d mobile = lanes::mobileOf(one.fixed + i);
+        m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(_mm256_movemask_pd(mobile))));
+        __m256d moves[3], kick[3], turn[3], weight[3];
+        lanes::spread(mobile, moves);
+        lanes::spread(_mm256_mul_pd(half, _mm256_loadu_pd(one.invMass + i)), kick);
+        lanes::spread(_mm256_mul_pd(half, _mm256_loadu_pd(one.invInertia + i)), turn);
+        lanes::spread(_mm256_loadu_pd(one.mass + i), weight);
+        __m256d x[3], v[3];
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t at = 3 * i + 4 * c;
+            v[c] = lanes::advance(_mm256_loadu_pd(one.v + at), kick[c], _mm256_loadu_pd(one.oldForce + at), moves[c]);
+            _mm256_storeu_pd(one.v + at, v[c]);
+            x[c] = lanes::advance(_mm256_loadu_pd(one.x + at), drift, v[c], moves[c]);
+            _mm256_storeu_pd(one.w + at, lanes::advance(_mm256_loadu_pd(one.w + at), turn[c],
+                                                        _mm256_loadu_pd(one.torque + at), moves[c]));
+            _mm256_storeu_pd(one.torque + at, zero);
+            _mm256_storeu_pd(one.force + at, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
+        }
+        __m256d outside = zero;
+        for (int c = 0; c < 3; ++c) {
+            _mm256_storeu_pd(one.x + 3 * i + 4 * c, x[c]);
+            outside = _mm256_or_pd(outside, _mm256_or_pd(_mm256_cmp_pd(x[c], high[c], _CMP_GE_OQ),
+                                                         _mm256_cmp_pd(x[c], low[c], _CMP_LT_OQ)));
+        }
+        if (_mm256_movemask_pd(outside)) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
+            domain.wrap(p.position.data() + i, 4);
+            for (int c = 0; c < 3; ++c) x[c] = _mm256_loadu_pd(one.x + 3 * i + 4 * c);
+        }
+        if (one.reference) {
+            __m256d d[3], dAxis[3];
+            for (int c = 0; c < 3; ++c) {  // PeriodicImage::nearest
+                const __m256d raw = _mm256_sub_pd(x[c], _mm256_loadu_pd(one.reference + 3 * i + 4 * c));
+                const __m256d above = _mm256_cmp_pd(raw, halfLength[c], _CMP_GT_OQ);
+                const __m256d below = _mm256_cmp_pd(raw, _mm256_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
+                d[c] = _mm256_blendv_pd(_mm256_blendv_pd(raw, _mm256_sub_pd(raw, length[c]), above),
+                                        _mm256_add_pd(raw, length[c]), below);
+            }
+            lanes::toAxes(d, dAxis);
+            displacement2 = lanes::largerBits(displacement2, _mm256_castpd_si256(lanes::squaredNorms(dAxis)));
+        }
+        __m256d vAxis[3], xAxis[3], relative[3];
+        lanes::toAxes(v, vAxis);
+        lanes::toAxes(x, xAxis);
+        speed2 = lanes::largerBits(speed2, _mm256_castpd_si256(lanes::squaredNorms(vAxis)));
+        for (int c = 0; c < 3; ++c) {
+            coordinate = lanes::largerBits(coordinate, _mm256_and_si256(_mm256_castpd_si256(x[c]), magnitude));
+            velocitySum[c] = _mm256_add_pd(velocitySum[c], _mm256_and_pd(vAxis[c], mobile));
+            relative[c] = _mm256_sub_pd(vAxis[c], u[c]);
+        }
+        const __m256d radius = _mm256_loadu_pd(one.radius + i);
+        const __m256d grown =
+            _mm256_fmadd_pd(reach, _mm256_sqrt_pd(lanes::squaredNorms(relative)), _mm256_mul_pd(radius, margin));
+        // The four points (x, y, z, grown radius): a 4 x 4 transposition.
+        const __m256d xy0 = _mm256_unpacklo_pd(xAxis[0], xAxis[1]), xy1 = _mm256_unpackhi_pd(xAxis[0], xAxis[1]);
+        const __m256d zr0 = _mm256_unpacklo_pd(xAxis[2], grown), zr1 = _mm256_unpackhi_pd(xAxis[2], grown);
+        double* points = reinterpret_cast<double*>(one.points + i);
+        _mm256_storeu_pd(points, _mm256_permute2f128_pd(xy0, zr0, 0x20));
+        _mm256_storeu_pd(points + 4, _mm256_permute2f128_pd(xy1, zr1, 0x20));
+        _mm256_storeu_pd(points + 8, _mm256_permute2f128_pd(xy0, zr0, 0x31));
+        _mm256_storeu_pd(points + 12, _mm256_permute2f128_pd(xy1, zr1, 0x31));
+        // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
+        growth = lanes::largerBits(growth, _mm256_castpd_si256(_mm256_max_pd(zero, _mm256_sub_pd(grown, radius))));
+    }
+    m.displacement2 = lanes::largestBits(displacement2);
+    m.speed2 = lanes::largestBits(speed2);
+    m.coordinate = lanes::largestBits(coordinate);
+    m.growth = lanes::largestBits(growth);
+    for (int axis = 0; axis < 3; ++axis) {
+        alignas(32) double sums[4];
+        _mm256_store_pd(sums, velocitySum[axis]);
+        m.velocitySum[axis] = (sums[0] + sums[1]) + (sums[2] + sums[3]);
+    }
+    return i;
+}
 #endif
 
 }  // namespace
@@ -167,82 +347,10 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& pre
                           dt};
     Maxima m;
     std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    {
-        const double inf = std::numeric_limits<double>::infinity();
-        __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
-        lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
-                       domain.periodic[2] ? domain.lo[2] : -inf, low);
-        lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
-                       domain.periodic[2] ? domain.hi[2] : inf, high);
-        lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
-        lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
-        lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
-        lanes::perAxis(frameVelocity.x(), frameVelocity.y(), frameVelocity.z(), u);
-        const __m512d drift = _mm512_set1_pd(dt), half = _mm512_set1_pd(one.half), zero = _mm512_setzero_pd();
-        const __m512d reach = _mm512_set1_pd(reachMargin * dt), margin = _mm512_set1_pd(radiusMargin);
-        __m512i displacement2 = _mm512_setzero_si512(), speed2 = displacement2, coordinate = displacement2,
-                growth = displacement2;
-        __m512d velocitySum[3] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
-        const __m512i magnitude = _mm512_set1_epi64(0x7fffffffffffffff);  // (all bits but the sign)
-        for (; i + 8 <= n; i += 8) {
-            const lanes::MobileLanes kick(one.fixed + i, one.half, one.invMass + i);
-            m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(kick.of[0])) +  // (three lanes a particle)
-                                                 std::popcount(static_cast<unsigned>(kick.of[1])) +
-                                                 std::popcount(static_cast<unsigned>(kick.of[2]))) / 3;
-            __m512d turn[3], weight[3];
-            lanes::spread(_mm512_mul_pd(half, _mm512_loadu_pd(one.invInertia + i)), turn);
-            lanes::spread(_mm512_loadu_pd(one.mass + i), weight);
-            __m512d x[3], v[3];
-            for (int c = 0; c < 3; ++c) {
-                const std::size_t at = 3 * i + 8 * c;
-                v[c] = kick.advance(_mm512_loadu_pd(one.v + at), kick.factor[c], _mm512_loadu_pd(one.oldForce + at), c);
-                _mm512_storeu_pd(one.v + at, v[c]);
-                velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
-                x[c] = kick.advance(_mm512_loadu_pd(one.x + at), drift, v[c], c);
-                _mm512_storeu_pd(one.w + at, kick.advance(_mm512_loadu_pd(one.w + at), turn[c],
-                                                          _mm512_loadu_pd(one.torque + at), c));
-                _mm512_storeu_pd(one.torque + at, zero);
-                _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
-            }
-            __mmask8 outside = 0;
-            for (int c = 0; c < 3; ++c) {
-                _mm512_storeu_pd(one.x + 3 * i + 8 * c, x[c]);
-                outside |= _mm512_cmp_pd_mask(x[c], high[c], _CMP_GE_OQ) | _mm512_cmp_pd_mask(x[c], low[c], _CMP_LT_OQ);
-            }
-            if (outside) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
-                domain.wrap(p.position.data() + i, 8);
-                for (int c = 0; c < 3; ++c) x[c] = _mm512_loadu_pd(one.x + 3 * i + 8 * c);
-            }
-            if (one.reference) {
-                __m512d d[3];
-                for (int c = 0; c < 3; ++c) {
-                    const __m512d raw = _mm512_sub_pd(x[c], _mm512_loadu_pd(one.reference + 3 * i + 8 * c));
-                    const __mmask8 above = _mm512_cmp_pd_mask(raw, halfLength[c], _CMP_GT_OQ);
-                    const __mmask8 below =
-                        _mm512_cmp_pd_mask(raw, _mm512_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
-                    d[c] = _mm512_mask_add_pd(_mm512_mask_sub_pd(raw, above, raw, length[c]), below, raw, length[c]);
-                }
-                displacement2 = largerOf(displacement2, bitsOf(squaredNorms(d)));
-            }
-            const __m512d s2 = squaredNorms(v);
-            speed2 = largerOf(speed2, bitsOf(s2));
-            for (int c = 0; c < 3; ++c) coordinate = largerOf(coordinate, _mm512_and_si512(bitsOf(x[c]), magnitude));
-            __m512d relative[3];
-            for (int c = 0; c < 3; ++c) relative[c] = _mm512_sub_pd(v[c], u[c]);
-            const __m512d radius = _mm512_loadu_pd(one.radius + i);
-            const __m512d grown =
-                _mm512_fmadd_pd(reach, _mm512_maskz_sqrt_pd(0xff, squaredNorms(relative)), _mm512_mul_pd(radius, margin));
-            storePoints(x, grown, reinterpret_cast<double*>(one.points + i));
-            // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
-            growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
-        }
-        m.displacement2 = largestOf(displacement2);
-        m.speed2 = largestOf(speed2);
-        m.coordinate = largestOf(coordinate);
-        m.growth = largestOf(growth);
-        for (int axis = 0; axis < 3; ++axis) m.velocitySum[axis] = sumOf(axisOf(velocitySum, axis));
-    }
+#if defined(TALUS_AVX512_LANES)
+    i = inEightParticleLanes(one, domain, p, m);
+#elif defined(TALUS_AVX2_LANES)
+    i = inFourParticleLanes(one, domain, p, m);
 #endif
     for (; i < n; ++i) one(i, m);
     result.moves = {std::bit_cast<double>(m.displacement2), std::bit_cast<double>(m.speed2),

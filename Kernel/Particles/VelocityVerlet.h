@@ -10,7 +10,8 @@
 //
 // With AVX-512 they take eight particles at a time in lanes written by hand
 // (Math/EightParticleLanes.h), 2.5x faster than GCC's vectorisation of the loops below, which is
-// left for the last few particles and for processors without AVX-512.
+// left for the last few particles; with AVX2 only, four at a time (Math/FourParticleLanes.h), and
+// without either (a portable build) as GCC vectorises the loops below.
 #pragma once
 
 #include <bit>
@@ -18,6 +19,7 @@
 #include <cstdint>
 
 #include "Math/EightParticleLanes.h"
+#include "Math/FourParticleLanes.h"
 #include "Particles/ParticleStore.h"
 
 namespace talus {
@@ -41,6 +43,16 @@ inline void advanceMobile(double* __restrict x, const double* __restrict rate, c
         for (int c = 0; c < 3; ++c) {
             double* xc = x + 3 * i + 8 * c;
             _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), block.factor[c], _mm512_loadu_pd(rate + 3 * i + 8 * c), c));
+        }
+    }
+#elif defined(TALUS_AVX2_LANES)
+    for (; i + 4 <= n; i += 4) {
+        __m256d moves[3], factor[3];
+        lanes::spread(lanes::mobileOf(fixed + i), moves);
+        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(scale + i)), factor);
+        for (int c = 0; c < 3; ++c) {
+            double* xc = x + 3 * i + 4 * c;
+            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), factor[c], _mm256_loadu_pd(rate + 3 * i + 4 * c), moves[c]));
         }
     }
 #endif
@@ -74,6 +86,21 @@ inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const
                 block.advance(_mm512_loadu_pd(vc), block.factor[c], _mm512_loadu_pd(force + 3 * i + 8 * c), c);
             _mm512_storeu_pd(vc, kicked);
             _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), drift, kicked, c));
+        }
+    }
+#elif defined(TALUS_AVX2_LANES)
+    const __m256d drift = _mm256_set1_pd(dt);
+    for (; i + 4 <= n; i += 4) {
+        __m256d moves[3], factor[3];
+        lanes::spread(lanes::mobileOf(fixed + i), moves);
+        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(invMass + i)), factor);
+        for (int c = 0; c < 3; ++c) {
+            double* vc = v + 3 * i + 4 * c;
+            double* xc = x + 3 * i + 4 * c;
+            const __m256d kicked =
+                lanes::advance(_mm256_loadu_pd(vc), factor[c], _mm256_loadu_pd(force + 3 * i + 4 * c), moves[c]);
+            _mm256_storeu_pd(vc, kicked);
+            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), drift, kicked, moves[c]));
         }
     }
 #endif
@@ -114,6 +141,18 @@ inline void startForcesWithGravity(ParticleStore& p, const Vec3& gravity) {
         for (int c = 0; c < 3; ++c) {
             _mm512_storeu_pd(force + 3 * i + 8 * c, _mm512_maskz_mul_pd(block.of[c], block.factor[c], g[c]));
             _mm512_storeu_pd(torque + 3 * i + 8 * c, _mm512_setzero_pd());
+        }
+    }
+#elif defined(TALUS_AVX2_LANES)
+    __m256d g[3];
+    lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
+    for (; i + 4 <= n; i += 4) {
+        __m256d moves[3], weight[3];
+        lanes::spread(lanes::mobileOf(fixed + i), moves);
+        lanes::spread(_mm256_loadu_pd(mass + i), weight);
+        for (int c = 0; c < 3; ++c) {
+            _mm256_storeu_pd(force + 3 * i + 4 * c, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
+            _mm256_storeu_pd(torque + 3 * i + 4 * c, _mm256_setzero_pd());
         }
     }
 #endif
