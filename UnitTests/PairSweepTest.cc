@@ -1,8 +1,9 @@
 // The force loop's first pass (Contacts/PairSweep.h): the pairs it picks are exactly those a
 // direct evaluation of the rule picks (nearest periodic image closer than the sum of the two
 // radii as passed, here grown by a reach of each particle as the force loop grows them, or a
-// pending contact), in order, with their separations to the bit, whether the AVX-512 lanes or
-// the scalar loop decide (both forms are swept; without AVX-512 in the build both are the loop).
+// pending contact), in order, with their separations to the bit, whether the lanes (AVX-512, or
+// AVX2 without it) or the scalar loop decide (both forms are swept; without either in the build
+// both are the loop); from the whole list and from a near list.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,6 +97,32 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         }
         EXPECT_EQ(picked, expected) << n << " particles";
         EXPECT_EQ(separations, expectedSeparations) << n << " particles";
+        // A near list (every pair but each third): its sweep in both forms picks the rule's pairs among them.
+        NearPairs near;
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            if (k % 3 != 1) near.pairs.push_back({pairs[k], static_cast<std::uint32_t>(k)});
+        std::vector<std::uint32_t> expectedNear;
+        std::vector<Vec3> expectedNearSeparations;
+        for (std::size_t a = 0; a < expected.size(); ++a)
+            if (expected[a] % 3 != 1)
+                expectedNear.push_back(expected[a]), expectedNearSeparations.push_back(expectedSeparations[a]);
+        for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
+            std::vector<std::uint32_t> nearPicked;
+            std::vector<Vec3> nearSeparations;
+            SweptPairs swept;
+            for (std::size_t begin = 0; begin < near.pairs.size(); begin += SweptPairs::capacity) {
+                sweepNearPairs<true>(near, begin, std::min(near.pairs.size(), begin + SweptPairs::capacity),
+                                     points.data(), states.data(), image, swept, form);
+                for (std::size_t a = 0; a < swept.count; ++a) {
+                    if (!(swept.particles[a] == pairs[swept.pair[a]])) ++wrongParticles;
+                    nearPicked.push_back(swept.pair[a]);
+                    nearSeparations.push_back(swept.separation(a));
+                }
+            }
+            EXPECT_EQ(nearPicked, expectedNear) << n << " particles, near list, lanes " << (form == SweepForm::lanes);
+            EXPECT_EQ(nearSeparations, expectedNearSeparations) << n << " particles, near list";
+        }
+        EXPECT_EQ(wrongParticles, 0u) << "each picked pair of the near list comes with its particles";
         if (n < 100) continue;
         EXPECT_GT(expected.size(), pairs.size() / 10) << "the test must include pairs that need work";
         EXPECT_LT(expected.size(), pairs.size() / 2) << "and pairs that do not";

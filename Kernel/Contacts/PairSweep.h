@@ -27,10 +27,14 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define TALUS_AVX512_SWEEP 1
+#include <immintrin.h>
+#elif defined(__AVX2__) && defined(__FMA__)
+#define TALUS_AVX2_SWEEP 1
 #include <immintrin.h>
 #endif
 
@@ -53,12 +57,12 @@ struct SweptPairs {
     Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
 };
 
-// The form of the sweep this process uses: the scalar loop, or the AVX-512 lanes where the
-// build has them. Undecided until chooseSweepForm has timed both; the environment variable
-// TALUS_SWEEP=scalar or TALUS_SWEEP=lanes fixes it (for measurements).
+// The form of the sweep this process uses: the scalar loop, or the lanes where the build has
+// them (AVX-512, or AVX2 without it). Undecided until chooseSweepForm has timed both; the
+// environment variable TALUS_SWEEP=scalar or TALUS_SWEEP=lanes fixes it (for measurements).
 enum class SweepForm { undecided, scalar, lanes };
 inline SweepForm& sweepForm() {
-#ifdef TALUS_AVX512_SWEEP
+#if defined(TALUS_AVX512_SWEEP) || defined(TALUS_AVX2_SWEEP)
     static SweepForm form = [] {
         const char* fixed = std::getenv("TALUS_SWEEP");
         if (fixed && std::strcmp(fixed, "scalar") == 0) return SweepForm::scalar;
@@ -90,6 +94,96 @@ template <bool nearestImage>
     out.dx[picked] = d.x(), out.dy[picked] = d.y(), out.dz[picked] = d.z();
     picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
 }
+
+#ifdef TALUS_AVX2_SWEEP
+namespace detail {
+// AVX2 has no compress-store: the picked lanes of four are packed to the front by a permutation
+// chosen by their mask. For each mask, the picked lanes' numbers in order (the rest after them),
+// as the 32-bit elements of 64-bit lanes (lane l: 2l, 2l + 1) and as lane numbers.
+struct LeftPacking {
+    std::int32_t wide[16][8];
+    std::int32_t narrow[16][4];
+};
+constexpr LeftPacking makeLeftPacking() {
+    LeftPacking packing{};
+    for (int mask = 0; mask < 16; ++mask) {
+        int to = 0;
+        for (int pass = 0; pass < 2; ++pass)  // the picked lanes, then the others
+            for (int lane = 0; lane < 4; ++lane)
+                if (((mask >> lane) & 1) == (pass == 0)) {
+                    packing.narrow[mask][to] = lane;
+                    packing.wide[mask][2 * to] = 2 * lane, packing.wide[mask][2 * to + 1] = 2 * lane + 1;
+                    ++to;
+                }
+    }
+    return packing;
+}
+inline constexpr LeftPacking leftPacking = makeLeftPacking();
+}  // namespace detail
+
+// The rule for four pairs at a time, from `begin` on while four are left before `end`; returns
+// where it stopped. pairAt(m) gives the m-th pair to sweep and its place k in the whole list.
+// Each pair's two points are loaded whole (x, y, z, radius: one 32-byte load each, no gathers),
+// subtracted with the radii added (b negated in its first three lanes: a + (-b) is a - b to
+// the bit), and the four differences turned into one vector per axis; the nearest image, the
+// distance and the pick as in sweepPair. Same decisions and separations, bit for bit.
+template <bool nearestImage, class PairAt>
+inline std::size_t sweepInFourPairLanes(PairAt pairAt, std::size_t begin, std::size_t end, const SweepPoint* points,
+                                        const ContactHistory::State* states, const PeriodicImage& image,
+                                        SweptPairs& out, std::size_t& picked) {
+    __m256d length[3], half[3], minusHalf[3];
+    for (int a = 0; a < 3; ++a) {
+        length[a] = _mm256_set1_pd(image.length(a));
+        half[a] = _mm256_set1_pd(image.halfLength(a));
+        minusHalf[a] = _mm256_set1_pd(-image.halfLength(a));
+    }
+    const __m256d negateXyz = _mm256_setr_pd(-0.0, -0.0, -0.0, 0.0);
+    std::size_t m = begin;
+    for (; m + 4 <= end; m += 4) {
+        alignas(32) ParticlePair pair[4];
+        alignas(16) std::uint32_t index[4];
+        __m256d d[4];  // xi - xj, yi - yj, zi - zj, ri + rj
+        for (int l = 0; l < 4; ++l) {
+            const auto [particles, k] = pairAt(m + static_cast<std::size_t>(l));
+            pair[l] = particles, index[l] = static_cast<std::uint32_t>(k);
+            d[l] = _mm256_add_pd(_mm256_loadu_pd(&points[particles.i].x),
+                                 _mm256_xor_pd(_mm256_loadu_pd(&points[particles.j].x), negateXyz));
+        }
+        const __m256d t0 = _mm256_unpacklo_pd(d[0], d[1]), t1 = _mm256_unpackhi_pd(d[0], d[1]);
+        const __m256d t2 = _mm256_unpacklo_pd(d[2], d[3]), t3 = _mm256_unpackhi_pd(d[2], d[3]);
+        __m256d axis[3] = {_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20),
+                           _mm256_permute2f128_pd(t0, t2, 0x31)};
+        const __m256d limit = _mm256_permute2f128_pd(t1, t3, 0x31);
+        if constexpr (nearestImage)
+            for (int a = 0; a < 3; ++a) {
+                const __m256d above = _mm256_cmp_pd(axis[a], half[a], _CMP_GT_OQ);
+                const __m256d below = _mm256_cmp_pd(axis[a], minusHalf[a], _CMP_LT_OQ);
+                axis[a] = _mm256_blendv_pd(_mm256_blendv_pd(axis[a], _mm256_sub_pd(axis[a], length[a]), above),
+                                           _mm256_add_pd(axis[a], length[a]), below);
+            }
+        const __m256d r2 =
+            _mm256_fmadd_pd(axis[2], axis[2], _mm256_fmadd_pd(axis[1], axis[1], _mm256_mul_pd(axis[0], axis[0])));
+        const __m256d near = _mm256_cmp_pd(r2, _mm256_mul_pd(limit, limit), _CMP_LT_OQ);
+        const int pending = (states[index[0]] != ContactHistory::apart) | (states[index[1]] != ContactHistory::apart) << 1 |
+                            (states[index[2]] != ContactHistory::apart) << 2 | (states[index[3]] != ContactHistory::apart) << 3;
+        const int pick = _mm256_movemask_pd(near) | pending;
+        const __m256i wide = _mm256_load_si256(reinterpret_cast<const __m256i*>(detail::leftPacking.wide[pick]));
+        const __m128i narrow = _mm_load_si128(reinterpret_cast<const __m128i*>(detail::leftPacking.narrow[pick]));
+        const auto pack = [&](__m256d v) { return _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), wide)); };
+        // (Whole vectors stored: picked + 4 <= m + 4 - begin <= SweptPairs::capacity.)
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.particles + picked),
+                            _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(pair)), wide));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out.pair + picked),
+                         _mm_castps_si128(_mm_permutevar_ps(
+                             _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(index))), narrow)));
+        _mm256_storeu_pd(out.dx + picked, pack(axis[0]));
+        _mm256_storeu_pd(out.dy + picked, pack(axis[1]));
+        _mm256_storeu_pd(out.dz + picked, pack(axis[2]));
+        picked += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(pick)));
+    }
+    return m;
+}
+#endif
 
 // Pairs [begin, end) of the list, at most SweptPairs::capacity of them, in the given form
 // (lanes: the AVX-512 lanes if the build has them, for as many whole groups of eight as fit).
@@ -143,6 +237,10 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         picked += static_cast<std::size_t>(__builtin_popcount(pick));
     }
 #pragma GCC diagnostic pop
+#elif defined(TALUS_AVX2_SWEEP)
+    if (form == SweepForm::lanes)
+        k = sweepInFourPairLanes<nearestImage>([pairs](std::size_t m) { return std::pair(pairs[m], m); }, k, end,
+                                               points, states, image, out, picked);
 #endif
     for (; k < end; ++k) sweepPair<nearestImage>(pairs[k], k, points, states, image, out, picked);
     out.count = picked;
@@ -152,9 +250,16 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 // SweptPairs::capacity of them; out.pair holds the pairs' places in the whole list.
 template <bool nearestImage>
 inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t end, const SweepPoint* points,
-                           const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out) {
-    std::size_t picked = 0;
-    for (std::size_t m = begin; m < end; ++m)
+                           const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
+                           [[maybe_unused]] SweepForm form = sweepForm()) {
+    std::size_t picked = 0, m = begin;
+#ifdef TALUS_AVX2_SWEEP
+    if (form == SweepForm::lanes)
+        m = sweepInFourPairLanes<nearestImage>(
+            [&near](std::size_t a) { return std::pair(near.pairs[a].particles, std::size_t{near.pairs[a].index}); }, m,
+            end, points, states, image, out, picked);
+#endif
+    for (; m < end; ++m)
         sweepPair<nearestImage>(near.pairs[m].particles, near.pairs[m].index, points, states, image, out, picked);
     out.count = picked;
 }
