@@ -103,7 +103,7 @@ namespace detail {
 // AVX2 has no compress-store: the picked lanes of four are packed to the front by a permutation
 // chosen by their mask. For each mask, the picked lanes' numbers in order (the rest after them),
 // as the 32-bit elements of 64-bit lanes (lane l: 2l, 2l + 1) and as lane numbers.
-struct LeftPacking {
+struct alignas(32) LeftPacking {
     std::int32_t wide[16][8];
     std::int32_t narrow[16][4];
 };
@@ -170,8 +170,8 @@ inline std::size_t sweepInFourPairLanes(PairAt pairAt, std::size_t begin, std::s
         const int pending = (states[index[0]] != ContactHistory::apart) | (states[index[1]] != ContactHistory::apart) << 1 |
                             (states[index[2]] != ContactHistory::apart) << 2 | (states[index[3]] != ContactHistory::apart) << 3;
         const int pick = _mm256_movemask_pd(near) | pending;
-        const __m256i wide = _mm256_load_si256(reinterpret_cast<const __m256i*>(detail::leftPacking.wide[pick]));
-        const __m128i narrow = _mm_load_si128(reinterpret_cast<const __m128i*>(detail::leftPacking.narrow[pick]));
+        const __m256i wide = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(detail::leftPacking.wide[pick]));
+        const __m128i narrow = _mm_loadu_si128(reinterpret_cast<const __m128i*>(detail::leftPacking.narrow[pick]));
         const auto pack = [&](__m256d v) { return _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), wide)); };
         // (Whole vectors stored: picked + 4 <= m + 4 - begin <= SweptPairs::capacity.)
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.particles + picked),

@@ -85,6 +85,27 @@ struct OneParticle {
     }
 };
 
+#if defined(TALUS_AVX512_LANES) || defined(TALUS_AVX2_LANES)
+// The box as the lanes below compare with it, axis by axis: the wrap's bounds (lo and hi along
+// the periodic axes, -inf and +inf along the others: never outside), and the nearest image's
+// lengths and half lengths.
+struct BoxPerAxis {
+    double low[3], high[3], length[3], half[3];
+    BoxPerAxis(const Domain& domain, const PeriodicImage& image) {
+        const double inf = std::numeric_limits<double>::infinity();
+        for (int a = 0; a < 3; ++a) {
+            low[a] = domain.periodic[a] ? domain.lo[a] : -inf;
+            high[a] = domain.periodic[a] ? domain.hi[a] : inf;
+            length[a] = image.length(a), half[a] = image.halfLength(a);
+        }
+    }
+};
+template <class Lanes>
+void perAxis(const double (&value)[3], Lanes (&out)[3]) {
+    lanes::perAxis(value[0], value[1], value[2], out);
+}
+#endif
+
 #ifdef TALUS_AVX512_LANES
 // The eight particles' values of one axis (0: x, 1: y, 2: z) from the three vectors that hold
 // their coordinates in storage order (EightParticleLanes.h).
@@ -137,14 +158,9 @@ inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
 std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
     const std::size_t n = p.size();
     std::size_t i = 0;
-    const double inf = std::numeric_limits<double>::infinity();
+    const BoxPerAxis box(domain, one.image);
     __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
-    lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
-                   domain.periodic[2] ? domain.lo[2] : -inf, low);
-    lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
-                   domain.periodic[2] ? domain.hi[2] : inf, high);
-    lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
-    lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
+    perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
     lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
     lanes::perAxis(one.frame.x(), one.frame.y(), one.frame.z(), u);
     const __m512d drift = _mm512_set1_pd(one.dt), half = _mm512_set1_pd(one.half), zero = _mm512_setzero_pd();
@@ -220,14 +236,9 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
 std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
     const std::size_t n = p.size();
     std::size_t i = 0;
-    const double inf = std::numeric_limits<double>::infinity();
+    const BoxPerAxis box(domain, one.image);
     __m256d low[3], high[3], length[3], halfLength[3], g[3];
-    lanes::perAxis(domain.periodic[0] ? domain.lo[0] : -inf, domain.periodic[1] ? domain.lo[1] : -inf,
-                   domain.periodic[2] ? domain.lo[2] : -inf, low);
-    lanes::perAxis(domain.periodic[0] ? domain.hi[0] : inf, domain.periodic[1] ? domain.hi[1] : inf,
-                   domain.periodic[2] ? domain.hi[2] : inf, high);
-    lanes::perAxis(one.image.length(0), one.image.length(1), one.image.length(2), length);
-    lanes::perAxis(one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2), halfLength);
+    perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
     lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
     const __m256d u[3] = {_mm256_set1_pd(one.frame.x()), _mm256_set1_pd(one.frame.y()), _mm256_set1_pd(one.frame.z())};
     const __m256d drift = _mm256_set1_pd(one.dt), half = _mm256_set1_pd(one.half), zero = _mm256_setzero_pd();
