@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up a new machine, builds Talus and passes every test:
 #   1. the Release build: unit tests and self-tests (ctest);
-#   2. the same tests under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
+#   2. the hand-written lanes compiled for the instruction sets this machine lacks
+#      (Scripts/checkLaneForms.sh: AVX-512, AVX2, none);
+#   3. the same tests under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
 # Usage: Scripts/test.sh [--no-sanitize]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -10,6 +12,7 @@ export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/ccache}
 
 "$top/Scripts/build.sh" "$top/build" Release
 (cd "$top/build" && ctest --output-on-failure -j2)
+"$top/Scripts/checkLaneForms.sh"
 
 if [ "${1:-}" != "--no-sanitize" ]; then
   "$top/Scripts/build.sh" "$top/build-asan" Sanitize
