@@ -50,6 +50,17 @@ struct Domain {
     double length(int axis) const { return hi[axis] - lo[axis]; }
     bool anyPeriodic() const { return periodic[0] || periodic[1] || periodic[2]; }
 
+    // What a position must lie in, per axis, to need no wrap: [lo, hi) along the periodic axes,
+    // everything along the others (so that lanes can compare every axis alike).
+    struct WrapBounds {
+        double low[3], high[3];
+    };
+    WrapBounds wrapBounds() const {
+        const double inf = std::numeric_limits<double>::infinity();
+        WrapBounds b;
+        for (int a = 0; a < 3; ++a) b.low[a] = periodic[a] ? lo[a] : -inf, b.high[a] = periodic[a] ? hi[a] : inf;
+        return b;
+    }
     // Moves x into [lo, hi) along the periodic axes.
     void wrap(Vec3& x) const {
         for (int a = 0; a < 3; ++a)
@@ -64,9 +75,9 @@ struct Domain {
         std::size_t first = 0;
 #ifdef TALUS_AVX512_LANES
         __m512d low[3], high[3];
-        const double inf = std::numeric_limits<double>::infinity();
-        lanes::perAxis(periodic[0] ? lo[0] : -inf, periodic[1] ? lo[1] : -inf, periodic[2] ? lo[2] : -inf, low);
-        lanes::perAxis(periodic[0] ? hi[0] : inf, periodic[1] ? hi[1] : inf, periodic[2] ? hi[2] : inf, high);
+        const WrapBounds bounds = wrapBounds();
+        lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
+        lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
         for (; first + 8 <= n; first += 8) {
             const double* block = x[first].data();
             __mmask8 outside = 0;
@@ -80,9 +91,9 @@ struct Domain {
         }
 #elif defined(TALUS_AVX2_LANES)
         __m256d low[3], high[3];
-        const double inf = std::numeric_limits<double>::infinity();
-        lanes::perAxis(periodic[0] ? lo[0] : -inf, periodic[1] ? lo[1] : -inf, periodic[2] ? lo[2] : -inf, low);
-        lanes::perAxis(periodic[0] ? hi[0] : inf, periodic[1] ? hi[1] : inf, periodic[2] ? hi[2] : inf, high);
+        const WrapBounds bounds = wrapBounds();
+        lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
+        lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
         for (; first + 4 <= n; first += 4) {
             const double* block = x[first].data();
             __m256d outside = _mm256_setzero_pd();

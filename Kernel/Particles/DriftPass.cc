@@ -92,10 +92,9 @@ struct OneParticle {
 struct BoxPerAxis {
     double low[3], high[3], length[3], half[3];
     BoxPerAxis(const Domain& domain, const PeriodicImage& image) {
-        const double inf = std::numeric_limits<double>::infinity();
+        const Domain::WrapBounds bounds = domain.wrapBounds();
         for (int a = 0; a < 3; ++a) {
-            low[a] = domain.periodic[a] ? domain.lo[a] : -inf;
-            high[a] = domain.periodic[a] ? domain.hi[a] : inf;
+            low[a] = bounds.low[a], high[a] = bounds.high[a];
             length[a] = image.length(a), half[a] = image.halfLength(a);
         }
     }
