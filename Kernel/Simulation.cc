@@ -381,7 +381,15 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
+    stepsInWaves_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
+        if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
+            actionsBeforeTimeStep();
+            k += integrateWave() - 1;
+            actionsAfterTimeStep();
+            progress.update(state_.time, k, mobile);
+            continue;
+        }
         const bool saving = (state_.step + 1) % every == 0 || k == steps;
         actionsBeforeTimeStep();
         integrate(saving);
@@ -494,6 +502,7 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
+    if (rebuild && waveSteps_ > 1) makeWaveSchedule();
     PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
     if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
@@ -537,8 +546,11 @@ void Simulation::reorderParticles(bool withPreviousForces) {
     for (double r : p.radius) largest = std::max(largest, r);
     if (p.size() < 2 || largest <= 0) return;
     // On ranks the order must not depend on the order particles arrived in (exact restarts).
+    // With waves, the order of their cells (Contacts/WaveSchedule.h), where the box has them.
+    const std::optional<WaveCells> cells = waveCellsForBuild(nullptr);
     const std::vector<std::size_t> order =
-        spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);
+        cells ? cells->order(p.position)
+              : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);
     bool unchanged = true;
     for (std::size_t k = 0; k < order.size() && unchanged; ++k) unchanged = order[k] == k;
     if (unchanged) return;
@@ -599,6 +611,7 @@ void Simulation::integrate(bool recordContacts) {
                                           frame, dt, list.sweepPointScratch);
         list.sweepPointsGrowth = drifted->growth;
         driftFrame_ = drifted->meanVelocity;
+        lastDisplacement_ = std::sqrt(drifted->moves.displacement2);
     } else {
         driftFrame_.reset();
         halfKickAndDrift(p, owned, half, dt);

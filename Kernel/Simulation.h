@@ -56,6 +56,15 @@ public:
     // trajectories as the pass-by-pass step, for tests that compare the two.
     void setDriftInOnePass(bool on) { driftInOnePass_ = on; }
     bool driftsInOnePass() const;  // whether the next step will
+    // Several steps per pass over the particles (time skewing, Contacts/WaveSchedule.h,
+    // Documentation/TimeSkewing.md): waves of `steps` steps (1, the default: one step per pass)
+    // in strips of about `stripColumns` cells, where the scene allows them (spheres in a box
+    // periodic along x and y, one rank, nothing but the particles' own motion between steps, no
+    // output within the wave). The same physics as single steps, the forces summed in another
+    // order (round-off); actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
+    void setWaves(int steps, int stripColumns = 16);
+    // Steps taken in waves since the start of the last solve (for tests and the benchmark).
+    std::uint64_t stepsInWaves() const { return stepsInWaves_; }
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
     RunSettings& settings() { return state_.settings; }
 
@@ -207,6 +216,11 @@ private:
     void requireMotion(int motion, const std::string& what) const;
     std::size_t fixParticle(std::size_t slot, int motion);
     void reorderParticles(bool withPreviousForces);
+    // Waves (SimulationWaves.cc).
+    bool waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
+    std::uint64_t integrateWave();  // returns the steps it took (1 if the list needed a rebuild)
+    void makeWaveSchedule();
+    std::optional<WaveCells> waveCellsForBuild(std::string* why) const;
     std::uint64_t saveEvery() const;
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
@@ -234,6 +248,12 @@ private:
     static bool defaultDriftInOnePass();
     IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
+    int waveSteps_ = 1, waveStripColumns_ = 16;
+    WaveSchedule waveSchedule_;
+    std::uint64_t waveScheduleBuild_ = 0;  // the list build it was made for (0: none)
+    std::string waveScheduleRefusal_;      // why the last build has none
+    double lastDisplacement_ = 0;          // the largest since the build, at the last drift
+    std::uint64_t stepsInWaves_ = 0;
     std::unique_ptr<CommandLine> commandLine_;
     struct KeptValue {
         std::string name;

@@ -18,6 +18,7 @@
 #include "Contacts/PairList.h"
 #include "Contacts/PairSweep.h"
 #include "Contacts/ShapedContactGeometry.h"
+#include "Contacts/WaveSchedule.h"
 #include "Error.h"
 #include "Particles/ParticleStore.h"
 #include "Species/SpeciesTable.h"
@@ -111,11 +112,15 @@ public:
     // the contacts it picked.
     template <bool nearestImage>
     void sweptContacts(PairList& list, std::size_t from, std::size_t to, const SweepPoint* points,
-                       const PeriodicImage& image, SweptPairs& swept, const NearPairs* near = nullptr) {
+                       const PeriodicImage& image, SweptPairs& swept, const NearPairs* near = nullptr,
+                       const std::uint32_t* index = nullptr) {
         for (std::size_t begin = from; begin < to; begin += SweptPairs::capacity) {
             const std::size_t end = std::min(to, begin + SweptPairs::capacity);
             if (near)
                 sweepNearPairs<nearestImage>(*near, begin, end, points, list.history.states(), image, swept);
+            else if (index)
+                sweepIndexedPairs<nearestImage>(list.pairs.data(), index, begin, end, points, list.history.states(),
+                                                image, swept);
             else
                 sweepPairs<nearestImage>(list.pairs.data(), begin, end, points, p_.size(), list.history.states(), image,
                                          swept);
@@ -254,19 +259,44 @@ public:
     }
 
     void wallPairs(PairList& list, const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions) {
-        for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
+        for (std::size_t k = 0; k < list.wallPairs.size(); ++k) wallPair(list, k, walls, motions);
+    }
+
+    // The pairs and wall candidates one region of a wave computes (Contacts/WaveSchedule.h): its
+    // interior pairs, those near a face, its particles' walls, then the batches applied, so that
+    // the region's particles have all their forces of the step before they advance.
+    void regionPairs(PairList& list, const Domain& domain, const WaveSchedule& schedule, const WaveRegion& region,
+                     const std::vector<Wall>& walls) {
+        const PeriodicImage image(domain);
+        const SweepPoint* points = list.sweepPointScratch.data();
+        const std::uint32_t* index = schedule.pairIndex().data();
+        SweptPairs swept;
+        sweptContacts<false>(list, region.pairs, region.interiorEnd, points, image, swept, nullptr, index);
+        sweptContacts<true>(list, region.interiorEnd, region.end, points, image, swept, nullptr, index);
+        static const std::vector<PrescribedMotion> noMotions;
+        for (std::uint32_t e = region.wallsBegin; e < region.wallsEnd; ++e)
+            wallPair(list, schedule.wallIndex()[e], walls, noMotions);
+        if constexpr (Law::batched) flush(list);
+    }
+    // Raises the largest speed the skipping of far walls assumes (to one measured since).
+    void allowSpeed(double maxSpeed) { closing_ = std::max(closing_, 2 * maxSpeed * dt_); }
+
+private:
+    void wallPair(PairList& list, std::size_t k, const std::vector<Wall>& walls,
+                  const std::vector<PrescribedMotion>& motions) {
+        {
             const std::uint32_t i = list.wallPairs[k].particle;
             const Wall& wall = walls[list.wallPairs[k].wall];
             if (shapes_ && p_.isShaped(i)) [[unlikely]] {
                 shapedWall(list, k, i, wall, motions);
-                continue;
+                return;
             }
             const double distance = wall.signedDistance(p_.position[i]);
             const bool touching = distance < p_.radius[i];
             // (A moving wall may close in faster than the particles: no shortcut for it.)
             if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
                 distance - p_.radius[i] >= closing_)
-                continue;
+                return;
             ContactHistory history = list.wallHistory.get(k);
             const double overlap = p_.radius[i] - distance;
             const Vec3 normal = wall.normalAt(p_.position[i]);
@@ -292,7 +322,6 @@ public:
         }
     }
 
-private:
     // --- non-spherical particles (SPEC.md 4) ---
     // A pair with a superquadric: the exact contact (warm-started), then the law on the
     // kinematics of the contact point, with the branch vectors from the centres to it. The ends
@@ -594,7 +623,8 @@ private:
     bool oneWay_ = false;  // in oneWayPairs: no reaction on j, no records
     ParticleStore& p_;
     const PairTable<Law>& laws_;
-    const double dt_, closing_;
+    const double dt_;
+    double closing_;
     const std::vector<Vec3>& previousForce_;
     ContactSummary& summary_;
     ContactRecords* records_;

@@ -249,22 +249,42 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
     out.count = picked;
 }
 
-// The same rule for the pairs [begin, end) of a near list (NearPairs), at most
-// SweptPairs::capacity of them; out.pair holds the pairs' places in the whole list.
+// The same rule for the m-th pairs of a selection, m in [begin, end), at most
+// SweptPairs::capacity of them; pairAt(m) gives the pair and its place k in the whole list, which
+// out.pair holds.
+template <bool nearestImage, class PairAt>
+inline void sweepSelectedPairs(PairAt pairAt, std::size_t begin, std::size_t end, const SweepPoint* points,
+                               const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
+                               [[maybe_unused]] SweepForm form = sweepForm()) {
+    std::size_t picked = 0, m = begin;
+#ifdef TALUS_AVX2_SWEEP
+    if (form == SweepForm::lanes) m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
+#endif
+    for (; m < end; ++m) {
+        const auto [pair, k] = pairAt(m);
+        sweepPair<nearestImage>(pair, k, points, states, image, out, picked);
+    }
+    out.count = picked;
+}
+
+// The pairs [begin, end) of a near list (NearPairs).
 template <bool nearestImage>
 inline void sweepNearPairs(const NearPairs& near, std::size_t begin, std::size_t end, const SweepPoint* points,
                            const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
-                           [[maybe_unused]] SweepForm form = sweepForm()) {
-    std::size_t picked = 0, m = begin;
-#ifdef TALUS_AVX2_SWEEP
-    if (form == SweepForm::lanes)
-        m = sweepInFourPairLanes<nearestImage>(
-            [&near](std::size_t a) { return std::pair(near.pairs[a].particles, std::size_t{near.pairs[a].index}); }, m,
-            end, points, states, image, out, picked);
-#endif
-    for (; m < end; ++m)
-        sweepPair<nearestImage>(near.pairs[m].particles, near.pairs[m].index, points, states, image, out, picked);
-    out.count = picked;
+                           SweepForm form = sweepForm()) {
+    sweepSelectedPairs<nearestImage>(
+        [&near](std::size_t m) { return std::pair(near.pairs[m].particles, std::size_t{near.pairs[m].index}); }, begin,
+        end, points, states, image, out, form);
+}
+
+// The pairs index[begin, end) of the list (a region of a wave, Contacts/WaveSchedule.h).
+template <bool nearestImage>
+inline void sweepIndexedPairs(const ParticlePair* pairs, const std::uint32_t* index, std::size_t begin, std::size_t end,
+                              const SweepPoint* points, const ContactHistory::State* states, const PeriodicImage& image,
+                              SweptPairs& out, SweepForm form = sweepForm()) {
+    sweepSelectedPairs<nearestImage>(
+        [pairs, index](std::size_t m) { return std::pair(pairs[index[m]], std::size_t{index[m]}); }, begin, end, points,
+        states, image, out, form);
 }
 
 // A velocity common to all particles for the sweep's growths (sweepPointsForStep): the mean

@@ -154,9 +154,10 @@ inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
 }
 
 // The blocks of eight particles of the pass; returns where the scalar loop goes on.
-std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
-    const std::size_t n = p.size();
-    std::size_t i = 0;
+// Slots [first, n) while whole groups are left; returns where it stopped.
+std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
+                                std::size_t n) {
+    std::size_t i = first;
     const BoxPerAxis box(domain, one.image);
     __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
     perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
@@ -232,9 +233,10 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
 #ifdef TALUS_AVX2_LANES
 // The same for blocks of four particles in AVX2 lanes (Math/FourParticleLanes.h): the kicks,
 // the drift and the forces in storage order, the norms and the sweep points per axis.
-std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m) {
-    const std::size_t n = p.size();
-    std::size_t i = 0;
+// Slots [first, n) while whole groups are left; returns where it stopped.
+std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
+                                std::size_t n) {
+    std::size_t i = first;
     const BoxPerAxis box(domain, one.image);
     __m256d low[3], high[3], length[3], halfLength[3], g[3];
     perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
@@ -333,9 +335,16 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& pre
     p.force.resize(n);
     p.torque.resize(n);
     points.resize(n);
+    return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, n);
+}
+
+DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3>& previousForce, const Domain& domain,
+                                        const std::vector<Vec3>* reference, const Vec3& gravity,
+                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
+                                        std::size_t first, std::size_t last) {
     DriftPassResult result;
     result.moves = {0, 0, true};
-    if (n == 0) return result;
+    if (first >= last) return result;
     const OneParticle one{p.position[0].data(),
                           p.velocity[0].data(),
                           p.angularVelocity[0].data(),
@@ -356,16 +365,18 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& pre
                           0.5 * dt,
                           dt};
     Maxima m;
-    std::size_t i = 0;
+    std::size_t i = first;
 #if defined(TALUS_AVX512_LANES)
-    i = inEightParticleLanes(one, domain, p, m);
+    i = inEightParticleLanes(one, domain, p, m, first, last);
 #elif defined(TALUS_AVX2_LANES)
-    i = inFourParticleLanes(one, domain, p, m);
+    i = inFourParticleLanes(one, domain, p, m, first, last);
 #endif
-    for (; i < n; ++i) one(i, m);
+    for (; i < last; ++i) one(i, m);
     result.moves = {std::bit_cast<double>(m.displacement2), std::bit_cast<double>(m.speed2),
                     saneMotion(std::bit_cast<double>(m.speed2), std::bit_cast<double>(m.coordinate))};
     result.growth = std::bit_cast<double>(m.growth);
+    result.mobile = m.mobile;
+    for (int c = 0; c < 3; ++c) result.velocitySum[c] = m.velocitySum[c];
     const Vec3 mean = Vec3(m.velocitySum[0], m.velocitySum[1], m.velocitySum[2]) / static_cast<double>(std::max<std::size_t>(m.mobile, 1));
     result.meanVelocity = mean.allFinite() ? mean : Vec3::Zero();
     return result;

@@ -35,6 +35,9 @@ struct DriftPassResult {
     // finite): the next step's frame velocity u, in place of a pass over a sample of them
     // (sweepFrameVelocity). Any u keeps the sweep's bound.
     Vec3 meanVelocity = Vec3::Zero();
+    // What the mean is made of (to join the results of several ranges of slots).
+    double velocitySum[3] = {0, 0, 0};
+    std::size_t mobile = 0;
 };
 
 // reference: the positions at the list's build, or null (no build to compare with: no
@@ -42,5 +45,13 @@ struct DriftPassResult {
 DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
                                         const std::vector<Vec3>* reference, const Vec3& gravity,
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points);
+
+// The same for slots [first, last) alone, kicking with previousForce as it is (the caller has put
+// the forces to kick with there: no swap), with the arrays and points already sized to the
+// particles: a region's advance in a wave (Contacts/WaveSchedule.h).
+DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3>& previousForce, const Domain& domain,
+                                        const std::vector<Vec3>* reference, const Vec3& gravity,
+                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
+                                        std::size_t first, std::size_t last);
 
 }  // namespace talus

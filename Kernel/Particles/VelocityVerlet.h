@@ -164,13 +164,17 @@ inline void startForcesWithGravity(ParticleStore& p, const Vec3& gravity) {
     }
 }
 
-// The half kick of the mobile particles among the first n: v += (dt/2) F/m, w += (dt/2) T/I.
-inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) {
-    if (n == 0) return;
-    detail::advanceMobile(p.velocity[0].data(), p.force[0].data(), p.invMass.data(), p.fixed.data(), n, halfStep);
-    detail::advanceMobile(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
-                                n, halfStep);
+// The half kick of the mobile particles in slots [first, last): v += (dt/2) F/m, w += (dt/2) T/I.
+inline void halfKick(ParticleStore& p, std::size_t first, std::size_t last, double halfStep) {
+    if (first >= last) return;
+    const std::size_t n = last - first;
+    detail::advanceMobile(p.velocity[first].data(), p.force[first].data(), p.invMass.data() + first,
+                          p.fixed.data() + first, n, halfStep);
+    detail::advanceMobile(p.angularVelocity[first].data(), p.torque[first].data(), p.invInertia.data() + first,
+                          p.fixed.data() + first, n, halfStep);
 }
+// The same among the first n.
+inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) { halfKick(p, 0, n, halfStep); }
 
 // The first half kick and the drift of the mobile particles among the first n in one pass over
 // the translational data (halfKick then drift, the same to the bit).

@@ -1,0 +1,197 @@
+#include "Contacts/WaveSchedule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace talus {
+
+namespace {
+
+bool fail(std::string* why, const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+}
+
+// Cells a and b of `count` along a periodic axis are the same or next to each other.
+bool neighbouring(int a, int b, int count) {
+    const int d = std::abs(a - b);
+    return d <= 1 || d == count - 1;
+}
+
+}  // namespace
+
+std::optional<WaveCells> WaveCells::fit(const Domain& domain, double longestSeparation, int levels, int stripColumns,
+                                        std::string* why) {
+    const auto none = [&](const std::string& reason) -> std::optional<WaveCells> {
+        fail(why, reason);
+        return std::nullopt;
+    };
+    if (levels < 1 || levels > 255) return none("waves of 1 to 255 steps, got " + std::to_string(levels));
+    if (!domain.periodic[0] || !domain.periodic[1]) return none("waves need a box periodic along x and y");
+    if (!(longestSeparation > 0) || !std::isfinite(longestSeparation))
+        return none("the longest listed separation is not a positive number");
+    WaveCells c;
+    c.levels_ = levels;
+    c.lo_ = domain.lo;
+    const int least = std::max(3, 2 * levels);
+    int count[2];
+    for (int a = 0; a < 2; ++a) {
+        const double cells = std::floor(domain.length(a) / longestSeparation);
+        if (cells < least)
+            return none(std::string("the box holds ") + std::to_string(static_cast<long>(cells)) + " cells along " +
+                        (a == 0 ? "x" : "y") + " of the longest listed separation " + std::to_string(longestSeparation) +
+                        "; waves of " + std::to_string(levels) + " steps need " + std::to_string(least));
+        count[a] = static_cast<int>(std::min(cells, 1e6));
+        c.width_[a] = domain.length(a) / count[a];
+    }
+    c.rows_ = count[0], c.columns_ = count[1];
+    const int strips = std::max(1, c.columns_ / std::max(stripColumns, least));
+    for (int q = 0; q <= strips; ++q) c.stripStart_.push_back(static_cast<int>(static_cast<long>(q) * c.columns_ / strips));
+    return c;
+}
+
+std::size_t WaveCells::cell(int row, int column) const {
+    // The strip holding the column: strips are a few, stripStart_ ascending.
+    const auto strip = static_cast<std::size_t>(std::upper_bound(stripStart_.begin(), stripStart_.end(), column) -
+                                                stripStart_.begin() - 1);
+    const int begin = stripStart_[strip], width = stripStart_[strip + 1] - begin;
+    return static_cast<std::size_t>(begin) * static_cast<std::size_t>(rows_) +
+           static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column - begin);
+}
+
+std::vector<std::size_t> WaveCells::order(const std::vector<Vec3>& positions) const {
+    const std::size_t n = positions.size();
+    double bottom = 0;
+    for (std::size_t k = 0; k < n; ++k) bottom = k == 0 ? positions[k][2] : std::min(bottom, positions[k][2]);
+    const double band = std::max(width_[0], width_[1]);
+    std::vector<std::uint64_t> key(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double h = (positions[k][2] - bottom) / band;
+        const std::uint64_t height = h < 1048575.0 ? static_cast<std::uint64_t>(h) : 1048575;  // (NaN: the top)
+        key[k] = (static_cast<std::uint64_t>(cellOf(positions[k])) << 20) | height;
+    }
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    return order;
+}
+
+bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
+                        const std::vector<Vec3>& positions, std::size_t particles, std::string* why,
+                        const std::vector<WallCandidate>& walls) {
+    regions_.clear();
+    pairIndex_.clear();
+    wallIndex_.clear();
+    levels_ = cells.levels();
+    if (positions.size() < particles) return fail(why, "fewer positions than particles");
+    if (particles > 0xfffffffeu) return fail(why, "too many particles for a wave schedule");
+    // The particles' cells, in the wave order, and where each cell's slots begin.
+    std::vector<std::uint32_t> cellStart(cells.cellCount() + 1, 0);
+    std::size_t previous = 0;
+    std::vector<int> row(particles), column(particles);
+    for (std::size_t k = 0; k < particles; ++k) {
+        row[k] = cells.row(positions[k]), column[k] = cells.column(positions[k]);
+        const std::size_t c = cells.cell(row[k], column[k]);
+        if (c < previous) return fail(why, "the particles are not in the order of the wave's cells (slot " + std::to_string(k) + ")");
+        previous = c;
+        ++cellStart[c + 1];
+    }
+    std::partial_sum(cellStart.begin(), cellStart.end(), cellStart.begin());
+    // Each particle's pairs (both ways), checked to join neighbouring cells.
+    std::vector<std::uint32_t> first(particles + 1, 0), partner(2 * pairs.size()), pairOf(2 * pairs.size());
+    for (const ParticlePair& p : pairs) {
+        if (p.i >= particles || p.j >= particles) return fail(why, "a listed pair names a slot beyond the particles");
+        if (!neighbouring(row[p.i], row[p.j], cells.rows()) || !neighbouring(column[p.i], column[p.j], cells.columns()))
+            return fail(why, "listed pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) +
+                                 ") joins cells that are not neighbours");
+        ++first[p.i + 1], ++first[p.j + 1];
+    }
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+        partner[fill[pairs[k].i]] = pairs[k].j, pairOf[fill[pairs[k].i]++] = k;
+        partner[fill[pairs[k].j]] = pairs[k].i, pairOf[fill[pairs[k].j]++] = k;
+    }
+    // Each particle's wall candidates.
+    std::vector<std::uint32_t> firstWall(particles + 1, 0), wallOf(walls.size());
+    for (const WallCandidate& w : walls) {
+        if (w.particle >= particles) return fail(why, "a wall candidate names a slot beyond the particles");
+        ++firstWall[w.particle + 1];
+    }
+    std::partial_sum(firstWall.begin(), firstWall.end(), firstWall.begin());
+    std::vector<std::uint32_t> wallFill(firstWall.begin(), firstWall.end() - 1);
+    for (std::uint32_t k = 0; k < walls.size(); ++k) wallOf[wallFill[walls[k].particle]++] = k;
+    // The wave followed with a step counter per particle.
+    constexpr std::uint16_t advancing = 0xffff;
+    std::vector<std::uint16_t> step(particles, 0);
+    std::vector<std::uint32_t> interior, face;
+    bool ok = true;
+    cells.forEachRegion([&](int u, int firstColumn, int across, int t) {
+        if (!ok) return;
+        WaveRegion region;
+        region.level = t;
+        int runs = 0;
+        for (int k = 0; k < across; ++k) {
+            const std::size_t c = cells.cell(u, (firstColumn + k) % cells.columns());
+            if (runs > 0 && region.runEnd[runs - 1] == cellStart[c]) {
+                region.runEnd[runs - 1] = cellStart[c + 1];
+            } else if (runs < 2) {
+                region.runBegin[runs] = cellStart[c], region.runEnd[runs] = cellStart[c + 1], ++runs;
+            } else {
+                ok = fail(why, "a region of more than two runs of slots (strips narrower than a seam)");
+                return;
+            }
+        }
+        for (int r = 0; r < runs; ++r)
+            for (std::uint32_t i = region.runBegin[r]; i < region.runEnd[r]; ++i) {
+                if (step[i] != t) {
+                    ok = fail(why, "particle " + std::to_string(i) + " at step " + std::to_string(step[i]) +
+                                       " of the wave when its region advances from step " + std::to_string(t));
+                    return;
+                }
+                step[i] = advancing;
+            }
+        interior.clear(), face.clear();
+        for (int r = 0; r < runs; ++r)
+            for (std::uint32_t i = region.runBegin[r]; i < region.runEnd[r]; ++i)
+                for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
+                    const std::uint32_t j = partner[e];
+                    if (step[j] == advancing ? j < i : step[j] != t) {
+                        if (step[j] != advancing && step[j] != t + 1) {
+                            ok = fail(why, "particle " + std::to_string(i) + " advances from step " + std::to_string(t) +
+                                               " of the wave while its partner " + std::to_string(j) + " is at step " +
+                                               std::to_string(step[j]));
+                            return;
+                        }
+                        continue;  // computed already: in this region, or when j advanced
+                    }
+                    (pairOf[e] < interiorPairs ? interior : face).push_back(pairOf[e]);
+                }
+        std::sort(interior.begin(), interior.end());
+        std::sort(face.begin(), face.end());
+        region.pairs = static_cast<std::uint32_t>(pairIndex_.size());
+        pairIndex_.insert(pairIndex_.end(), interior.begin(), interior.end());
+        region.interiorEnd = static_cast<std::uint32_t>(pairIndex_.size());
+        pairIndex_.insert(pairIndex_.end(), face.begin(), face.end());
+        region.end = static_cast<std::uint32_t>(pairIndex_.size());
+        region.wallsBegin = static_cast<std::uint32_t>(wallIndex_.size());
+        for (int r = 0; r < runs; ++r)
+            wallIndex_.insert(wallIndex_.end(), wallOf.begin() + firstWall[region.runBegin[r]],
+                              wallOf.begin() + firstWall[region.runEnd[r]]);
+        region.wallsEnd = static_cast<std::uint32_t>(wallIndex_.size());
+        for (int r = 0; r < runs; ++r)
+            std::fill(step.begin() + region.runBegin[r], step.begin() + region.runEnd[r], static_cast<std::uint16_t>(t + 1));
+        if (region.end > region.pairs || runs > 0) regions_.push_back(region);
+    });
+    if (!ok) return false;
+    for (std::size_t k = 0; k < particles; ++k)
+        if (step[k] != levels_) return fail(why, "particle " + std::to_string(k) + " was not advanced by every step of the wave");
+    if (wallIndex_.size() != walls.size() * static_cast<std::size_t>(levels_))
+        return fail(why, "the wave computes " + std::to_string(wallIndex_.size()) + " wall candidates, not each once a step");
+    if (pairIndex_.size() != pairs.size() * static_cast<std::size_t>(levels_))
+        return fail(why, "the wave computes " + std::to_string(pairIndex_.size()) + " pairs, not every listed pair once a step");
+    return true;
+}
+
+}  // namespace talus

@@ -1,0 +1,128 @@
+// Several steps per pass over the particles (time skewing; Documentation/TimeSkewing.md): which
+// particles advance when, and which listed pairs each advance computes, so that stretches of the
+// bed are advanced several steps while their data is in the caches, instead of every particle
+// and pair being read from memory once a step (Documentation/CacheCliff.md).
+//
+// A step moves a particle using only its listed partners' states at the step before: the force
+// of a pair at step t needs both particles at step t, and a particle may go on to t + 1 once all
+// its pairs of step t are computed. So a region may advance from t to t + 1 while every partner is
+// at t (the pair is computed now) or at t + 1 (it was computed when the partner advanced). The
+// schedule below keeps that: the box (periodic along x and y) is cut into cells at least the
+// longest listed separation wide, so that every pair joins neighbouring cells; the columns (along
+// y) are grouped into strips; within a strip a wave runs along x, advancing row u at level t in the
+// order of u + t, so that the few rows the wave touches stay cached while they take their steps.
+// Rows within t cells of the periodic seam along x, or of a strip's edge along y, sit out level t
+// and advance afterwards in three more waves (the seam along x, the seams between strips, both),
+// as the trapezoid tilings of stencil codes do (Frigo and Strumpen 2005; Wonnacott 2000 for time
+// skewing). The design was tried first in a model of the step (Drivers/Benchmarks/StripWave.h).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Boundaries/Domain.h"
+#include "Contacts/HGrid.h"
+#include "Contacts/PairList.h"
+
+namespace talus {
+
+// The cells of the waves and the particle order they need: by strip, row (along x), column
+// (along y), then height.
+class WaveCells {
+public:
+    // The cells for waves of `levels` steps (1-255) among pairs at most `longestSeparation`
+    // apart, in strips of about `stripColumns` columns; none (and why) unless x and y are
+    // periodic and the box holds at least 2 levels cells along each, and strips that wide.
+    static std::optional<WaveCells> fit(const Domain& domain, double longestSeparation, int levels, int stripColumns,
+                                        std::string* why = nullptr);
+
+    int rows() const { return rows_; }
+    int columns() const { return columns_; }
+    int strips() const { return static_cast<int>(stripStart_.size()) - 1; }
+    int levels() const { return levels_; }
+    int stripStart(int strip) const { return stripStart_[static_cast<std::size_t>(strip)]; }
+    std::size_t cellCount() const { return static_cast<std::size_t>(rows_) * static_cast<std::size_t>(columns_); }
+
+    int row(const Vec3& x) const { return bin(x[0] - lo_[0], width_[0], rows_); }
+    int column(const Vec3& x) const { return bin(x[1] - lo_[1], width_[1], columns_); }
+    // The place of cell (row, column) in the wave order.
+    std::size_t cell(int row, int column) const;
+    std::size_t cellOf(const Vec3& x) const { return cell(row(x), column(x)); }
+
+    // The permutation that puts the particles in the wave order, cell by cell and, within a
+    // cell, by bands of height one cell wide (keeping their order within a band): new slot k
+    // holds old slot order[k], as spaceFillingCurveOrder gives it.
+    std::vector<std::size_t> order(const std::vector<Vec3>& positions) const;
+
+    // Calls visit(row, first column, columns, level) for every region of a wave in turn: a row of
+    // cells along y (columns wrapping around the box), advanced from step `level` of the wave to
+    // the next. Every cell is in exactly one region per level.
+    template <class Visit>
+    void forEachRegion(Visit visit) const {
+        for (int phase = 0; phase < 4; ++phase) {
+            const bool xSeam = phase & 1, ySeam = phase & 2;
+            for (int q = 0; q < strips(); ++q) {
+                const int begin = stripStart(q), end = stripStart(q + 1);
+                for (int wave = 0; wave < 2 * rows_ + 2 * levels_; ++wave)
+                    for (int t = 0; t < levels_; ++t) {
+                        const int u = wave - t;  // the row, unwrapped across the seam along x
+                        if (xSeam ? u < rows_ - 1 - t || u > rows_ + t : u < t + 1 || u > rows_ - 2 - t) continue;
+                        const int first = ySeam ? end - 1 - t : begin + t + 1;
+                        const int across = ySeam ? 2 * t + 2 : end - begin - 2 - 2 * t;
+                        if (across > 0) visit(u % rows_, first % columns_, across, t);
+                    }
+            }
+        }
+    }
+
+private:
+    static int bin(double offset, double width, int count) {
+        const int k = static_cast<int>(offset / width);
+        return k < 0 ? 0 : k >= count ? count - 1 : k;
+    }
+    Vec3 lo_ = Vec3::Zero();
+    double width_[2] = {1, 1};
+    int rows_ = 0, columns_ = 0, levels_ = 1;
+    std::vector<int> stripStart_;  // first column of each strip, and columns_ at the end
+};
+
+// One advance of a region: its particles (up to two runs of slots) from step `level` of the wave
+// to the next, after the listed pairs it computes at that step, pairIndex()[pairs, end): those
+// before interiorEnd are interior pairs (PairList::interiorPairs), the rest need the periodic
+// image; and its particles' wall candidates, wallIndex()[wallsBegin, wallsEnd).
+struct WaveRegion {
+    std::uint32_t pairs = 0, interiorEnd = 0, end = 0;
+    std::uint32_t wallsBegin = 0, wallsEnd = 0;
+    std::uint32_t runBegin[2] = {0, 0}, runEnd[2] = {0, 0};
+    int level = 0;
+};
+
+class WaveSchedule {
+public:
+    // The regions of a wave over the listed pairs (grouped by i, the first interiorPairs of them
+    // interior) of particles in slots [0, particles), listed at `positions`; false (and why) if
+    // the particles are not in the cells' order or a pair does not join neighbouring cells. It
+    // follows the wave with a step counter per particle and fails if a region ever advances a
+    // particle whose partner is not at the same step or the next.
+    bool make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
+              const std::vector<Vec3>& positions, std::size_t particles, std::string* why = nullptr,
+              const std::vector<WallCandidate>& walls = {});
+
+    const std::vector<WaveRegion>& regions() const { return regions_; }
+    const std::vector<std::uint32_t>& pairIndex() const { return pairIndex_; }
+    const std::vector<std::uint32_t>& wallIndex() const { return wallIndex_; }
+    int levels() const { return levels_; }
+    std::size_t bytes() const {
+        return regions_.capacity() * sizeof(WaveRegion) +
+               (pairIndex_.capacity() + wallIndex_.capacity()) * sizeof(std::uint32_t);
+    }
+
+private:
+    std::vector<WaveRegion> regions_;
+    std::vector<std::uint32_t> pairIndex_, wallIndex_;
+    int levels_ = 0;
+};
+
+}  // namespace talus

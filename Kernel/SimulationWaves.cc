@@ -1,0 +1,154 @@
+// Several steps per pass over the particles (time skewing; Contacts/WaveSchedule.h,
+// Documentation/TimeSkewing.md), Simulation's side: the particles in the order of the wave's
+// cells and the schedule made at each list build, and a wave of steps.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "Particles/VelocityVerlet.h"
+#include "Simulation.h"
+
+namespace talus {
+
+void Simulation::setWaves(int steps, int stripColumns) {
+    require(steps >= 1 && steps <= 255, "waves of 1 to 255 steps, got " + std::to_string(steps));
+    require(stripColumns >= 1, "strips of waves need at least one column, got " + std::to_string(stripColumns));
+    waveSteps_ = steps, waveStripColumns_ = stripColumns;
+    waveScheduleBuild_ = 0;
+}
+
+// The cells of the coming list build: as wide as the longest pair it can list, 2 rmax + reach,
+// with the reach the build will take (PairList::rebuild: skin + 2 vmax dt, vmax as the list's
+// check measured it this step).
+std::optional<WaveCells> Simulation::waveCellsForBuild(std::string* why) const {
+    if (waveSteps_ < 2) return std::nullopt;
+    if (onRanks()) {
+        if (why) *why = "waves run on one rank only";
+        return std::nullopt;
+    }
+    double largest = 0;
+    for (double r : state_.particles.radius) largest = std::max(largest, r);
+    const PairList& list = state_.pairList;
+    const double reach = list.skin + 2 * list.maxSpeed * state_.settings.timeStep;
+    return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns_, why);
+}
+
+void Simulation::makeWaveSchedule() {
+    waveScheduleBuild_ = 0;
+    if (waveSteps_ < 2) return;
+    const std::optional<WaveCells> cells = waveCellsForBuild(&waveScheduleRefusal_);
+    const PairList& list = state_.pairList;
+    if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
+                                    state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
+        waveScheduleBuild_ = list.builds;
+}
+
+// Whether the next steps can be a wave: the scene allows it (one drift pass a step, spheres, one
+// rank, no one-way box: driftsInOnePass), the schedule is the current list's, no output falls
+// within it, and no particle can have moved half the list's reach by its end, even if the largest
+// speed doubles (checked as the wave goes: integrateWave). Waves start at multiples of their
+// steps, so that a restarted run takes them where the first run did.
+bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const {
+    const auto steps = static_cast<std::uint64_t>(waveSteps_);
+    const PairList& list = state_.pairList;
+    if (steps < 2 || stepsLeft <= steps || state_.step % steps != 0) return false;
+    if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps) / saveEvery) return false;
+    if (!driftsInOnePass() || idOrderedSums_ || waveScheduleBuild_ == 0 || waveScheduleBuild_ != list.builds ||
+        !list.comparable(state_.particles) || !list.oneWayPairs.empty())
+        return false;
+    const double dt = state_.settings.timeStep;
+    const double speed = 2 * list.maxSpeed + state_.gravity.norm() * static_cast<double>(steps) * dt;
+    return lastDisplacement_ + static_cast<double>(steps + 1) * speed * dt < 0.5 * list.reach;
+}
+
+std::uint64_t Simulation::integrateWave() {
+    ParticleStore& p = state_.particles;
+    PairList& list = state_.pairList;
+    const Domain& domain = state_.domain;
+    const double dt = state_.settings.timeStep, half = 0.5 * dt;
+    const int levels = waveSteps_;
+    // The first half of the wave's first step over all particles, as a single step's; the same
+    // frame for the sweep's growths all through the wave (any frame common to both particles of a
+    // pair at a step keeps the sweep's bound, PairSweep.h).
+    const Vec3 frame = !list.sweepInFlowFrame ? Vec3::Zero() : driftFrame_ ? *driftFrame_ : sweepFrameVelocity(p);
+    DriftPassResult drifted = kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition,
+                                                      state_.gravity, frame, dt, list.sweepPointScratch);
+    state_.time += dt;
+    ++state_.step;
+    lastDisplacement_ = std::sqrt(drifted.moves.displacement2);
+    if (list.needsRebuild(drifted.moves, p, state_.time, dt)) [[unlikely]] {  // (the prediction was wrong): a single step
+        list.sweepPointsGrowth = drifted.growth;
+        driftFrame_ = drifted.meanVelocity;
+        computeForces(nullptr, OverlapCheck::withNextStep, &drifted);
+        halfKick(p, p.owned(), half);
+        return 1;
+    }
+    const double startSpeed = list.maxSpeed;
+    double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2;
+    double velocitySum[3] = {0, 0, 0};
+    std::size_t mobile = 0;
+    ContactSummary early;  // of the wave's steps before its last (only their largest overlap counts)
+    summary_ = ContactSummary{};
+    std::visit(
+        [&]<class Law>(const PairTable<Law>& laws) {
+            ContactForceLoop<Law> earlyLoop(p, laws, dt, startSpeed, previousForce_, early, nullptr);
+            ContactForceLoop<Law> lastLoop(p, laws, dt, startSpeed, previousForce_, summary_, nullptr);
+            for (const WaveRegion& region : waveSchedule_.regions()) {
+                const bool last = region.level + 1 == levels;
+                ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
+                loop.allowSpeed(std::sqrt(speed2));
+                loop.regionPairs(list, domain, waveSchedule_, region, state_.walls);
+                // The region's particles: the second half kick of this step, and unless it is the
+                // wave's last, the first half of the next (Particles/DriftPass.h on their slots).
+                for (int run = 0; run < 2; ++run) {
+                    const std::size_t begin = region.runBegin[run], end = region.runEnd[run];
+                    if (begin >= end) continue;
+                    halfKick(p, begin, end, half);
+                    if (last) continue;
+                    std::copy(p.force.begin() + static_cast<std::ptrdiff_t>(begin),
+                              p.force.begin() + static_cast<std::ptrdiff_t>(end),
+                              previousForce_.begin() + static_cast<std::ptrdiff_t>(begin));
+                    const DriftPassResult moved =
+                        kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition, state_.gravity,
+                                                frame, dt, list.sweepPointScratch, begin, end);
+                    const double time = state_.time + (region.level + 1) * dt;
+                    if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
+                    speed2 = std::max(speed2, moved.moves.speed2);
+                    displacement2 = std::max(displacement2, moved.moves.displacement2);
+                    if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
+                        std::ostringstream m;
+                        m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
+                          << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
+                          << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
+                          << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
+                          << "with --wave-steps 1, or a larger --skin";
+                        throw Error(m.str());
+                    }
+                    if (region.level + 2 == levels) {  // (the last drift: the next frame's mean velocity)
+                        for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];
+                        mobile += moved.mobile;
+                    }
+                }
+            }
+        },
+        laws_);
+    for (int t = 1; t < levels; ++t) {
+        state_.time += dt;
+        ++state_.step;
+    }
+    list.maxSpeed = std::sqrt(speed2);  // (the largest in the wave: the next wave's prediction)
+    lastDisplacement_ = std::sqrt(displacement2);
+    const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
+    driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
+    list.near.made = false;  // (its bound of the displacements did not follow the wave)
+    list.sweepPointsGrowth.reset();
+    if (early.maxOverlapFraction > summary_.maxOverlapFraction) {
+        summary_.maxOverlapFraction = early.maxOverlapFraction;
+        summary_.worstA = early.worstA, summary_.worstB = early.worstB, summary_.worstIsWall = early.worstIsWall;
+    }
+    checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, /*agreeNow*/ false);
+    stepsInWaves_ += static_cast<std::uint64_t>(levels);
+    return static_cast<std::uint64_t>(levels);
+}
+
+}  // namespace talus

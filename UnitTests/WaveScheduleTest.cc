@@ -1,0 +1,150 @@
+// The wave schedule of Contacts/WaveSchedule.h: replayed here with its own bookkeeping, every
+// advance must find all the pairs of the advancing particles computed at that step, and every
+// pair computed with both particles at the same step, once per step of the wave.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "Contacts/WaveSchedule.h"
+
+using namespace talus;
+
+namespace {
+
+struct Bed {
+    Domain domain;
+    std::vector<Vec3> x;
+    std::vector<ParticlePair> pairs;  // grouped by i, j < i
+    double separation = 0;            // the longest a listed pair can have
+};
+
+// Spheres of diameter about 1 at random in a box periodic along x and y, `layers` deep, with
+// every pair closer than `separation` listed (nearest image), in the order of the given cells.
+Bed randomBed(double lengthX, double lengthY, int layers, double separation, unsigned seed) {
+    Bed b;
+    b.domain.lo = Vec3(-3, 5, 0);
+    b.domain.hi = b.domain.lo + Vec3(lengthX, lengthY, layers);
+    b.domain.periodic = {true, true, false};
+    b.separation = separation;
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const std::size_t n = static_cast<std::size_t>(lengthX * lengthY * layers);
+    for (std::size_t k = 0; k < n; ++k)
+        b.x.push_back(b.domain.lo + Vec3(unit(random) * lengthX, unit(random) * lengthY, unit(random) * layers));
+    return b;
+}
+
+void listPairs(Bed& b) {
+    b.pairs.clear();
+    for (std::uint32_t i = 0; i < b.x.size(); ++i)
+        for (std::uint32_t j = 0; j < i; ++j)
+            if (b.domain.nearestImage(b.x[i] - b.x[j]).norm() < b.separation) b.pairs.push_back({i, j});
+}
+
+void putInOrder(Bed& b, const WaveCells& cells) {
+    const std::vector<std::size_t> order = cells.order(b.x);
+    std::vector<Vec3> sorted;
+    for (std::size_t k : order) sorted.push_back(b.x[k]);
+    b.x.swap(sorted);
+    listPairs(b);
+}
+
+// Replays the schedule: true if every pair is computed once at every step with both particles at
+// that step, and every particle advances once a step, after all its pairs of that step.
+::testing::AssertionResult replaysAsSteps(const std::vector<WaveRegion>& regions, const WaveSchedule& s, const Bed& b,
+                                          std::size_t interiorPairs) {
+    const std::size_t n = b.x.size();
+    std::vector<int> step(n, 0), computedAt(b.pairs.size(), -1), pairsDone(n, 0), degree(n, 0);
+    for (const ParticlePair& p : b.pairs) ++degree[p.i], ++degree[p.j];
+    for (const WaveRegion& r : regions) {
+        for (std::uint32_t e = r.pairs; e < r.end; ++e) {
+            const std::uint32_t k = s.pairIndex()[e];
+            if ((k < interiorPairs) != (e < r.interiorEnd)) return ::testing::AssertionFailure() << "pair " << k << " in the wrong group";
+            const ParticlePair& p = b.pairs[k];
+            if (step[p.i] != r.level || step[p.j] != r.level)
+                return ::testing::AssertionFailure() << "pair " << k << " computed at step " << r.level << " with its particles at "
+                                                     << step[p.i] << " and " << step[p.j];
+            if (computedAt[k] != r.level - 1) return ::testing::AssertionFailure() << "pair " << k << " computed twice or skipped";
+            computedAt[k] = r.level;
+            ++pairsDone[p.i], ++pairsDone[p.j];
+        }
+        for (int run = 0; run < 2; ++run)
+            for (std::uint32_t i = r.runBegin[run]; i < r.runEnd[run]; ++i) {
+                if (step[i] != r.level) return ::testing::AssertionFailure() << "particle " << i << " advanced twice at a step";
+                if (pairsDone[i] != degree[i] * (r.level + 1))
+                    return ::testing::AssertionFailure() << "particle " << i << " advanced before all its pairs of step " << r.level;
+                ++step[i];
+            }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (step[i] != s.levels()) return ::testing::AssertionFailure() << "particle " << i << " ended at step " << step[i];
+    for (std::size_t k = 0; k < b.pairs.size(); ++k)
+        if (computedAt[k] != s.levels() - 1) return ::testing::AssertionFailure() << "pair " << k << " not computed at every step";
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(WaveSchedule, EveryAdvanceFindsItsPairsComputedAtItsStep) {
+    struct Case {
+        double lengthX, lengthY;
+        int levels, stripColumns;
+    };
+    // One strip (its seam with itself), several strips of unequal widths, waves of 1 to 8 steps.
+    for (const Case c : {Case{12, 10, 1, 32}, Case{12, 10, 4, 32}, Case{20, 13, 4, 8}, Case{30, 41, 8, 16},
+                         Case{17, 37, 3, 7}}) {
+        Bed b = randomBed(c.lengthX, c.lengthY, 2, 1.2, 7);
+        std::string why;
+        const std::optional<WaveCells> cells = WaveCells::fit(b.domain, b.separation, c.levels, c.stripColumns, &why);
+        ASSERT_TRUE(cells) << why;
+        putInOrder(b, *cells);
+        const std::size_t interior = b.pairs.size() / 3;  // (any split: the schedule keeps it)
+        WaveSchedule s;
+        ASSERT_TRUE(s.make(*cells, b.pairs, interior, b.x, b.x.size(), &why)) << why;
+        EXPECT_TRUE(replaysAsSteps(s.regions(), s, b, interior)) << c.lengthX << " x " << c.lengthY << ", " << c.levels << " steps, "
+                                                    << cells->strips() << " strips";
+    }
+}
+
+// The replay above catches a schedule that breaks the order of steps (so it can fail): the
+// regions' order reversed.
+TEST(WaveSchedule, TheReplayCatchesRegionsOutOfOrder) {
+    Bed b = randomBed(20, 20, 1, 1.2, 3);
+    const std::optional<WaveCells> cells = WaveCells::fit(b.domain, b.separation, 3, 8);
+    ASSERT_TRUE(cells);
+    putInOrder(b, *cells);
+    WaveSchedule s;
+    ASSERT_TRUE(s.make(*cells, b.pairs, 0, b.x, b.x.size()));
+    ASSERT_TRUE(replaysAsSteps(s.regions(), s, b, 0));
+    std::vector<WaveRegion> reversed = s.regions();
+    std::reverse(reversed.begin(), reversed.end());
+    EXPECT_FALSE(replaysAsSteps(reversed, s, b, 0));
+}
+
+TEST(WaveSchedule, RefusesWhatItCannotSchedule) {
+    Bed b = randomBed(20, 20, 1, 1.2, 5);
+    std::string why;
+    const std::optional<WaveCells> cells = WaveCells::fit(b.domain, b.separation, 4, 8, &why);
+    ASSERT_TRUE(cells) << why;
+    putInOrder(b, *cells);
+    WaveSchedule s;
+    // Particles out of the cells' order.
+    std::vector<Vec3> shuffled = b.x;
+    std::swap(shuffled.front(), shuffled.back());
+    EXPECT_FALSE(s.make(*cells, b.pairs, 0, shuffled, shuffled.size(), &why));
+    EXPECT_NE(why.find("order"), std::string::npos) << why;
+    // A pair longer than a cell.
+    Bed far = b;
+    far.separation = 4;
+    listPairs(far);
+    EXPECT_FALSE(s.make(*cells, far.pairs, 0, far.x, far.x.size(), &why));
+    EXPECT_NE(why.find("not neighbours"), std::string::npos) << why;
+    // Boxes too small or not periodic along y.
+    EXPECT_FALSE(WaveCells::fit(b.domain, 1.2, 9, 8, &why));
+    EXPECT_NE(why.find("along x"), std::string::npos) << why;
+    Domain open = b.domain;
+    open.periodic[1] = false;
+    EXPECT_FALSE(WaveCells::fit(open, 1.2, 2, 8, &why));
+    EXPECT_NE(why.find("periodic"), std::string::npos) << why;
+}

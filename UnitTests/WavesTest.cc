@@ -1,0 +1,97 @@
+// Several steps per pass (Simulation::setWaves, Contacts/WaveSchedule.h) change no physics: a
+// chute advanced in waves follows the trajectory of single steps to round-off (the forces of a
+// particle are summed in another order), through list builds, the periodic faces, fixed
+// particles, wall candidates and the seams between strips.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "ContactTestScenes.h"
+#include "IO/LammpsDataFile.h"
+
+using namespace talus;
+using namespace talus::test;
+
+namespace {
+
+// The benchmark's chute (SPEC.md 2, Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
+// the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
+// along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
+void benchmarkChute(Scene& s, const std::string& file) {
+    const LammpsData bed = readLammpsData(std::string(TALUS_SHARED_DIR) + "/peers/data/" + file);
+    const Vec3 size = bed.hi - bed.lo;
+    s.setDomain(bed.lo, bed.lo + Vec3(size.x(), 2 * size.y(), size.z()));
+    s.setPeriodic(true, true, false);
+    s.setGravity(Vec3(std::sin(degrees(24)), 0, -std::cos(degrees(24))));
+    const auto law = LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25).withFriction(0.5);
+    const auto grain = s.addSpecies("grain", unitMassDensity, law);
+    s.addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), grain);
+    for (int copy = 0; copy < 2; ++copy)
+        for (const LammpsAtom& a : bed.atoms) {
+            const Vec3 x = a.position + Vec3(0, copy * size.y(), 0);
+            if (a.type == 1)
+                s.addFixedParticle(x, a.diameter / 2, grain);
+            else
+                s.addParticle(x, a.diameter / 2, grain, a.velocity, a.angularVelocity);
+        }
+}
+
+struct Difference {
+    double position = 0, velocity = 0, angularVelocity = 0;
+};
+
+// The largest differences between two runs, particle by particle (by id: slots follow the order).
+Difference largestDifference(const Scene& a, const Scene& b) {
+    Difference d;
+    const ParticleStore &p = a.particles(), &q = b.particles();
+    EXPECT_EQ(p.size(), q.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const std::size_t j = b.slotOf(p.id[i]);
+        d.position = std::max(d.position, a.state().domain.nearestImage(p.position[i] - q.position[j]).norm());
+        d.velocity = std::max(d.velocity, (p.velocity[i] - q.velocity[j]).norm());
+        d.angularVelocity = std::max(d.angularVelocity, (p.angularVelocity[i] - q.angularVelocity[j]).norm());
+    }
+    return d;
+}
+
+void expectSameTrajectory(const std::string& file, int steps, int stripColumns, std::uint64_t leastBuilds) {
+    const double dt = 1e-4;
+    const int run = 1000;
+    Scene waves, single;
+    waves.setup = single.setup = [file](Scene& s) { benchmarkChute(s, file); };
+    waves.setSkin(0.2), single.setSkin(0.2);
+    waves.setWaves(steps, stripColumns);
+    waves.run(dt, run * dt);
+    single.run(dt, run * dt);
+    const Difference d = largestDifference(waves, single);
+    std::printf("[ measured ] %s, waves of %d steps, strips of %d columns: %llu of %d steps in waves, %llu list builds; "
+                "largest difference from single steps: position %.2e, velocity %.2e, angular velocity %.2e\n",
+                file.c_str(), steps, stripColumns, static_cast<unsigned long long>(waves.stepsInWaves()), run,
+                static_cast<unsigned long long>(waves.pairList().builds), d.position, d.velocity,
+                d.angularVelocity);
+    EXPECT_GT(waves.stepsInWaves(), static_cast<std::uint64_t>(run / 2)) << "most steps should be in waves";
+    EXPECT_GE(waves.pairList().builds, leastBuilds) << "the test needs list builds between waves";
+    EXPECT_GT(single.contactSummary().contacts, 2000u) << "and the spheres in contact";
+    // Round-off grows through the collisions of 1000 steps; a pair computed at the wrong step, or
+    // a particle advanced with a force missing, differs by more than 1e-6 (velocities of order 1).
+    EXPECT_LT(d.position, 1e-9);
+    EXPECT_LT(d.velocity, 1e-7);
+    EXPECT_LT(d.angularVelocity, 1e-6);
+}
+
+}  // namespace
+
+// (The box holds 16 x 16 cells: two strips of 8 columns, or one of 16.)
+TEST(Waves, FourStepsInTwoStripsFollowSingleStepsInTheFlow) { expectSameTrajectory("chute_B_flowing.data", 4, 8, 3); }
+
+TEST(Waves, EightStepsInOneStripFollowSingleStepsFromTheSettledBed) {
+    expectSameTrajectory("chute_B_settled.data", 8, 16, 1);
+}
+
+TEST(Waves, RefuseBadSettings) {
+    Scene s;
+    expectError([&] { s.setWaves(0); }, {"waves of 1 to 255 steps"});
+    expectError([&] { s.setWaves(4, 0); }, {"strips of waves need at least one column"});
+}
