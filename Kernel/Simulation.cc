@@ -384,9 +384,16 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     stepsInWaves_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
+            const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
+            const bool savingLast = (state_.step + static_cast<std::uint64_t>(waveSteps_)) % every == 0 || last == steps;
             actionsBeforeTimeStep();
-            k += integrateWave() - 1;
+            const std::uint64_t done = integrateWave(savingLast);
+            k += done - 1;
             actionsAfterTimeStep();
+            if (k == last && savingLast) {
+                writeOutput();
+                records_.release();
+            }
             progress.update(state_.time, k, mobile);
             continue;
         }
@@ -467,7 +474,16 @@ void Simulation::initialise(bool restarted) {
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
     if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
     if (onRanks()) splitScene();
-    if (restarted) return;
+    if (restarted) {
+        // Waves go on as in the run that saved (SimulationWaves.cc): the schedule of the list it
+        // kept, and the displacement the last step left, measured as the drift pass does.
+        const PairList& list = state_.pairList;
+        if (list.comparable(state_.particles) && !onRanks()) {
+            lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
+            if (waveSteps_ > 1) makeWaveSchedule();
+        }
+        return;
+    }
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
@@ -502,6 +518,7 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
+    if (rebuild) lastDisplacement_ = 0;  // (the positions are the new reference)
     if (rebuild && waveSteps_ > 1) makeWaveSchedule();
     PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
@@ -547,7 +564,9 @@ void Simulation::reorderParticles(bool withPreviousForces) {
     if (p.size() < 2 || largest <= 0) return;
     // On ranks the order must not depend on the order particles arrived in (exact restarts).
     // With waves, the order of their cells (Contacts/WaveSchedule.h), where the box has them.
-    const std::optional<WaveCells> cells = waveCellsForBuild(nullptr);
+    // (the reach the coming build takes: PairList::rebuild)
+    const std::optional<WaveCells> cells =
+        waveCellsForBuild(state_.pairList.skin + 2 * state_.pairList.maxSpeed * state_.settings.timeStep, nullptr);
     const std::vector<std::size_t> order =
         cells ? cells->order(p.position)
               : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);

@@ -218,9 +218,10 @@ private:
     void reorderParticles(bool withPreviousForces);
     // Waves (SimulationWaves.cc).
     bool waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
-    std::uint64_t integrateWave();  // returns the steps it took (1 if the list needed a rebuild)
+    // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
+    std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
-    std::optional<WaveCells> waveCellsForBuild(std::string* why) const;
+    std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
     std::uint64_t saveEvery() const;
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
@@ -252,7 +253,7 @@ private:
     WaveSchedule waveSchedule_;
     std::uint64_t waveScheduleBuild_ = 0;  // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;      // why the last build has none
-    double lastDisplacement_ = 0;          // the largest since the build, at the last drift
+    double lastDisplacement_ = 0;          // the largest since the build, of the positions now
     std::uint64_t stepsInWaves_ = 0;
     std::unique_ptr<CommandLine> commandLine_;
     struct KeptValue {

@@ -17,10 +17,9 @@ void Simulation::setWaves(int steps, int stripColumns) {
     waveScheduleBuild_ = 0;
 }
 
-// The cells of the coming list build: as wide as the longest pair it can list, 2 rmax + reach,
-// with the reach the build will take (PairList::rebuild: skin + 2 vmax dt, vmax as the list's
-// check measured it this step).
-std::optional<WaveCells> Simulation::waveCellsForBuild(std::string* why) const {
+// The cells of a list build of the given reach: as wide as the longest pair it can list,
+// 2 rmax + reach.
+std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string* why) const {
     if (waveSteps_ < 2) return std::nullopt;
     if (onRanks()) {
         if (why) *why = "waves run on one rank only";
@@ -28,16 +27,14 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(std::string* why) const {
     }
     double largest = 0;
     for (double r : state_.particles.radius) largest = std::max(largest, r);
-    const PairList& list = state_.pairList;
-    const double reach = list.skin + 2 * list.maxSpeed * state_.settings.timeStep;
     return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns_, why);
 }
 
 void Simulation::makeWaveSchedule() {
     waveScheduleBuild_ = 0;
     if (waveSteps_ < 2) return;
-    const std::optional<WaveCells> cells = waveCellsForBuild(&waveScheduleRefusal_);
     const PairList& list = state_.pairList;
+    const std::optional<WaveCells> cells = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
     if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
                                     state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
         waveScheduleBuild_ = list.builds;
@@ -45,14 +42,15 @@ void Simulation::makeWaveSchedule() {
 
 // Whether the next steps can be a wave: the scene allows it (one drift pass a step, spheres, one
 // rank, no one-way box: driftsInOnePass), the schedule is the current list's, no output falls
-// within it, and no particle can have moved half the list's reach by its end, even if the largest
-// speed doubles (checked as the wave goes: integrateWave). Waves start at multiples of their
-// steps, so that a restarted run takes them where the first run did.
+// within it (one at its last step is written after it), and no particle can have moved half the
+// list's reach by its end, even if the largest speed doubles (checked as the wave goes:
+// integrateWave). Waves start at multiples of their steps, so that a restarted run takes them
+// where the first run did, whatever the output steps.
 bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const {
     const auto steps = static_cast<std::uint64_t>(waveSteps_);
     const PairList& list = state_.pairList;
-    if (steps < 2 || stepsLeft <= steps || state_.step % steps != 0) return false;
-    if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps) / saveEvery) return false;
+    if (steps < 2 || stepsLeft < steps || state_.step % steps != 0) return false;
+    if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps - 1) / saveEvery) return false;
     if (!driftsInOnePass() || idOrderedSums_ || waveScheduleBuild_ == 0 || waveScheduleBuild_ != list.builds ||
         !list.comparable(state_.particles) || !list.oneWayPairs.empty())
         return false;
@@ -61,7 +59,7 @@ bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) cons
     return lastDisplacement_ + static_cast<double>(steps + 1) * speed * dt < 0.5 * list.reach;
 }
 
-std::uint64_t Simulation::integrateWave() {
+std::uint64_t Simulation::integrateWave(bool recordContacts) {
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     const Domain& domain = state_.domain;
@@ -84,15 +82,17 @@ std::uint64_t Simulation::integrateWave() {
         return 1;
     }
     const double startSpeed = list.maxSpeed;
-    double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2;
+    double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2, finalDisplacement2 = 0;
     double velocitySum[3] = {0, 0, 0};
     std::size_t mobile = 0;
     ContactSummary early;  // of the wave's steps before its last (only their largest overlap counts)
     summary_ = ContactSummary{};
+    if (recordContacts) records_.start(/*keepEach*/ state_.settings.writeFstat, p.owned());
     std::visit(
         [&]<class Law>(const PairTable<Law>& laws) {
             ContactForceLoop<Law> earlyLoop(p, laws, dt, startSpeed, previousForce_, early, nullptr);
-            ContactForceLoop<Law> lastLoop(p, laws, dt, startSpeed, previousForce_, summary_, nullptr);
+            ContactForceLoop<Law> lastLoop(p, laws, dt, startSpeed, previousForce_, summary_,
+                                           recordContacts ? &records_ : nullptr);
             for (const WaveRegion& region : waveSchedule_.regions()) {
                 const bool last = region.level + 1 == levels;
                 ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
@@ -124,7 +124,8 @@ std::uint64_t Simulation::integrateWave() {
                           << "with --wave-steps 1, or a larger --skin";
                         throw Error(m.str());
                     }
-                    if (region.level + 2 == levels) {  // (the last drift: the next frame's mean velocity)
+                    if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
+                        finalDisplacement2 = std::max(finalDisplacement2, moved.moves.displacement2);
                         for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];
                         mobile += moved.mobile;
                     }
@@ -136,8 +137,10 @@ std::uint64_t Simulation::integrateWave() {
         state_.time += dt;
         ++state_.step;
     }
-    list.maxSpeed = std::sqrt(speed2);  // (the largest in the wave: the next wave's prediction)
-    lastDisplacement_ = std::sqrt(displacement2);
+    // The largest speed in the wave (the next wave's prediction), and the displacement of where
+    // the particles are, as a single step leaves it (and a restart finds it: largestDisplacement).
+    list.maxSpeed = std::sqrt(speed2);
+    lastDisplacement_ = std::sqrt(finalDisplacement2);
     const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
     driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
     list.near.made = false;  // (its bound of the displacements did not follow the wave)
@@ -146,7 +149,11 @@ std::uint64_t Simulation::integrateWave() {
         summary_.maxOverlapFraction = early.maxOverlapFraction;
         summary_.worstA = early.worstA, summary_.worstB = early.worstB, summary_.worstIsWall = early.worstIsWall;
     }
-    checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, /*agreeNow*/ false);
+    if (recordContacts) {
+        elasticEnergy_ = records_.elasticEnergy();
+        recordedContacts_ = records_.count();
+    }
+    checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, /*agreeNow*/ recordContacts);
     stepsInWaves_ += static_cast<std::uint64_t>(levels);
     return static_cast<std::uint64_t>(levels);
 }

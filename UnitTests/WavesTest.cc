@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <sstream>
 
 #include "ContactTestScenes.h"
 #include "IO/LammpsDataFile.h"
@@ -94,4 +95,36 @@ TEST(Waves, RefuseBadSettings) {
     Scene s;
     expectError([&] { s.setWaves(0); }, {"waves of 1 to 255 steps"});
     expectError([&] { s.setWaves(4, 0); }, {"strips of waves need at least one column"});
+}
+
+// A run in waves restarted from its file continues bitwise as the uninterrupted run: waves start
+// at multiples of their steps, and the restart remakes the schedule of the list it kept.
+TEST(Waves, RestartedRunContinuesBitwise) {
+    const double dt = 1e-4;
+    const auto endOf = [dt](int steps) {
+        std::ostringstream t;
+        t.precision(17);
+        t << steps * dt;
+        return t.str();
+    };
+    const auto chute = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    Scene first, restarted, uninterrupted;
+    first.setup = uninterrupted.setup = chute;
+    for (Scene* s : {&first, &restarted, &uninterrupted}) s->setSkin(0.2), s->setWaves(4, 8);
+    first.setName("waves_restart");
+    first.settings().progressInterval = 1e9;
+    first.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(200), "--vtu", "off", "--fstat", "off"});
+    restarted.settings().progressInterval = 1e9;
+    restarted.solveOrThrow({"--restart", "waves_restart.restart", "--end-time", endOf(400), "--files", "off"});
+    uninterrupted.settings().progressInterval = 1e9;
+    uninterrupted.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(400), "--files", "off"});
+    EXPECT_GT(restarted.stepsInWaves(), 150u) << "the restarted run should go on in waves";
+    EXPECT_EQ(restarted.stepsInWaves() + first.stepsInWaves(), uninterrupted.stepsInWaves());
+    const ParticleStore &a = restarted.particles(), &b = uninterrupted.particles();
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        differ += !(sameBits(a.position[i], b.position[i]) && sameBits(a.velocity[i], b.velocity[i]) &&
+                    sameBits(a.angularVelocity[i], b.angularVelocity[i]));
+    EXPECT_EQ(differ, 0u) << "particles whose state differs from the uninterrupted run";
 }

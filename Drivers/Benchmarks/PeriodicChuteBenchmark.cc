@@ -128,7 +128,7 @@ public:
         std::printf("benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
                     "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f (%.0f interior)  rebuilds %llu  "
                     "ranks %d  communication %.1f%%  ghosts %.0f  (ghost exchange %.1f%%, agreement %.1f%%)  sweep %s  "
-                    "steps in waves %llu\n",
+                    "in-waves %llu\n",
                     sums[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
                     sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5], sums[10],
                     static_cast<unsigned long long>(pairList().builds), ranks(),

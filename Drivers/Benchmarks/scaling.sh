@@ -3,6 +3,8 @@
 # (the start bed replicated nx x ny times), one core, from the settled bed and from the developed
 # flow. Writes scaling-settled.csv, scaling-flowing.csv and scaling.png in the current folder.
 #     Drivers/Benchmarks/scaling.sh [build-dir] [repeats] [steps]
+# Flags for every run of the benchmark in TALUS_BENCHMARK_FLAGS, e.g. "--wave-steps 8 --wave-strip
+# 32" for several steps per pass (Documentation/TimeSkewing.md).
 #
 # Every size runs the same number of steps, n and 2n (default n = 200), from the same start, so
 # that every size does the same physics: the bed starts to flow and dilates, and a run of 5000
@@ -26,7 +28,8 @@ field() { awk -v key="$1" '{for (i = 1; i < NF; ++i) if ($i == key) print $(i + 
 run() {  # copies steps start: the closing line of the fastest of `repeats` runs
     local k line best="" fastest=""
     for ((k = 0; k < repeats; ++k)); do
-        line=$("$talus" --nx "$1" --ny "$1" --data "$data/chute_B_$3.data" \
+        # shellcheck disable=SC2086 # (the flags are words)
+        line=$("$talus" --nx "$1" --ny "$1" --data "$data/chute_B_$3.data" ${TALUS_BENCHMARK_FLAGS:-} \
             --end-time "$(awk -v n="$2" 'BEGIN {print n * 1e-4}')" --progress-interval 1e9 | grep '^benchmark:')
         local wall=$(echo "$line" | field wall)
         if [[ -z $fastest ]] || awk -v a="$wall" -v b="$fastest" 'BEGIN {exit !(a < b)}'; then

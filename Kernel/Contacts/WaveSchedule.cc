@@ -168,8 +168,6 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
                     }
                     (pairOf[e] < interiorPairs ? interior : face).push_back(pairOf[e]);
                 }
-        std::sort(interior.begin(), interior.end());
-        std::sort(face.begin(), face.end());
         region.pairs = static_cast<std::uint32_t>(pairIndex_.size());
         pairIndex_.insert(pairIndex_.end(), interior.begin(), interior.end());
         region.interiorEnd = static_cast<std::uint32_t>(pairIndex_.size());

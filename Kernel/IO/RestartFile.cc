@@ -16,7 +16,7 @@ namespace {
 
 // 2: the run line ends with the reorder flag; 3: kept values; 4: the one-way periodic box
 // (maser) and its pairs
-constexpr int formatVersion = 5;
+constexpr int formatVersion = 6;
 
 class Writer {
 public:
@@ -238,7 +238,8 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         }
         const PairList& l = s.pairList;
         w.key("pairlist") << l.skin << l.reach << l.maxSpeed << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
-                          << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size()); w.end();
+                          << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size())
+                          << std::uint64_t(l.interiorPairs); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
             writeHistory(w, l.history.get(k), shapes);
@@ -427,6 +428,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     l.builds = r.count("build count");
     const auto pairs = r.count("pair count", 1ull << 40), wallPairs = r.count("wall pair count", 1ull << 40);
     const auto references = r.count("reference count", n);
+    l.interiorPairs = r.count("interior pair count", pairs);
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});

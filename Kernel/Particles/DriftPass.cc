@@ -22,6 +22,11 @@ inline double squaredNorm(double a0, double a1, double a2) {
     return lanes::multiplyAdd(a2, a2, lanes::multiplyAdd(a1, a1, a0 * a0));
 }
 
+// PeriodicImage::nearest of one coordinate of a separation.
+inline double nearestOf(double raw, const PeriodicImage& image, int c) {
+    return raw > image.halfLength(c) ? raw - image.length(c) : raw < -image.halfLength(c) ? raw + image.length(c) : raw;
+}
+
 // The running maxima, as bit patterns of non-negative doubles (their order is the values' order,
 // and a NaN, all exponent bits set, wins: PairList.cc largestMoves).
 struct Maxima {
@@ -64,12 +69,7 @@ struct OneParticle {
             if (domain.periodic[c]) Domain::wrapCoordinate(xi[c], domain.lo[c], domain.hi[c], domain.length(c));
         double d[3] = {0, 0, 0};
         if (reference)
-            for (int c = 0; c < 3; ++c) {  // PeriodicImage::nearest
-                const double raw = xi[c] - reference[3 * i + c];
-                d[c] = raw > image.halfLength(c) ? raw - image.length(c)
-                       : raw < -image.halfLength(c) ? raw + image.length(c)
-                                                    : raw;
-            }
+            for (int c = 0; c < 3; ++c) d[c] = nearestOf(xi[c] - reference[3 * i + c], image, c);
         const double s2 = squaredNorm(vi[0], vi[1], vi[2]);
         m.displacement2 = std::max(m.displacement2, std::bit_cast<std::uint64_t>(squaredNorm(d[0], d[1], d[2])));
         m.speed2 = std::max(m.speed2, std::bit_cast<std::uint64_t>(s2));
@@ -326,6 +326,17 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
 #endif
 
 }  // namespace
+
+double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& reference, const Domain& domain) {
+    const PeriodicImage image(domain);
+    std::uint64_t largest = 0;
+    for (std::size_t i = 0; i < std::min(p.size(), reference.size()); ++i) {
+        double d[3];
+        for (int c = 0; c < 3; ++c) d[c] = nearestOf(p.position[i][c] - reference[i][c], image, c);
+        largest = std::max(largest, std::bit_cast<std::uint64_t>(squaredNorm(d[0], d[1], d[2])));
+    }
+    return std::sqrt(std::bit_cast<double>(largest));
+}
 
 DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
                                         const std::vector<Vec3>* reference, const Vec3& gravity,

@@ -46,6 +46,10 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& pre
                                         const std::vector<Vec3>* reference, const Vec3& gravity,
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points);
 
+// The largest displacement of the particles from the reference positions (nearest image), in
+// the drift pass's arithmetic: what the pass measured after the step that left them there.
+double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& reference, const Domain& domain);
+
 // The same for slots [first, last) alone, kicking with previousForce as it is (the caller has put
 // the forces to kick with there: no swap), with the arrays and points already sized to the
 // particles: a region's advance in a wave (Contacts/WaveSchedule.h).
