@@ -427,6 +427,15 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
         out << std::endl;
+        if (waveSteps_ > 1) {  // (SimulationWaves.cc: why a scene takes none)
+            out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
+            if (!waveScheduleRefusal_.empty())
+                out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
+            else if (stepsInWaves_ == 0)
+                out << " (waves need spheres in one rank's periodic box, no boundaries or prescribed motions: "
+                       "Documentation/TimeSkewing.md)";
+            out << std::endl;
+        }
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();

@@ -32,6 +32,7 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
 
 void Simulation::makeWaveSchedule() {
     waveScheduleBuild_ = 0;
+    waveScheduleRefusal_.clear();
     if (waveSteps_ < 2) return;
     const PairList& list = state_.pairList;
     const std::optional<WaveCells> cells = waveCellsForBuild(list.reach, &waveScheduleRefusal_);

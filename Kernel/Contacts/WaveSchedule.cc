@@ -93,7 +93,9 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     for (std::size_t k = 0; k < particles; ++k) {
         row[k] = cells.row(positions[k]), column[k] = cells.column(positions[k]);
         const std::size_t c = cells.cell(row[k], column[k]);
-        if (c < previous) return fail(why, "the particles are not in the order of the wave's cells (slot " + std::to_string(k) + ")");
+        if (c < previous)
+            return fail(why, "the particles are not in the order of the wave's cells (slot " + std::to_string(k) +
+                                 "; list builds put them so unless --reorder is off)");
         previous = c;
         ++cellStart[c + 1];
     }
