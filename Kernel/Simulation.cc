@@ -427,15 +427,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
         out << std::endl;
-        if (waveSteps_ > 1) {  // (SimulationWaves.cc: why a scene takes none)
-            out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
-            if (!waveScheduleRefusal_.empty())
-                out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
-            else if (stepsInWaves_ == 0)
-                out << " (waves need spheres in one rank's periodic box, no boundaries or prescribed motions: "
-                       "Documentation/TimeSkewing.md)";
-            out << std::endl;
-        }
+        reportWaves(out, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
@@ -484,13 +476,7 @@ void Simulation::initialise(bool restarted) {
     if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
     if (onRanks()) splitScene();
     if (restarted) {
-        // Waves go on as in the run that saved (SimulationWaves.cc): the schedule of the list it
-        // kept, and the displacement the last step left, measured as the drift pass does.
-        const PairList& list = state_.pairList;
-        if (list.comparable(state_.particles) && !onRanks()) {
-            lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
-            if (waveSteps_ > 1) makeWaveSchedule();
-        }
+        continueWavesAfterRestart();
         return;
     }
 

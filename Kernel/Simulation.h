@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
@@ -221,6 +222,8 @@ private:
     // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
+    void continueWavesAfterRestart();
+    void reportWaves(std::ostream& out, std::uint64_t steps) const;
     std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
     std::uint64_t saveEvery() const;
 

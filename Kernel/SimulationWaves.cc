@@ -3,6 +3,7 @@
 // cells and the schedule made at each list build, and a wave of steps.
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <sstream>
 
 #include "Particles/VelocityVerlet.h"
@@ -39,6 +40,27 @@ void Simulation::makeWaveSchedule() {
     if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
                                     state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
         waveScheduleBuild_ = list.builds;
+}
+
+// Waves go on as in the run that saved: the schedule of the list it kept, and the displacement
+// the last step left, measured as the drift pass does.
+void Simulation::continueWavesAfterRestart() {
+    const PairList& list = state_.pairList;
+    if (!list.comparable(state_.particles) || onRanks()) return;
+    lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
+    if (waveSteps_ > 1) makeWaveSchedule();
+}
+
+// The run's summary line of its waves, with why a scene takes none.
+void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
+    if (waveSteps_ < 2) return;
+    out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
+    if (!waveScheduleRefusal_.empty())
+        out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
+    else if (stepsInWaves_ == 0)
+        out << " (waves need spheres in one rank's periodic box, no boundaries or prescribed motions: "
+               "Documentation/TimeSkewing.md)";
+    out << std::endl;
 }
 
 // Whether the next steps can be a wave: the scene allows it (one drift pass a step, spheres, one
