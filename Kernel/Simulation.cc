@@ -26,6 +26,12 @@ void requireWord(const std::string& word, const std::string& what) {
             what + " must be one word without spaces, got '" + word + "'");
 }
 
+// Whether the step numbered `step` writes output (and records its contacts): every `every`
+// steps and the run's last; k: that step's count in the run, steps: the run's length.
+bool isOutputStep(std::uint64_t step, std::uint64_t k, std::uint64_t steps, std::uint64_t every) {
+    return step % every == 0 || k == steps;
+}
+
 }  // namespace
 
 Simulation::~Simulation() = default;
@@ -385,7 +391,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     for (std::uint64_t k = 1; k <= steps; ++k) {
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
             const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
-            const bool savingLast = (state_.step + static_cast<std::uint64_t>(waveSteps_)) % every == 0 || last == steps;
+            const bool savingLast = isOutputStep(state_.step + static_cast<std::uint64_t>(waveSteps_), last, steps, every);
             actionsBeforeTimeStep();
             const std::uint64_t done = integrateWave(savingLast);
             k += done - 1;
@@ -397,7 +403,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
             progress.update(state_.time, k, mobile);
             continue;
         }
-        const bool saving = (state_.step + 1) % every == 0 || k == steps;
+        const bool saving = isOutputStep(state_.step + 1, k, steps, every);
         actionsBeforeTimeStep();
         integrate(saving);
         actionsAfterTimeStep();
@@ -607,6 +613,11 @@ void Simulation::moveWithPrescribedMotion() {
     }
 }
 
+Vec3 Simulation::sweepFrame() const {
+    if (!state_.pairList.sweepInFlowFrame) return Vec3::Zero();
+    return driftFrame_ ? *driftFrame_ : sweepFrameVelocity(state_.particles);
+}
+
 // Velocity Verlet (SPEC.md 1): half kick, drift, forces at the new positions, half kick.
 void Simulation::integrate(bool recordContacts) {
     ParticleStore& p = state_.particles;
@@ -616,10 +627,7 @@ void Simulation::integrate(bool recordContacts) {
     std::optional<DriftPassResult> drifted;
     if (driftsInOnePass()) {
         PairList& list = state_.pairList;
-        // The sweep's frame: the mean velocity the pass measured the step before, or a sample's.
-        const Vec3 frame = !list.sweepInFlowFrame ? Vec3::Zero()
-                           : driftFrame_          ? *driftFrame_
-                                                  : sweepFrameVelocity(p);
+        const Vec3 frame = sweepFrame();
         drifted = kickDriftAndStartForces(p, previousForce_, state_.domain,
                                           list.comparable(p) ? &list.referencePosition : nullptr, state_.gravity,
                                           frame, dt, list.sweepPointScratch);

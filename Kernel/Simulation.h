@@ -212,6 +212,9 @@ private:
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);
     std::size_t slotOf(std::uint64_t id, bool ghosts) const;
     void integrate(bool recordContacts);
+    // The frame velocity of the sweep's growths (PairSweep.h) for a drift pass: the mean velocity
+    // the last pass measured, or a sample's; zero when the list sweeps in the box's frame.
+    Vec3 sweepFrame() const;
     void moveWithPrescribedMotion();
     void turnShapedParticles(double kick, double drift);
     void requireMotion(int motion, const std::string& what) const;

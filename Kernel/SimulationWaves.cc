@@ -91,7 +91,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     // The first half of the wave's first step over all particles, as a single step's; the same
     // frame for the sweep's growths all through the wave (any frame common to both particles of a
     // pair at a step keeps the sweep's bound, PairSweep.h).
-    const Vec3 frame = !list.sweepInFlowFrame ? Vec3::Zero() : driftFrame_ ? *driftFrame_ : sweepFrameVelocity(p);
+    const Vec3 frame = sweepFrame();
     DriftPassResult drifted = kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition,
                                                       state_.gravity, frame, dt, list.sweepPointScratch);
     state_.time += dt;
