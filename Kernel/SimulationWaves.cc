@@ -31,15 +31,64 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
     return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns_, why);
 }
 
-void Simulation::makeWaveSchedule() {
-    waveScheduleBuild_ = 0;
+// At a list build: the cells of its waves (the particles are in their order). The schedule
+// follows at the first wave (readyWaveSchedule).
+void Simulation::fitWaveCells() {
+    waveCellsBuild_ = waveScheduleBuild_ = 0;
     waveScheduleRefusal_.clear();
     if (waveSteps_ < 2) return;
     const PairList& list = state_.pairList;
-    const std::optional<WaveCells> cells = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
-    if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
-                                    state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
-        waveScheduleBuild_ = list.builds;
+    waveCells_ = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
+    if (waveCells_) waveCellsBuild_ = list.builds;
+    waveLargestRadius_ = 0;
+    for (double r : state_.particles.radius) waveLargestRadius_ = std::max(waveLargestRadius_, r);
+}
+
+// The schedule of the wave about to run (its first drift done, the sweep's points grown by at
+// most `growth` in `frame`), made if the list has none for it: over the near list (NearPairs)
+// where the moves within the wave keep that whole, else over every listed pair. The near list
+// holds every pair the sweep can pick while its particles have moved (the sum of the steps'
+// growths, NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within
+// the wave that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if
+// the largest speed doubles (the assumption the list's reach is kept with: waveFits), and
+// checked as the wave goes (integrateWave). The near list is made anew when the prediction does
+// not fit in what is left of it. False (and why, in waveScheduleRefusal_) if no schedule can be
+// made for the list: no more waves until it is rebuilt.
+bool Simulation::readyWaveSchedule(const Vec3& frame, double growth) {
+    PairList& list = state_.pairList;
+    NearPairs& near = list.near;
+    const ParticleStore& p = state_.particles;
+    const double dt = state_.settings.timeStep;
+    const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = 0.5 * nearSkin * (1 - 1e-9);
+    const double speed = 2 * list.maxSpeed + state_.gravity.norm() * waveSteps_ * dt + frame.norm();
+    const double wave = (waveSteps_ + 1) * std::max(growth, 1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
+    bool overNear = nearSkin > 0 && wave < nearLimit;
+    if (overNear) {
+        const bool whole = near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
+                           near.listed == list.pairs.size() && near.skin == nearSkin && near.moved + wave < nearLimit;
+        if (!whole) {
+            SweptPairs scratch;
+            makeNearPairs(list, p.position.data(), p.size(), p.radius.data(), nearSkin, PeriodicImage(state_.domain),
+                          list.nearPointScratch, scratch);
+        }
+    }
+    const std::uint64_t over = overNear ? near.makes : 0;
+    if (waveScheduleBuild_ == list.builds && waveScheduleNear_ == over) return true;
+    std::vector<std::uint32_t> nearIndex;
+    if (overNear) {
+        nearIndex.reserve(near.pairs.size());
+        for (const NearPairs::Pair& pair : near.pairs) nearIndex.push_back(pair.index);
+    }
+    waveScheduleBuild_ = 0;
+    if (!waveSchedule_.make(*waveCells_, list.pairs, list.interiorPairs, list.referencePosition, p.size(),
+                            &waveScheduleRefusal_, list.wallPairs, overNear ? &nearIndex : nullptr)) {
+        waveCellsBuild_ = 0;
+        return false;
+    }
+    waveScheduleBuild_ = list.builds, waveScheduleNear_ = over;
+    ++waveSchedules_;
+    waveSchedulesNear_ += overNear;
+    return true;
 }
 
 // Waves go on as in the run that saved: the schedule of the list it kept, and the displacement
@@ -48,13 +97,15 @@ void Simulation::continueWavesAfterRestart() {
     const PairList& list = state_.pairList;
     if (!list.comparable(state_.particles) || onRanks()) return;
     lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
-    if (waveSteps_ > 1) makeWaveSchedule();
+    if (waveSteps_ > 1) fitWaveCells();
 }
 
 // The run's summary line of its waves, with why a scene takes none.
 void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
     if (waveSteps_ < 2) return;
     out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
+    if (waveSchedules_ > 0)
+        out << ", their schedule made " << waveSchedules_ << " times (" << waveSchedulesNear_ << " over the near list)";
     if (!waveScheduleRefusal_.empty())
         out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
     else if (stepsInWaves_ == 0)
@@ -74,7 +125,7 @@ bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) cons
     const PairList& list = state_.pairList;
     if (steps < 2 || stepsLeft < steps || state_.step % steps != 0) return false;
     if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps - 1) / saveEvery) return false;
-    if (!driftsInOnePass() || idOrderedSums_ || waveScheduleBuild_ == 0 || waveScheduleBuild_ != list.builds ||
+    if (!driftsInOnePass() || idOrderedSums_ || waveCellsBuild_ == 0 || waveCellsBuild_ != list.builds ||
         !list.comparable(state_.particles) || !list.oneWayPairs.empty())
         return false;
     const double dt = state_.settings.timeStep;
@@ -97,13 +148,23 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     state_.time += dt;
     ++state_.step;
     lastDisplacement_ = std::sqrt(drifted.moves.displacement2);
-    if (list.needsRebuild(drifted.moves, p, state_.time, dt)) [[unlikely]] {  // (the prediction was wrong): a single step
+    // A single step instead if the list needs a rebuild (the prediction was wrong) or has no
+    // schedule (refused: none until the next build).
+    const std::uint64_t nearMakes = list.near.makes;
+    if (list.needsRebuild(drifted.moves, p, state_.time, dt) || !readyWaveSchedule(frame, drifted.growth)) [[unlikely]] {
         list.sweepPointsGrowth = drifted.growth;
         driftFrame_ = drifted.meanVelocity;
         computeForces(nullptr, OverlapCheck::withNextStep, &drifted);
         halfKick(p, p.owned(), half);
         return 1;
     }
+    // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
+    // step's but if the list was made at its positions (useNearPairs).
+    const bool overNear = waveScheduleNear_ != 0;
+    const double nearMoved = list.near.moved, nearLimit = 0.5 * list.near.skin * (1 - 1e-9);
+    std::vector<double> levelGrowth(static_cast<std::size_t>(levels), 0.0);
+    levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
+    double growth = drifted.growth;
     const double startSpeed = list.maxSpeed;
     double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2, finalDisplacement2 = 0;
     double velocitySum[3] = {0, 0, 0};
@@ -138,13 +199,24 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                     if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
                     speed2 = std::max(speed2, moved.moves.speed2);
                     displacement2 = std::max(displacement2, moved.moves.displacement2);
-                    if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
+                    growth = std::max(growth, moved.growth);
+                    double& grown = levelGrowth[static_cast<std::size_t>(region.level) + 1];
+                    grown = std::max(grown, moved.growth);
+                    const bool outranList = std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach;
+                    const bool outranNear = overNear && nearMoved + (levels + 1) * growth >= nearLimit;
+                    if (outranList || outranNear) {
                         std::ostringstream m;
-                        m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
-                          << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
-                          << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
-                          << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
-                          << "with --wave-steps 1, or a larger --skin";
+                        m << "a wave of " << levels << " steps at t = " << time << ": ";
+                        if (outranList)
+                            m << "a particle moved " << std::sqrt(displacement2)
+                              << " since the neighbour list was built, which with the largest speed "
+                              << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
+                              << "the list's reach " << list.reach;
+                        else
+                            m << "a particle moves " << growth << " in a step (" << drifted.growth
+                              << " when the wave began), which over the wave's steps reaches what is left of "
+                              << "the near list's skin (" << nearLimit - nearMoved << ")";
+                        m << " within the wave; its pairs may be missing. Run with --wave-steps 1, or a larger --skin";
                         throw Error(m.str());
                     }
                     if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
@@ -166,7 +238,10 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     lastDisplacement_ = std::sqrt(finalDisplacement2);
     const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
     driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
-    list.near.made = false;  // (its bound of the displacements did not follow the wave)
+    if (overNear)
+        for (double g : levelGrowth) list.near.moved += g;
+    else
+        list.near.made = false;  // (its bound of the displacements did not follow the wave)
     list.sweepPointsGrowth.reset();
     if (early.maxOverlapFraction > summary_.maxOverlapFraction) {
         summary_.maxOverlapFraction = early.maxOverlapFraction;

@@ -91,6 +91,32 @@ TEST(Waves, EightStepsInOneStripFollowSingleStepsFromTheSettledBed) {
     expectSameTrajectory("chute_B_settled.data", 8, 16, 1);
 }
 
+// The schedule over the near list (NearPairs, made anew as the particles move) computes the
+// pairs of the whole list's schedule that can touch, in the same order: the same trajectory to
+// the bit, through the near list's remakes and a list build.
+TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
+    const double dt = 1e-4;
+    Scene overNear, overAll;
+    overNear.setup = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    overAll.setup = [](Scene& s) {
+        benchmarkChute(s, "chute_B_flowing.data");
+        s.state().pairList.nearSkinFraction = 0;  // (no near list)
+    };
+    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->setWaves(4, 8), s->run(dt, 1000 * dt);
+    EXPECT_GT(overNear.pairList().near.makes, 2u) << "the test needs the near list remade between waves";
+    EXPECT_EQ(overAll.pairList().near.makes, 0u);
+    EXPECT_GE(overNear.pairList().builds, 3u);
+    EXPECT_GT(overNear.stepsInWaves(), 900u);
+    EXPECT_EQ(overNear.stepsInWaves(), overAll.stepsInWaves());
+    const ParticleStore &a = overNear.particles(), &b = overAll.particles();
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        differ += !(sameBits(a.position[i], b.position[i]) && sameBits(a.velocity[i], b.velocity[i]) &&
+                    sameBits(a.angularVelocity[i], b.angularVelocity[i]));
+    EXPECT_EQ(differ, 0u) << "particles whose state differs between the schedules";
+}
+
 TEST(Waves, RefuseBadSettings) {
     Scene s;
     expectError([&] { s.setWaves(0); }, {"waves of 1 to 255 steps"});

@@ -11,6 +11,7 @@ void Progress::start(const std::string& name, double time, double endTime, std::
     endTime_ = endTime;
     totalSteps_ = steps;
     particleSteps_ = 0;
+    stepsDone_ = 0;
     wallStart_ = lastPrint_ = Clock::now();
     char line[256];
     std::snprintf(line, sizeof line, "%s: running from t = %g to %g (%llu steps, %zu particles)\n", name.c_str(), time,
@@ -19,8 +20,11 @@ void Progress::start(const std::string& name, double time, double endTime, std::
 }
 
 void Progress::update(double time, std::uint64_t stepsDone, std::size_t particles) {
-    particleSteps_ += static_cast<double>(particles);
-    if ((stepsDone & 63) != 0) return;  // read the clock every 64 steps only
+    const std::uint64_t since = stepsDone - stepsDone_;
+    particleSteps_ += static_cast<double>(particles) * static_cast<double>(since);
+    const bool everyFewSteps = (stepsDone >> 6) != (stepsDone_ >> 6);  // read the clock every 64 steps only
+    stepsDone_ = stepsDone;
+    if (!everyFewSteps) return;
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - lastPrint_).count() < interval_) return;
     lastPrint_ = now;

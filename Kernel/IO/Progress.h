@@ -14,11 +14,14 @@ public:
     Progress(std::ostream& out, double intervalSeconds) : out_(out), interval_(intervalSeconds) {}
 
     void start(const std::string& name, double time, double endTime, std::uint64_t steps, std::size_t particles);
-    // Call every step; prints when the interval has passed since the last line.
+    // Call after every step, or every few (a wave of steps: Documentation/TimeSkewing.md), with
+    // the steps done so far and the particles of the steps since the last call; prints when the
+    // interval has passed since the last line.
     void update(double time, std::uint64_t stepsDone, std::size_t particles);
     void finish(double time, std::uint64_t stepsDone);
 
     double particleStepsPerSecond() const;
+    double particleSteps() const { return particleSteps_; }
     double wallSeconds() const;
 
 private:
@@ -30,6 +33,7 @@ private:
     std::uint64_t totalSteps_ = 0;
     Clock::time_point wallStart_, lastPrint_;
     double particleSteps_ = 0;
+    std::uint64_t stepsDone_ = 0;  // at the last update
 };
 
 }  // namespace talus

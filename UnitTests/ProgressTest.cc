@@ -1,0 +1,35 @@
+// The progress lines count the particle-steps of every step, also when a run reports them a few
+// at a time (waves of steps, Documentation/TimeSkewing.md), and print on crossing every 64th step
+// whatever the steps between reports.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "IO/Progress.h"
+
+using namespace talus;
+
+TEST(Progress, CountsEveryStepOfReportsAFewStepsApart) {
+    std::ostringstream out;
+    Progress progress(out, 1e9);
+    progress.start("run", 0, 1, 100, 10);
+    progress.update(0.01, 1, 10);   // a single step
+    progress.update(0.09, 9, 10);   // a wave of 8
+    progress.update(0.17, 17, 20);  // another, after particles were added
+    EXPECT_EQ(progress.particleSteps(), 10 + 8 * 10 + 8 * 20);
+}
+
+TEST(Progress, PrintsOnCrossingTheSixtyFourthStepBetweenReports) {
+    std::ostringstream out;
+    Progress progress(out, 0);  // every time it reads the clock
+    progress.start("run", 0, 1, 200, 10);
+    const auto lines = [&] {
+        std::size_t n = 0;
+        for (char c : out.str()) n += c == '\n';
+        return n;
+    };
+    // Waves of 8 from step 3 (a restarted run): reports at 3, 11, 19, ..., never at a multiple of 64.
+    progress.update(0.03, 3, 10);
+    for (std::uint64_t k = 11; k <= 131; k += 8) progress.update(0.01 * static_cast<double>(k), k, 10);
+    EXPECT_EQ(lines(), 1 + 2u) << out.str();  // the start line, and one each past steps 64 and 128
+}
