@@ -387,7 +387,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
-    stepsInWaves_ = waveSchedules_ = waveSchedulesNear_ = 0;
+    stepsInWaves_ = waveNearKeeps_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
             const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
@@ -520,7 +520,7 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
     if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
     if (rebuild) lastDisplacement_ = 0;  // (the positions are the new reference)
-    if (rebuild && waveSteps_ > 1) fitWaveCells();
+    if (rebuild && waveSteps_ > 1) makeWaveSchedule();
     PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
     if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());

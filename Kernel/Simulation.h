@@ -224,8 +224,8 @@ private:
     bool waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
     // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
-    void fitWaveCells();
-    bool readyWaveSchedule(const Vec3& frame, double growth);
+    void makeWaveSchedule();
+    const std::uint8_t* nearPairsForWave(const Vec3& frame, double growth);
     void continueWavesAfterRestart();
     void reportWaves(std::ostream& out, std::uint64_t steps) const;
     std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
@@ -257,14 +257,13 @@ private:
     IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
     int waveSteps_ = 1, waveStripColumns_ = 16;
-    std::optional<WaveCells> waveCells_;   // of the last list build
-    std::uint64_t waveCellsBuild_ = 0;     // that build (0: none, or a schedule was refused)
-    double waveLargestRadius_ = 0;         // at that build
-    WaveSchedule waveSchedule_;
-    std::uint64_t waveScheduleBuild_ = 0;  // the list build it was made for (0: none)
-    std::uint64_t waveScheduleNear_ = 0;   // the near list it was made over (NearPairs::makes; 0: all pairs)
-    std::string waveScheduleRefusal_;      // why the last build has none
-    std::uint64_t waveSchedules_ = 0, waveSchedulesNear_ = 0;  // made in the run (over the near list)
+    WaveSchedule waveSchedule_;               // over every listed pair
+    std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
+    std::string waveScheduleRefusal_;         // why the last build has none
+    double waveLargestRadius_ = 0;            // at that build
+    std::vector<std::uint8_t> waveNearKeep_;  // whether each listed pair is in the near list
+    std::uint64_t waveNearKeepMakes_ = 0;     // the near list it was made from (NearPairs::makes)
+    std::uint64_t waveNearKeeps_ = 0;         // made in the run
     double lastDisplacement_ = 0;          // the largest since the build, of the positions now
     std::uint64_t stepsInWaves_ = 0;
     std::unique_ptr<CommandLine> commandLine_;

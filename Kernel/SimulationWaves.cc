@@ -31,30 +31,33 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
     return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns_, why);
 }
 
-// At a list build: the cells of its waves (the particles are in their order). The schedule
-// follows at the first wave (readyWaveSchedule).
-void Simulation::fitWaveCells() {
-    waveCellsBuild_ = waveScheduleBuild_ = 0;
+// At a list build: the schedule of its waves over every listed pair (the particles are in the
+// order of its cells: reorderParticles).
+void Simulation::makeWaveSchedule() {
+    waveScheduleBuild_ = waveNearKeepMakes_ = 0;
     waveScheduleRefusal_.clear();
     if (waveSteps_ < 2) return;
     const PairList& list = state_.pairList;
-    waveCells_ = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
-    if (waveCells_) waveCellsBuild_ = list.builds;
+    const std::optional<WaveCells> cells = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
+    if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
+                                    state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
+        waveScheduleBuild_ = list.builds;
     waveLargestRadius_ = 0;
     for (double r : state_.particles.radius) waveLargestRadius_ = std::max(waveLargestRadius_, r);
 }
 
-// The schedule of the wave about to run (its first drift done, the sweep's points grown by at
-// most `growth` in `frame`), made if the list has none for it: over the near list (NearPairs)
-// where the moves within the wave keep that whole, else over every listed pair. The near list
-// holds every pair the sweep can pick while its particles have moved (the sum of the steps'
-// growths, NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within
-// the wave that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if
-// the largest speed doubles (the assumption the list's reach is kept with: waveFits), and
-// checked as the wave goes (integrateWave). The near list is made anew when the prediction does
-// not fit in what is left of it. False (and why, in waveScheduleRefusal_) if no schedule can be
-// made for the list: no more waves until it is rebuilt.
-bool Simulation::readyWaveSchedule(const Vec3& frame, double growth) {
+// The pairs the wave about to run computes (its first drift done, the sweep's points grown by
+// at most `growth` in `frame`): those of the near list (NearPairs), as flags over the listed
+// pairs, where the moves within the wave keep that whole, else all (null). The near list holds
+// every pair the sweep can pick while its particles have moved (the sum of the steps' growths,
+// NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within the wave
+// that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if the
+// largest speed doubles (the assumption the list's reach is kept with: waveFits), and checked as
+// the wave goes (integrateWave). The near list is made anew when the prediction does not fit in
+// what is left of it. The force loop gathers the flagged pairs of each region of the build's
+// schedule in its order (ContactForceLoop::regionPairs): the forces of the whole list's waves, to
+// the bit, for a sweep of the near pairs alone.
+const std::uint8_t* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
     PairList& list = state_.pairList;
     NearPairs& near = list.near;
     const ParticleStore& p = state_.particles;
@@ -62,33 +65,21 @@ bool Simulation::readyWaveSchedule(const Vec3& frame, double growth) {
     const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = 0.5 * nearSkin * (1 - 1e-9);
     const double speed = 2 * list.maxSpeed + state_.gravity.norm() * waveSteps_ * dt + frame.norm();
     const double wave = (waveSteps_ + 1) * std::max(growth, 1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
-    bool overNear = nearSkin > 0 && wave < nearLimit;
-    if (overNear) {
-        const bool whole = near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
-                           near.listed == list.pairs.size() && near.skin == nearSkin && near.moved + wave < nearLimit;
-        if (!whole) {
-            SweptPairs scratch;
-            makeNearPairs(list, p.position.data(), p.size(), p.radius.data(), nearSkin, PeriodicImage(state_.domain),
-                          list.nearPointScratch, scratch);
-        }
+    if (!(nearSkin > 0 && wave < nearLimit)) return nullptr;
+    const bool whole = near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
+                       near.listed == list.pairs.size() && near.skin == nearSkin && near.moved + wave < nearLimit;
+    if (!whole) {
+        SweptPairs scratch;
+        makeNearPairs(list, p.position.data(), p.size(), p.radius.data(), nearSkin, PeriodicImage(state_.domain),
+                      list.nearPointScratch, scratch);
     }
-    const std::uint64_t over = overNear ? near.makes : 0;
-    if (waveScheduleBuild_ == list.builds && waveScheduleNear_ == over) return true;
-    std::vector<std::uint32_t> nearIndex;
-    if (overNear) {
-        nearIndex.reserve(near.pairs.size());
-        for (const NearPairs::Pair& pair : near.pairs) nearIndex.push_back(pair.index);
+    if (waveNearKeepMakes_ != near.makes) {
+        waveNearKeep_.assign(list.pairs.size(), 0);
+        for (const NearPairs::Pair& pair : near.pairs) waveNearKeep_[pair.index] = 1;
+        waveNearKeepMakes_ = near.makes;
+        ++waveNearKeeps_;
     }
-    waveScheduleBuild_ = 0;
-    if (!waveSchedule_.make(*waveCells_, list.pairs, list.interiorPairs, list.referencePosition, p.size(),
-                            &waveScheduleRefusal_, list.wallPairs, overNear ? &nearIndex : nullptr)) {
-        waveCellsBuild_ = 0;
-        return false;
-    }
-    waveScheduleBuild_ = list.builds, waveScheduleNear_ = over;
-    ++waveSchedules_;
-    waveSchedulesNear_ += overNear;
-    return true;
+    return waveNearKeep_.data();
 }
 
 // Waves go on as in the run that saved: the schedule of the list it kept, and the displacement
@@ -97,15 +88,16 @@ void Simulation::continueWavesAfterRestart() {
     const PairList& list = state_.pairList;
     if (!list.comparable(state_.particles) || onRanks()) return;
     lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
-    if (waveSteps_ > 1) fitWaveCells();
+    if (waveSteps_ > 1) makeWaveSchedule();
 }
 
 // The run's summary line of its waves, with why a scene takes none.
 void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
     if (waveSteps_ < 2) return;
     out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
-    if (waveSchedules_ > 0)
-        out << ", their schedule made " << waveSchedules_ << " times (" << waveSchedulesNear_ << " over the near list)";
+    if (waveNearKeeps_ > 0)
+        out << ", over the near list (" << waveNearKeeps_ << " of them, the last of " << state_.pairList.near.pairs.size()
+            << " of " << state_.pairList.pairs.size() << " pairs)";
     if (!waveScheduleRefusal_.empty())
         out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
     else if (stepsInWaves_ == 0)
@@ -125,7 +117,7 @@ bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) cons
     const PairList& list = state_.pairList;
     if (steps < 2 || stepsLeft < steps || state_.step % steps != 0) return false;
     if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps - 1) / saveEvery) return false;
-    if (!driftsInOnePass() || idOrderedSums_ || waveCellsBuild_ == 0 || waveCellsBuild_ != list.builds ||
+    if (!driftsInOnePass() || idOrderedSums_ || waveScheduleBuild_ == 0 || waveScheduleBuild_ != list.builds ||
         !list.comparable(state_.particles) || !list.oneWayPairs.empty())
         return false;
     const double dt = state_.settings.timeStep;
@@ -148,19 +140,19 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     state_.time += dt;
     ++state_.step;
     lastDisplacement_ = std::sqrt(drifted.moves.displacement2);
-    // A single step instead if the list needs a rebuild (the prediction was wrong) or has no
-    // schedule (refused: none until the next build).
-    const std::uint64_t nearMakes = list.near.makes;
-    if (list.needsRebuild(drifted.moves, p, state_.time, dt) || !readyWaveSchedule(frame, drifted.growth)) [[unlikely]] {
+    // A single step instead if the list needs a rebuild (the prediction was wrong).
+    if (list.needsRebuild(drifted.moves, p, state_.time, dt)) [[unlikely]] {
         list.sweepPointsGrowth = drifted.growth;
         driftFrame_ = drifted.meanVelocity;
         computeForces(nullptr, OverlapCheck::withNextStep, &drifted);
         halfKick(p, p.owned(), half);
         return 1;
     }
+    const std::uint64_t nearMakes = list.near.makes;
+    const std::uint8_t* near = nearPairsForWave(frame, drifted.growth);
     // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
     // step's but if the list was made at its positions (useNearPairs).
-    const bool overNear = waveScheduleNear_ != 0;
+    const bool overNear = near != nullptr;
     const double nearMoved = list.near.moved, nearLimit = 0.5 * list.near.skin * (1 - 1e-9);
     std::vector<double> levelGrowth(static_cast<std::size_t>(levels), 0.0);
     levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
@@ -181,7 +173,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                 const bool last = region.level + 1 == levels;
                 ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
                 loop.allowSpeed(std::sqrt(speed2));
-                loop.regionPairs(list, domain, waveSchedule_, region, state_.walls);
+                loop.regionPairs(list, domain, waveSchedule_, region, state_.walls, near);
                 // The region's particles: the second half kick of this step, and unless it is the
                 // wave's last, the first half of the next (Particles/DriftPass.h on their slots).
                 for (int run = 0; run < 2; ++run) {

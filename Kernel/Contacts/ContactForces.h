@@ -265,18 +265,40 @@ public:
     // The pairs and wall candidates one region of a wave computes (Contacts/WaveSchedule.h): its
     // interior pairs, those near a face, its particles' walls, then the batches applied, so that
     // the region's particles have all their forces of the step before they advance.
+    // keep: if given, the pairs k with keep[k] alone (a near list's, Simulation::readyWaveSchedule),
+    // gathered a chunk at a time, in the schedule's order.
     void regionPairs(PairList& list, const Domain& domain, const WaveSchedule& schedule, const WaveRegion& region,
-                     const std::vector<Wall>& walls) {
+                     const std::vector<Wall>& walls, const std::uint8_t* keep = nullptr) {
         const PeriodicImage image(domain);
         const SweepPoint* points = list.sweepPointScratch.data();
         const std::uint32_t* index = schedule.pairIndex().data();
         SweptPairs swept;
-        sweptContacts<false>(list, region.pairs, region.interiorEnd, points, image, swept, nullptr, index);
-        sweptContacts<true>(list, region.interiorEnd, region.end, points, image, swept, nullptr, index);
+        if (keep) {
+            keptContacts<false>(list, index, region.pairs, region.interiorEnd, keep, points, image, swept);
+            keptContacts<true>(list, index, region.interiorEnd, region.end, keep, points, image, swept);
+        } else {
+            sweptContacts<false>(list, region.pairs, region.interiorEnd, points, image, swept, nullptr, index);
+            sweptContacts<true>(list, region.interiorEnd, region.end, points, image, swept, nullptr, index);
+        }
         static const std::vector<PrescribedMotion> noMotions;
         for (std::uint32_t e = region.wallsBegin; e < region.wallsEnd; ++e)
             wallPair(list, schedule.wallIndex()[e], walls, noMotions);
         if constexpr (Law::batched) flush(list);
+    }
+    template <bool nearestImage>
+    void keptContacts(PairList& list, const std::uint32_t* index, std::uint32_t from, std::uint32_t to,
+                      const std::uint8_t* keep, const SweepPoint* points, const PeriodicImage& image, SweptPairs& swept) {
+        std::uint32_t kept[SweptPairs::capacity];
+        std::size_t n = 0;
+        for (std::uint32_t e = from; e < to; ++e) {
+            kept[n] = index[e];  // (no branch: the next pair overwrites one not kept)
+            n += keep[index[e]];
+            if (n == SweptPairs::capacity) {
+                sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
+                n = 0;
+            }
+        }
+        if (n > 0) sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
     }
     // Raises the largest speed the skipping of far walls assumes (to one measured since).
     void allowSpeed(double maxSpeed) { closing_ = std::max(closing_, 2 * maxSpeed * dt_); }

@@ -79,11 +79,10 @@ std::vector<std::size_t> WaveCells::order(const std::vector<Vec3>& positions) co
 
 bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
                         const std::vector<Vec3>& positions, std::size_t particles, std::string* why,
-                        const std::vector<WallCandidate>& walls, const std::vector<std::uint32_t>* only) {
+                        const std::vector<WallCandidate>& walls) {
     regions_.clear();
     pairIndex_.clear();
     wallIndex_.clear();
-    pairsScheduled_ = 0;
     levels_ = cells.levels();
     if (positions.size() < particles) return fail(why, "fewer positions than particles");
     if (particles > 0xfffffffeu) return fail(why, "too many particles for a wave schedule");
@@ -101,15 +100,9 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
         ++cellStart[c + 1];
     }
     std::partial_sum(cellStart.begin(), cellStart.end(), cellStart.begin());
-    // The pairs scheduled (all, or those named), each particle's (both ways), checked to join
-    // neighbouring cells.
-    const std::size_t scheduled = only ? only->size() : pairs.size();
-    const auto pairAt = [&](std::size_t n) { return only ? (*only)[n] : static_cast<std::uint32_t>(n); };
-    std::vector<std::uint32_t> first(particles + 1, 0), partner(2 * scheduled), pairOf(2 * scheduled);
-    for (std::size_t n = 0; n < scheduled; ++n) {
-        if (pairAt(n) >= pairs.size() || (n > 0 && pairAt(n) <= pairAt(n - 1)))
-            return fail(why, "the pairs to schedule are not ascending places in the list");
-        const ParticlePair& p = pairs[pairAt(n)];
+    // Each particle's pairs (both ways), checked to join neighbouring cells.
+    std::vector<std::uint32_t> first(particles + 1, 0), partner(2 * pairs.size()), pairOf(2 * pairs.size());
+    for (const ParticlePair& p : pairs) {
         if (p.i >= particles || p.j >= particles) return fail(why, "a listed pair names a slot beyond the particles");
         if (!neighbouring(row[p.i], row[p.j], cells.rows()) || !neighbouring(column[p.i], column[p.j], cells.columns()))
             return fail(why, "listed pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) +
@@ -118,8 +111,7 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     }
     std::partial_sum(first.begin(), first.end(), first.begin());
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t n = 0; n < scheduled; ++n) {
-        const std::uint32_t k = pairAt(n);
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
         partner[fill[pairs[k].i]] = pairs[k].j, pairOf[fill[pairs[k].i]++] = k;
         partner[fill[pairs[k].j]] = pairs[k].i, pairOf[fill[pairs[k].j]++] = k;
     }
@@ -197,9 +189,8 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
         if (step[k] != levels_) return fail(why, "particle " + std::to_string(k) + " was not advanced by every step of the wave");
     if (wallIndex_.size() != walls.size() * static_cast<std::size_t>(levels_))
         return fail(why, "the wave computes " + std::to_string(wallIndex_.size()) + " wall candidates, not each once a step");
-    if (pairIndex_.size() != scheduled * static_cast<std::size_t>(levels_))
+    if (pairIndex_.size() != pairs.size() * static_cast<std::size_t>(levels_))
         return fail(why, "the wave computes " + std::to_string(pairIndex_.size()) + " pairs, not every listed pair once a step");
-    pairsScheduled_ = scheduled;
     return true;
 }
 

@@ -102,22 +102,18 @@ struct WaveRegion {
 class WaveSchedule {
 public:
     // The regions of a wave over the listed pairs (grouped by i, the first interiorPairs of them
-    // interior) of particles in slots [0, particles), listed at `positions`, or over those
-    // pairs[only[n]] alone (ascending places: a near list's, NearPairs); false (and why) if the
-    // particles are not in the cells' order or a pair does not join neighbouring cells. It
+    // interior) of particles in slots [0, particles), listed at `positions`; false (and why) if
+    // the particles are not in the cells' order or a pair does not join neighbouring cells. It
     // follows the wave with a step counter per particle and fails if a region ever advances a
-    // particle whose partner is not at the same step or the next. A region's pairs keep their
-    // order in the list, so the schedule over a subset computes the pairs it has in the order
-    // the whole list's schedule does.
+    // particle whose partner is not at the same step or the next.
     bool make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
               const std::vector<Vec3>& positions, std::size_t particles, std::string* why = nullptr,
-              const std::vector<WallCandidate>& walls = {}, const std::vector<std::uint32_t>* only = nullptr);
+              const std::vector<WallCandidate>& walls = {});
 
     const std::vector<WaveRegion>& regions() const { return regions_; }
     const std::vector<std::uint32_t>& pairIndex() const { return pairIndex_; }
     const std::vector<std::uint32_t>& wallIndex() const { return wallIndex_; }
     int levels() const { return levels_; }
-    std::size_t pairsScheduled() const { return pairsScheduled_; }  // per level
     std::size_t bytes() const {
         return regions_.capacity() * sizeof(WaveRegion) +
                (pairIndex_.capacity() + wallIndex_.capacity()) * sizeof(std::uint32_t);
@@ -126,7 +122,6 @@ public:
 private:
     std::vector<WaveRegion> regions_;
     std::vector<std::uint32_t> pairIndex_, wallIndex_;
-    std::size_t pairsScheduled_ = 0;
     int levels_ = 0;
 };
 
