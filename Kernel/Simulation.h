@@ -225,7 +225,7 @@ private:
     // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
-    const std::uint8_t* nearPairsForWave(const Vec3& frame, double growth);
+    const std::uint64_t* nearPairsForWave(const Vec3& frame, double growth);
     void continueWavesAfterRestart();
     void reportWaves(std::ostream& out, std::uint64_t steps) const;
     std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
@@ -261,7 +261,7 @@ private:
     std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;         // why the last build has none
     double waveLargestRadius_ = 0;            // at that build
-    std::vector<std::uint8_t> waveNearKeep_;  // whether each listed pair is in the near list
+    std::vector<std::uint64_t> waveNearKeep_;  // a bit per place in the schedule: its pair is near
     std::uint64_t waveNearKeepMakes_ = 0;     // the near list it was made from (NearPairs::makes)
     std::uint64_t waveNearKeeps_ = 0;         // made in the run
     double lastDisplacement_ = 0;          // the largest since the build, of the positions now

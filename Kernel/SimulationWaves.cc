@@ -57,7 +57,7 @@ void Simulation::makeWaveSchedule() {
 // what is left of it. The force loop gathers the flagged pairs of each region of the build's
 // schedule in its order (ContactForceLoop::regionPairs): the forces of the whole list's waves, to
 // the bit, for a sweep of the near pairs alone.
-const std::uint8_t* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
+const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
     PairList& list = state_.pairList;
     NearPairs& near = list.near;
     const ParticleStore& p = state_.particles;
@@ -74,8 +74,12 @@ const std::uint8_t* Simulation::nearPairsForWave(const Vec3& frame, double growt
                       list.nearPointScratch, scratch);
     }
     if (waveNearKeepMakes_ != near.makes) {
-        waveNearKeep_.assign(list.pairs.size(), 0);
-        for (const NearPairs::Pair& pair : near.pairs) waveNearKeep_[pair.index] = 1;
+        std::vector<std::uint8_t> keep(list.pairs.size(), 0);
+        for (const NearPairs::Pair& pair : near.pairs) keep[pair.index] = 1;
+        const std::vector<std::uint32_t>& index = waveSchedule_.pairIndex();
+        waveNearKeep_.assign((index.size() + 63) / 64, 0);
+        for (std::size_t e = 0; e < index.size(); ++e)
+            waveNearKeep_[e / 64] |= std::uint64_t{keep[index[e]]} << (e % 64);
         waveNearKeepMakes_ = near.makes;
         ++waveNearKeeps_;
     }
@@ -149,7 +153,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
         return 1;
     }
     const std::uint64_t nearMakes = list.near.makes;
-    const std::uint8_t* near = nearPairsForWave(frame, drifted.growth);
+    const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
     // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
     // step's but if the list was made at its positions (useNearPairs).
     const bool overNear = near != nullptr;

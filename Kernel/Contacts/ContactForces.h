@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <sstream>
 #include <cmath>
 #include <cstdint>
@@ -265,10 +266,11 @@ public:
     // The pairs and wall candidates one region of a wave computes (Contacts/WaveSchedule.h): its
     // interior pairs, those near a face, its particles' walls, then the batches applied, so that
     // the region's particles have all their forces of the step before they advance.
-    // keep: if given, the pairs k with keep[k] alone (a near list's, Simulation::readyWaveSchedule),
-    // gathered a chunk at a time, in the schedule's order.
+    // keep: if given, a bit per place in the schedule (bit e % 64 of keep[e / 64]): the pairs of
+    // the places whose bit is set alone (a near list's, Simulation::nearPairsForWave), gathered a
+    // chunk at a time, in the schedule's order.
     void regionPairs(PairList& list, const Domain& domain, const WaveSchedule& schedule, const WaveRegion& region,
-                     const std::vector<Wall>& walls, const std::uint8_t* keep = nullptr) {
+                     const std::vector<Wall>& walls, const std::uint64_t* keep = nullptr) {
         const PeriodicImage image(domain);
         const SweepPoint* points = list.sweepPointScratch.data();
         const std::uint32_t* index = schedule.pairIndex().data();
@@ -287,15 +289,20 @@ public:
     }
     template <bool nearestImage>
     void keptContacts(PairList& list, const std::uint32_t* index, std::uint32_t from, std::uint32_t to,
-                      const std::uint8_t* keep, const SweepPoint* points, const PeriodicImage& image, SweptPairs& swept) {
+                      const std::uint64_t* keep, const SweepPoint* points, const PeriodicImage& image, SweptPairs& swept) {
+        if (from >= to) return;
         std::uint32_t kept[SweptPairs::capacity];
         std::size_t n = 0;
-        for (std::uint32_t e = from; e < to; ++e) {
-            kept[n] = index[e];  // (no branch: the next pair overwrites one not kept)
-            n += keep[index[e]];
-            if (n == SweptPairs::capacity) {
-                sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
-                n = 0;
+        for (std::uint32_t word = from / 64; word <= (to - 1) / 64; ++word) {
+            std::uint64_t bits = keep[word];
+            if (word == from / 64) bits &= ~std::uint64_t{0} << (from % 64);
+            if (word == (to - 1) / 64 && to % 64 != 0) bits &= ~(~std::uint64_t{0} << (to % 64));
+            for (; bits != 0; bits &= bits - 1) {
+                kept[n++] = index[64 * word + static_cast<std::uint32_t>(std::countr_zero(bits))];
+                if (n == SweptPairs::capacity) {
+                    sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
+                    n = 0;
+                }
             }
         }
         if (n > 0) sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
