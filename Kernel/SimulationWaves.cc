@@ -47,16 +47,16 @@ void Simulation::makeWaveSchedule() {
 }
 
 // The pairs the wave about to run computes (its first drift done, the sweep's points grown by
-// at most `growth` in `frame`): those of the near list (NearPairs), as flags over the listed
-// pairs, where the moves within the wave keep that whole, else all (null). The near list holds
+// at most `growth` in `frame`): those of the near list (NearPairs), as a bit per place in the
+// build's schedule, where the moves within the wave keep that whole, else all (null). The near list holds
 // every pair the sweep can pick while its particles have moved (the sum of the steps' growths,
 // NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within the wave
 // that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if the
 // largest speed doubles (the assumption the list's reach is kept with: waveFits), and checked as
 // the wave goes (integrateWave). The near list is made anew when the prediction does not fit in
-// what is left of it. The force loop gathers the flagged pairs of each region of the build's
-// schedule in its order (ContactForceLoop::regionPairs): the forces of the whole list's waves, to
-// the bit, for a sweep of the near pairs alone.
+// what is left of it. The force loop gathers the marked pairs of each region in the schedule's
+// order (ContactForceLoop::regionPairs): the forces of the whole list's waves, to the bit, for a
+// sweep of the near pairs alone.
 const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
     PairList& list = state_.pairList;
     NearPairs& near = list.near;

@@ -170,6 +170,9 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
                     }
                     (pairOf[e] < interiorPairs ? interior : face).push_back(pairOf[e]);
                 }
+        // In the list's order: the force loop then reads the pairs and their histories ascending.
+        std::sort(interior.begin(), interior.end());
+        std::sort(face.begin(), face.end());
         region.pairs = static_cast<std::uint32_t>(pairIndex_.size());
         pairIndex_.insert(pairIndex_.end(), interior.begin(), interior.end());
         region.interiorEnd = static_cast<std::uint32_t>(pairIndex_.size());
