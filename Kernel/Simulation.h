@@ -66,6 +66,7 @@ public:
     void setWaves(int steps, int stripColumns = 16);
     // Steps taken in waves since the start of the last solve (for tests and the benchmark).
     std::uint64_t stepsInWaves() const { return stepsInWaves_; }
+    std::uint64_t wavesOffTheNearList() const { return waveNearGivenUp_; }  // (given up mid-wave)
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
     RunSettings& settings() { return state_.settings; }
 
@@ -264,6 +265,7 @@ private:
     std::vector<std::uint64_t> waveNearKeep_;  // a bit per place in the schedule: its pair is near
     std::uint64_t waveNearKeepMakes_ = 0;     // the near list it was made from (NearPairs::makes)
     std::uint64_t waveNearKeeps_ = 0;         // made in the run
+    std::uint64_t waveNearGivenUp_ = 0;       // waves of the run that went on over the whole list
     double lastDisplacement_ = 0;          // the largest since the build, of the positions now
     std::uint64_t stepsInWaves_ = 0;
     std::unique_ptr<CommandLine> commandLine_;

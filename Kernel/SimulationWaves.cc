@@ -102,6 +102,8 @@ void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
     if (waveNearKeeps_ > 0)
         out << ", over the near list (" << waveNearKeeps_ << " of them, the last of " << state_.pairList.near.pairs.size()
             << " of " << state_.pairList.pairs.size() << " pairs)";
+    if (waveNearGivenUp_ > 0)
+        out << "; " << waveNearGivenUp_ << " waves went on over the whole list when a particle sped up past the near list";
     if (!waveScheduleRefusal_.empty())
         out << "; the last list build has no wave schedule: " << waveScheduleRefusal_;
     else if (stepsInWaves_ == 0)
@@ -153,10 +155,9 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
         return 1;
     }
     const std::uint64_t nearMakes = list.near.makes;
-    const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
     // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
     // step's but if the list was made at its positions (useNearPairs).
-    const bool overNear = near != nullptr;
+    const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
     const double nearMoved = list.near.moved, nearLimit = 0.5 * list.near.skin * (1 - 1e-9);
     std::vector<double> levelGrowth(static_cast<std::size_t>(levels), 0.0);
     levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
@@ -198,21 +199,20 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                     growth = std::max(growth, moved.growth);
                     double& grown = levelGrowth[static_cast<std::size_t>(region.level) + 1];
                     grown = std::max(grown, moved.growth);
-                    const bool outranList = std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach;
-                    const bool outranNear = overNear && nearMoved + (levels + 1) * growth >= nearLimit;
-                    if (outranList || outranNear) {
+                    // A particle sped up past the prediction: past the near list's allowance, the
+                    // rest of the wave sweeps the whole list (the pairs swept so far were within
+                    // it: every growth of their particles so far fitted); past the list's, stop.
+                    if (near && nearMoved + (levels + 1) * growth >= nearLimit) [[unlikely]] {
+                        near = nullptr;
+                        ++waveNearGivenUp_;
+                    }
+                    if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
                         std::ostringstream m;
-                        m << "a wave of " << levels << " steps at t = " << time << ": ";
-                        if (outranList)
-                            m << "a particle moved " << std::sqrt(displacement2)
-                              << " since the neighbour list was built, which with the largest speed "
-                              << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
-                              << "the list's reach " << list.reach;
-                        else
-                            m << "a particle moves " << growth << " in a step (" << drifted.growth
-                              << " when the wave began), which over the wave's steps reaches what is left of "
-                              << "the near list's skin (" << nearLimit - nearMoved << ")";
-                        m << " within the wave; its pairs may be missing. Run with --wave-steps 1, or a larger --skin";
+                        m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
+                          << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
+                          << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
+                          << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
+                          << "with --wave-steps 1, or a larger --skin";
                         throw Error(m.str());
                     }
                     if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
@@ -234,7 +234,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     lastDisplacement_ = std::sqrt(finalDisplacement2);
     const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
     driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
-    if (overNear)
+    if (near)
         for (double g : levelGrowth) list.near.moved += g;
     else
         list.near.made = false;  // (its bound of the displacements did not follow the wave)

@@ -124,6 +124,38 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the schedules";
 }
 
+// Two spheres set down overlapping on the settled bed fly apart faster than a wave predicts from
+// the bed at rest, the lower into the bed: past the near list's allowance within the wave, the
+// wave goes on over the whole list, to the bit as the whole list's waves do.
+TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
+    const double dt = 1e-4;
+    const auto scene = [](Scene& s, double nearSkinFraction) {
+        benchmarkChute(s, "chute_B_settled.data");
+        s.settings().maxInitialOverlapFraction = s.settings().maxOverlapFraction = 0.5;
+        // The top sphere of the bed near (5, 5); just above it (0.003 apart), the pair, one
+        // above the other: the lower is driven into the bed.
+        const ParticleStore& p = s.particles();
+        std::size_t top = 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (std::abs(p.position[i].x() - 5) < 1 && std::abs(p.position[i].y() - 5) < 1 &&
+                p.position[i].z() > p.position[top].z())
+                top = i;
+        const std::size_t grain = 0;  // (benchmarkChute's one species)
+        const Vec3 lower = p.position[top] + Vec3(0, 0, p.radius[top] + 0.5 + 0.003);
+        s.addParticle(lower, 0.5, grain);
+        s.addParticle(lower + Vec3(0, 0, 0.8), 0.5, grain);  // (overlapping by 40% of the radius)
+        s.state().pairList.nearSkinFraction = nearSkinFraction;
+    };
+    Scene overNear, overAll;
+    overNear.setup = [&](Scene& s) { scene(s, 0.01); };
+    overAll.setup = [&](Scene& s) { scene(s, 0); };
+    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->setWaves(4, 8), s->run(dt, 200 * dt);
+    EXPECT_GT(overNear.wavesOffTheNearList(), 0u) << "the test needs a wave to outrun the near list";
+    EXPECT_GT(overNear.stepsInWaves(), 100u);
+    EXPECT_EQ(overNear.stepsInWaves(), overAll.stepsInWaves());
+    EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
+}
+
 TEST(Waves, RefuseBadSettings) {
     Scene s;
     expectError([&] { s.setWaves(0); }, {"waves of 1 to 255 steps"});
