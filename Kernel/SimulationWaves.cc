@@ -2,6 +2,7 @@
 // Documentation/TimeSkewing.md), Simulation's side: the particles in the order of the wave's
 // cells and the schedule made at each list build, and a wave of steps.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <ostream>
 #include <sstream>
@@ -159,7 +160,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     // step's but if the list was made at its positions (useNearPairs).
     const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
     const double nearMoved = list.near.moved, nearLimit = 0.5 * list.near.skin * (1 - 1e-9);
-    std::vector<double> levelGrowth(static_cast<std::size_t>(levels), 0.0);
+    std::array<double, 256> levelGrowth{};  // (waves of at most 255 steps: setWaves)
     levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
     double growth = drifted.growth;
     const double startSpeed = list.maxSpeed;
@@ -235,7 +236,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
     driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
     if (near)
-        for (double g : levelGrowth) list.near.moved += g;
+        for (int t = 0; t < levels; ++t) list.near.moved += levelGrowth[static_cast<std::size_t>(t)];
     else
         list.near.made = false;  // (its bound of the displacements did not follow the wave)
     list.sweepPointsGrowth.reset();
