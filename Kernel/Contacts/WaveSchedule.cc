@@ -86,6 +86,8 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     levels_ = cells.levels();
     if (positions.size() < particles) return fail(why, "fewer positions than particles");
     if (particles > 0xfffffffeu) return fail(why, "too many particles for a wave schedule");
+    if (pairs.size() * static_cast<std::size_t>(levels_) > 0xffffffffu || walls.size() * static_cast<std::size_t>(levels_) > 0xffffffffu)
+        return fail(why, "too many listed pairs for a wave schedule of " + std::to_string(levels_) + " steps");
     // The particles' cells, in the wave order, and where each cell's slots begin.
     std::vector<std::uint32_t> cellStart(cells.cellCount() + 1, 0);
     std::size_t previous = 0;
@@ -100,20 +102,12 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
         ++cellStart[c + 1];
     }
     std::partial_sum(cellStart.begin(), cellStart.end(), cellStart.begin());
-    // Each particle's pairs (both ways), checked to join neighbouring cells.
-    std::vector<std::uint32_t> first(particles + 1, 0), partner(2 * pairs.size()), pairOf(2 * pairs.size());
+    // Every listed pair joins neighbouring cells.
     for (const ParticlePair& p : pairs) {
         if (p.i >= particles || p.j >= particles) return fail(why, "a listed pair names a slot beyond the particles");
         if (!neighbouring(row[p.i], row[p.j], cells.rows()) || !neighbouring(column[p.i], column[p.j], cells.columns()))
             return fail(why, "listed pair (" + std::to_string(p.i) + ", " + std::to_string(p.j) +
                                  ") joins cells that are not neighbours");
-        ++first[p.i + 1], ++first[p.j + 1];
-    }
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
-        partner[fill[pairs[k].i]] = pairs[k].j, pairOf[fill[pairs[k].i]++] = k;
-        partner[fill[pairs[k].j]] = pairs[k].i, pairOf[fill[pairs[k].j]++] = k;
     }
     // Each particle's wall candidates.
     std::vector<std::uint32_t> firstWall(particles + 1, 0), wallOf(walls.size());
@@ -124,10 +118,11 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     std::partial_sum(firstWall.begin(), firstWall.end(), firstWall.begin());
     std::vector<std::uint32_t> wallFill(firstWall.begin(), firstWall.end() - 1);
     for (std::uint32_t k = 0; k < walls.size(); ++k) wallOf[wallFill[walls[k].particle]++] = k;
-    // The wave followed with a step counter per particle.
-    constexpr std::uint16_t advancing = 0xffff;
+    // The regions in the wave's order, and the one advancing each particle at each level
+    // (regionAt[i * levels + t]), each particle checked to advance from every step once, in turn.
+    const auto levels = static_cast<std::size_t>(levels_);
+    std::vector<std::uint32_t> regionAt(particles * levels);
     std::vector<std::uint16_t> step(particles, 0);
-    std::vector<std::uint32_t> interior, face;
     bool ok = true;
     cells.forEachRegion([&](int u, int firstColumn, int across, int t) {
         if (!ok) return;
@@ -145,6 +140,11 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
                 return;
             }
         }
+        if (regions_.size() >= 0xffffffffu) {
+            ok = fail(why, "too many regions for a wave schedule");
+            return;
+        }
+        const auto id = static_cast<std::uint32_t>(regions_.size());
         for (int r = 0; r < runs; ++r)
             for (std::uint32_t i = region.runBegin[r]; i < region.runEnd[r]; ++i) {
                 if (step[i] != t) {
@@ -152,48 +152,57 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
                                        " of the wave when its region advances from step " + std::to_string(t));
                     return;
                 }
-                step[i] = advancing;
+                step[i] = static_cast<std::uint16_t>(t + 1);
+                regionAt[i * levels + static_cast<std::size_t>(t)] = id;
             }
-        interior.clear(), face.clear();
-        for (int r = 0; r < runs; ++r)
-            for (std::uint32_t i = region.runBegin[r]; i < region.runEnd[r]; ++i)
-                for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
-                    const std::uint32_t j = partner[e];
-                    if (step[j] == advancing ? j < i : step[j] != t) {
-                        if (step[j] != advancing && step[j] != t + 1) {
-                            ok = fail(why, "particle " + std::to_string(i) + " advances from step " + std::to_string(t) +
-                                               " of the wave while its partner " + std::to_string(j) + " is at step " +
-                                               std::to_string(step[j]));
-                            return;
-                        }
-                        continue;  // computed already: in this region, or when j advanced
-                    }
-                    (pairOf[e] < interiorPairs ? interior : face).push_back(pairOf[e]);
-                }
-        // In the list's order: the force loop then reads the pairs and their histories ascending.
-        std::sort(interior.begin(), interior.end());
-        std::sort(face.begin(), face.end());
-        region.pairs = static_cast<std::uint32_t>(pairIndex_.size());
-        pairIndex_.insert(pairIndex_.end(), interior.begin(), interior.end());
-        region.interiorEnd = static_cast<std::uint32_t>(pairIndex_.size());
-        pairIndex_.insert(pairIndex_.end(), face.begin(), face.end());
-        region.end = static_cast<std::uint32_t>(pairIndex_.size());
         region.wallsBegin = static_cast<std::uint32_t>(wallIndex_.size());
         for (int r = 0; r < runs; ++r)
             wallIndex_.insert(wallIndex_.end(), wallOf.begin() + firstWall[region.runBegin[r]],
                               wallOf.begin() + firstWall[region.runEnd[r]]);
         region.wallsEnd = static_cast<std::uint32_t>(wallIndex_.size());
-        for (int r = 0; r < runs; ++r)
-            std::fill(step.begin() + region.runBegin[r], step.begin() + region.runEnd[r], static_cast<std::uint16_t>(t + 1));
-        if (region.end > region.pairs || runs > 0) regions_.push_back(region);
+        if (runs > 0) regions_.push_back(region);  // (a region without particles has no pairs)
     });
     if (!ok) return false;
     for (std::size_t k = 0; k < particles; ++k)
         if (step[k] != levels_) return fail(why, "particle " + std::to_string(k) + " was not advanced by every step of the wave");
-    if (wallIndex_.size() != walls.size() * static_cast<std::size_t>(levels_))
-        return fail(why, "the wave computes " + std::to_string(wallIndex_.size()) + " wall candidates, not each once a step");
-    if (pairIndex_.size() != pairs.size() * static_cast<std::size_t>(levels_))
-        return fail(why, "the wave computes " + std::to_string(pairIndex_.size()) + " pairs, not every listed pair once a step");
+    // A pair is computed at level t by the first of its particles' regions to advance then (the
+    // other particle is still at step t; when its own region advances, the first is at t + 1). So
+    // the one advancing second must still be at step t when the first advances (its region of
+    // level t - 1 came before), and the one advancing first not yet at t + 2 when the second
+    // does (its region of level t + 1 comes after): else the partners are two steps apart.
+    std::vector<std::uint32_t> count(regions_.size(), 0), interiorCount(regions_.size(), 0);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const std::uint32_t* a = &regionAt[pairs[k].i * levels];
+        const std::uint32_t* b = &regionAt[pairs[k].j * levels];
+        for (std::size_t t = 0; t < levels; ++t) {
+            const bool iFirst = a[t] <= b[t];
+            const std::uint32_t* first = iFirst ? a : b;
+            const std::uint32_t* second = iFirst ? b : a;
+            if ((t > 0 && second[t - 1] > first[t]) || (t + 1 < levels && first[t + 1] < second[t])) {
+                const std::uint32_t late = iFirst ? pairs[k].j : pairs[k].i, early = iFirst ? pairs[k].i : pairs[k].j;
+                return fail(why, "particles " + std::to_string(early) + " and " + std::to_string(late) +
+                                     " are two steps of the wave apart when one of them advances from step " + std::to_string(t));
+            }
+            ++count[first[t]];
+            if (k < interiorPairs) ++interiorCount[first[t]];
+        }
+    }
+    // Each region's pairs in the list's order, interior ones first (they come first in the
+    // list): the force loop then reads the pairs and their histories ascending. A counting sort.
+    std::vector<std::uint32_t> fill(regions_.size());
+    std::uint32_t placed = 0;
+    for (std::size_t r = 0; r < regions_.size(); ++r) {
+        regions_[r].pairs = fill[r] = placed;
+        regions_[r].interiorEnd = placed + interiorCount[r];
+        placed += count[r];
+        regions_[r].end = placed;
+    }
+    pairIndex_.resize(placed);
+    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
+        const std::uint32_t* a = &regionAt[pairs[k].i * levels];
+        const std::uint32_t* b = &regionAt[pairs[k].j * levels];
+        for (std::size_t t = 0; t < levels; ++t) pairIndex_[fill[std::min(a[t], b[t])]++] = k;
+    }
     return true;
 }
 

@@ -104,8 +104,9 @@ public:
     // The regions of a wave over the listed pairs (grouped by i, the first interiorPairs of them
     // interior) of particles in slots [0, particles), listed at `positions`; false (and why) if
     // the particles are not in the cells' order or a pair does not join neighbouring cells. It
-    // follows the wave with a step counter per particle and fails if a region ever advances a
-    // particle whose partner is not at the same step or the next.
+    // notes which region advances each particle at each step of the wave and fails if a particle
+    // does not advance once from every step in turn, or a region advances a particle whose partner
+    // is not at the same step or the next.
     bool make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
               const std::vector<Vec3>& positions, std::size_t particles, std::string* why = nullptr,
               const std::vector<WallCandidate>& walls = {});
