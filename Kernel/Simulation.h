@@ -262,7 +262,7 @@ private:
     std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;         // why the last build has none
     double waveLargestRadius_ = 0;            // at that build
-    std::vector<std::uint64_t> waveNearKeep_;  // a bit per place in the schedule: its pair is near
+    std::vector<std::uint64_t> waveNearKeep_;  // a bit per place in the list: its pair is near
     std::uint64_t waveNearKeepMakes_ = 0;     // the near list it was made from (NearPairs::makes)
     std::uint64_t waveNearKeeps_ = 0;         // made in the run
     std::uint64_t waveNearGivenUp_ = 0;       // waves of the run that went on over the whole list

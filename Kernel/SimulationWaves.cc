@@ -33,23 +33,31 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
 }
 
 // At a list build: the schedule of its waves over every listed pair (the particles are in the
-// order of its cells: reorderParticles).
+// order of its cells: reorderParticles), the list's pairs put in the schedule's order.
 void Simulation::makeWaveSchedule() {
     waveScheduleBuild_ = waveNearKeepMakes_ = 0;
     waveScheduleRefusal_.clear();
     if (waveSteps_ < 2) return;
-    const PairList& list = state_.pairList;
+    if (idOrderedSums_) {  // (its sums follow the list's places: IdOrderedForceSums)
+        waveScheduleRefusal_ = "waves do not run with --id-ordered-sums";
+        return;
+    }
+    PairList& list = state_.pairList;
     const std::optional<WaveCells> cells = waveCellsForBuild(list.reach, &waveScheduleRefusal_);
+    // The list takes the schedule's order of pairs (a few runs of places per region).
+    std::vector<std::uint32_t> order;
     if (cells && waveSchedule_.make(*cells, list.pairs, list.interiorPairs, list.referencePosition,
-                                    state_.particles.size(), &waveScheduleRefusal_, list.wallPairs))
+                                    state_.particles.size(), &waveScheduleRefusal_, list.wallPairs, &order)) {
+        list.reorderPairs(order);
         waveScheduleBuild_ = list.builds;
+    }
     waveLargestRadius_ = 0;
     for (double r : state_.particles.radius) waveLargestRadius_ = std::max(waveLargestRadius_, r);
 }
 
 // The pairs the wave about to run computes (its first drift done, the sweep's points grown by
 // at most `growth` in `frame`): those of the near list (NearPairs), as a bit per place in the
-// build's schedule, where the moves within the wave keep that whole, else all (null). The near list holds
+// list, where the moves within the wave keep that whole, else all (null). The near list holds
 // every pair the sweep can pick while its particles have moved (the sum of the steps' growths,
 // NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within the wave
 // that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if the
@@ -75,12 +83,8 @@ const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double grow
                       list.nearPointScratch, scratch);
     }
     if (waveNearKeepMakes_ != near.makes) {
-        std::vector<std::uint8_t> keep(list.pairs.size(), 0);
-        for (const NearPairs::Pair& pair : near.pairs) keep[pair.index] = 1;
-        const std::vector<std::uint32_t>& index = waveSchedule_.pairIndex();
-        waveNearKeep_.assign((index.size() + 63) / 64, 0);
-        for (std::size_t e = 0; e < index.size(); ++e)
-            waveNearKeep_[e / 64] |= std::uint64_t{keep[index[e]]} << (e % 64);
+        waveNearKeep_.assign((list.pairs.size() + 63) / 64, 0);
+        for (const NearPairs::Pair& pair : near.pairs) waveNearKeep_[pair.index / 64] |= std::uint64_t{1} << (pair.index % 64);
         waveNearKeepMakes_ = near.makes;
         ++waveNearKeeps_;
     }

@@ -223,3 +223,33 @@ TEST(PairList, DriftInOnePassChangesNothing) {
     EXPECT_EQ(particlesThatDiffer(onePass.particles(), passByPass.particles()), 0u)
         << "particles whose state differs from the step done pass by pass";
 }
+
+// Pairs put in another order (the wave schedule's: PairList::reorderPairs) keep their histories;
+// an order that is not a permutation, or that moves a face pair among the interior ones, is refused.
+TEST(PairList, ReorderedPairsKeepTheirHistories) {
+    PairList list;
+    const std::uint32_t n = 7;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        list.pairs.push_back({k, k + 10});
+        ContactHistory h;
+        h.spring = Vec3(k, 2.0 * k, -1.0 * k);
+        h.lastNormalForce = 0.5 * k;
+        h.state = k % 2 ? ContactHistory::touching : ContactHistory::approaching;
+        list.history.push_back(h);
+    }
+    list.interiorPairs = 4;
+    const std::vector<std::uint32_t> order = {2, 0, 3, 1, 6, 4, 5};
+    list.reorderPairs(order);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t from = order[k];
+        EXPECT_EQ(list.pairs[k].i, from);
+        EXPECT_EQ(list.pairs[k].j, from + 10);
+        const ContactHistory h = list.history.get(k);
+        EXPECT_EQ(h.spring, Vec3(from, 2.0 * from, -1.0 * from));
+        EXPECT_EQ(h.lastNormalForce, 0.5 * from);
+        EXPECT_EQ(h.state, from % 2 ? ContactHistory::touching : ContactHistory::approaching);
+    }
+    EXPECT_THROW(list.reorderPairs({0, 1, 2, 3, 4, 5, 5}), Error);     // not a permutation
+    EXPECT_THROW(list.reorderPairs({0, 1, 2, 4, 3, 5, 6}), Error);     // a face pair among the interior ones
+    EXPECT_THROW(list.reorderPairs({0, 1, 2}), Error);                 // too short
+}

@@ -58,16 +58,18 @@ void putInOrder(Bed& b, const WaveCells& cells) {
     std::vector<int> step(n, 0), computedAt(b.pairs.size(), -1), pairsDone(n, 0), degree(n, 0);
     for (const ParticlePair& p : b.pairs) ++degree[p.i], ++degree[p.j];
     for (const WaveRegion& r : regions) {
-        for (std::uint32_t e = r.pairs; e < r.end; ++e) {
-            const std::uint32_t k = s.pairIndex()[e];
-            if ((k < interiorPairs) != (e < r.interiorEnd)) return ::testing::AssertionFailure() << "pair " << k << " in the wrong group";
-            const ParticlePair& p = b.pairs[k];
-            if (step[p.i] != r.level || step[p.j] != r.level)
-                return ::testing::AssertionFailure() << "pair " << k << " computed at step " << r.level << " with its particles at "
-                                                     << step[p.i] << " and " << step[p.j];
-            if (computedAt[k] != r.level - 1) return ::testing::AssertionFailure() << "pair " << k << " computed twice or skipped";
-            computedAt[k] = r.level;
-            ++pairsDone[p.i], ++pairsDone[p.j];
+        for (std::uint32_t u = r.runs; u < r.end; ++u) {
+            const PlaceRun run = s.placeRuns()[u];
+            for (std::uint32_t k = run.begin; k < run.end; ++k) {
+                if ((k < interiorPairs) != (u < r.interiorEnd)) return ::testing::AssertionFailure() << "pair " << k << " in the wrong group";
+                const ParticlePair& p = b.pairs[k];
+                if (step[p.i] != r.level || step[p.j] != r.level)
+                    return ::testing::AssertionFailure() << "pair " << k << " computed at step " << r.level << " with its particles at "
+                                                         << step[p.i] << " and " << step[p.j];
+                if (computedAt[k] != r.level - 1) return ::testing::AssertionFailure() << "pair " << k << " computed twice or skipped";
+                computedAt[k] = r.level;
+                ++pairsDone[p.i], ++pairsDone[p.j];
+            }
         }
         for (int run = 0; run < 2; ++run)
             for (std::uint32_t i = r.runBegin[run]; i < r.runEnd[run]; ++i) {
@@ -104,6 +106,26 @@ TEST(WaveSchedule, EveryAdvanceFindsItsPairsComputedAtItsStep) {
         ASSERT_TRUE(s.make(*cells, b.pairs, interior, b.x, b.x.size(), &why)) << why;
         EXPECT_TRUE(replaysAsSteps(s.regions(), s, b, interior)) << c.lengthX << " x " << c.lengthY << ", " << c.levels << " steps, "
                                                     << cells->strips() << " strips";
+        // The same with the pairs in the schedule's order: a permutation that keeps the interior
+        // pairs first, and fewer runs of places than the list's own order needs.
+        std::vector<std::uint32_t> order;
+        WaveSchedule ordered;
+        ASSERT_TRUE(ordered.make(*cells, b.pairs, interior, b.x, b.x.size(), &why, {}, &order)) << why;
+        ASSERT_EQ(order.size(), b.pairs.size());
+        std::vector<bool> seen(order.size(), false);
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            ASSERT_LT(order[k], order.size());
+            ASSERT_FALSE(seen[order[k]]) << "place " << order[k] << " twice";
+            seen[order[k]] = true;
+            ASSERT_EQ(k < interior, order[k] < interior) << "place " << k;
+        }
+        Bed reordered = b;
+        for (std::size_t k = 0; k < order.size(); ++k) reordered.pairs[k] = b.pairs[order[k]];
+        EXPECT_TRUE(replaysAsSteps(ordered.regions(), ordered, reordered, interior))
+            << c.lengthX << " x " << c.lengthY << ", " << c.levels << " steps, in the schedule's order";
+        if (c.levels > 1) {
+            EXPECT_LT(ordered.placeRuns().size(), s.placeRuns().size());
+        }
     }
 }
 

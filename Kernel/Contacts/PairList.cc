@@ -263,6 +263,23 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     ++builds;
 }
 
+void PairList::reorderPairs(const std::vector<std::uint32_t>& order) {
+    if (order.size() != pairs.size()) throw Error("PairList::reorderPairs: an order of " + std::to_string(order.size()) +
+                                                  " places for " + std::to_string(pairs.size()) + " pairs");
+    for (std::size_t k = 0; k < interiorPairs; ++k)
+        if (order[k] >= interiorPairs) throw Error("PairList::reorderPairs: the order moves a face pair among the interior ones");
+    std::vector<bool> seen(order.size(), false);
+    for (std::uint32_t from : order) {
+        if (from >= order.size() || seen[from]) throw Error("PairList::reorderPairs: the order is not a permutation");
+        seen[from] = true;
+    }
+    std::vector<ParticlePair> placed(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) placed[k] = pairs[order[k]];
+    pairs.swap(placed);
+    history.permute(order);
+    near.made = false;
+}
+
 // A particle farther than the reach from every periodic face cannot cross one before the next
 // build: it would have moved reach/2 first (needsRebuild). So a pair of two such particles whose
 // direct difference is its nearest image now (within half the box along every periodic axis)

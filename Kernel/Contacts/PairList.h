@@ -191,6 +191,11 @@ public:
     // their histories. The reference positions are dropped, which forces that rebuild.
     void followPermutation(const std::vector<std::size_t>& order);
 
+    // The pairs take the order `order` (new place k holds the pair and history at place
+    // order[k]; the first interiorPairs places keep interior pairs: WaveSchedule::make's order),
+    // an array at a time. Unmakes the near list.
+    void reorderPairs(const std::vector<std::uint32_t>& order);
+
     // The particle in slot `removed` is gone and the last one, `last`, took its slot
     // (ParticleStore::removeBySwap): the removed particle's pairs are dropped and the moved
     // one's follow it, so that a rebuild still finds every history by the right ids. Forces that

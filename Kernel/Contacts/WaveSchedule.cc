@@ -79,9 +79,9 @@ std::vector<std::size_t> WaveCells::order(const std::vector<Vec3>& positions) co
 
 bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
                         const std::vector<Vec3>& positions, std::size_t particles, std::string* why,
-                        const std::vector<WallCandidate>& walls) {
+                        const std::vector<WallCandidate>& walls, std::vector<std::uint32_t>* pairOrder) {
     regions_.clear();
-    pairIndex_.clear();
+    placeRuns_.clear();
     wallIndex_.clear();
     levels_ = cells.levels();
     if (positions.size() < particles) return fail(why, "fewer positions than particles");
@@ -170,10 +170,21 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     // the one advancing second must still be at step t when the first advances (its region of
     // level t - 1 came before), and the one advancing first not yet at t + 2 when the second
     // does (its region of level t + 1 comes after): else the partners are two steps apart.
-    std::vector<std::uint32_t> count(regions_.size(), 0), interiorCount(regions_.size(), 0);
+    // The pairs' order, if asked for (pairOrder): interior pairs first, then by the regions that
+    // compute the pair at the wave's steps in turn, the first step's first, so that the pairs of a
+    // region that went through the same regions before it take one run of places. Sorted by the
+    // first step's region (a counting sort), then by a key of hashes of the later steps' regions,
+    // 9 bits each for waves of 8 (those of longer waves share the 64 bits: a pair's region at a
+    // step has only a few others to be told from, those of the pairs that shared its regions so
+    // far), ties in the list's order. The keys are made in the pass that checks the pairs.
+    const bool ordering = pairOrder != nullptr;
+    const std::size_t bits = levels > 1 ? std::max<std::size_t>(1, 64 / (levels - 1)) : 64;
+    std::vector<std::uint32_t> firstRegion(ordering ? pairs.size() : 0);
+    std::vector<std::uint64_t> later(ordering ? pairs.size() : 0);
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const std::uint32_t* a = &regionAt[pairs[k].i * levels];
         const std::uint32_t* b = &regionAt[pairs[k].j * levels];
+        std::uint64_t key = 0;
         for (std::size_t t = 0; t < levels; ++t) {
             const bool iFirst = a[t] <= b[t];
             const std::uint32_t* first = iFirst ? a : b;
@@ -183,25 +194,71 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
                 return fail(why, "particles " + std::to_string(early) + " and " + std::to_string(late) +
                                      " are two steps of the wave apart when one of them advances from step " + std::to_string(t));
             }
-            ++count[first[t]];
-            if (k < interiorPairs) ++interiorCount[first[t]];
+            if (ordering && t > 0 && t * bits <= 64)
+                key |= ((first[t] * 0x9e3779b97f4a7c15ull) >> (64 - bits)) << (64 - t * bits);
+        }
+        if (ordering) firstRegion[k] = std::min(a[0], b[0]), later[k] = key;
+    }
+    std::vector<std::uint32_t> order(pairs.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (ordering) {
+        std::vector<std::uint32_t> start(regions_.size() + 1, 0);
+        for (std::uint32_t r : firstRegion) ++start[r + 1];
+        std::partial_sum(start.begin(), start.end(), start.begin());
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t k = 0; k < pairs.size(); ++k) order[fill[firstRegion[k]]++] = k;  // (ascending within)
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> bucket;  // (a region's pairs, sorted in the cache)
+        for (std::size_t r = 0; r < regions_.size(); ++r) {
+            bucket.clear();
+            for (std::uint32_t e = start[r]; e < start[r + 1]; ++e) bucket.emplace_back(later[order[e]], order[e]);
+            std::sort(bucket.begin(), bucket.end());
+            for (std::uint32_t e = start[r]; e < start[r + 1]; ++e) order[e] = bucket[e - start[r]].second;
+        }
+        std::vector<std::uint32_t> sorted(pairs.size());
+        std::size_t placedInterior = 0, placedFace = interiorPairs;
+        for (std::uint32_t k : order) sorted[k < interiorPairs ? placedInterior++ : placedFace++] = k;
+        order.swap(sorted);
+        *pairOrder = order;
+        std::vector<std::uint64_t>().swap(later);  // (the memory back before the runs are found)
+        std::vector<std::uint32_t>().swap(firstRegion);
+    }
+    // Each region's runs of places (new places, in the order above), ascending, broken where the
+    // interior pairs end: found in one pass over the pairs (a region's open run grows while its
+    // pairs follow each other), then laid out region after region.
+    struct OpenRun {
+        std::uint32_t region, begin, end;
+    };
+    std::vector<OpenRun> found;
+    constexpr std::uint32_t none = 0xffffffffu;
+    std::vector<std::uint32_t> open(regions_.size(), none), openEnd(regions_.size(), none), perRegion(regions_.size() + 1, 0);
+    for (std::uint32_t k = 0; k < order.size(); ++k) {
+        const ParticlePair& p = pairs[order[k]];
+        for (std::size_t t = 0; t < levels; ++t) {
+            const std::uint32_t r = std::min(regionAt[p.i * levels + t], regionAt[p.j * levels + t]);
+            if (openEnd[r] != k || k == interiorPairs) {
+                if (open[r] != none) found[open[r]].end = openEnd[r];
+                open[r] = static_cast<std::uint32_t>(found.size());
+                found.push_back({r, k, k + 1});
+                ++perRegion[r + 1];
+            }
+            openEnd[r] = k + 1;
         }
     }
-    // Each region's pairs in the list's order, interior ones first (they come first in the
-    // list): the force loop then reads the pairs and their histories ascending. A counting sort.
-    std::vector<std::uint32_t> fill(regions_.size());
-    std::uint32_t placed = 0;
+    for (std::size_t r = 0; r < regions_.size(); ++r)
+        if (open[r] != none) found[open[r]].end = openEnd[r];
+    std::partial_sum(perRegion.begin(), perRegion.end(), perRegion.begin());
+    placeRuns_.resize(found.size());
     for (std::size_t r = 0; r < regions_.size(); ++r) {
-        regions_[r].pairs = fill[r] = placed;
-        regions_[r].interiorEnd = placed + interiorCount[r];
-        placed += count[r];
-        regions_[r].end = placed;
+        regions_[r].runs = regions_[r].interiorEnd = perRegion[r];
+        regions_[r].end = perRegion[r + 1];
     }
-    pairIndex_.resize(placed);
-    for (std::uint32_t k = 0; k < pairs.size(); ++k) {
-        const std::uint32_t* a = &regionAt[pairs[k].i * levels];
-        const std::uint32_t* b = &regionAt[pairs[k].j * levels];
-        for (std::size_t t = 0; t < levels; ++t) pairIndex_[fill[std::min(a[t], b[t])]++] = k;
+    for (const OpenRun& run : found) {
+        WaveRegion& region = regions_[run.region];
+        placeRuns_[region.interiorEnd++] = {run.begin, run.end};  // (interiorEnd: the next place for now)
+    }
+    for (WaveRegion& region : regions_) {  // (its runs ascending: the interior ones first)
+        region.interiorEnd = region.runs;
+        while (region.interiorEnd < region.end && placeRuns_[region.interiorEnd].begin < interiorPairs) ++region.interiorEnd;
     }
     return true;
 }

@@ -88,12 +88,18 @@ private:
     std::vector<int> stripStart_;  // first column of each strip, and columns_ at the end
 };
 
+// A run of places in the pair list, [begin, end).
+struct PlaceRun {
+    std::uint32_t begin = 0, end = 0;
+};
+
 // One advance of a region: its particles (up to two runs of slots) from step `level` of the wave
-// to the next, after the listed pairs it computes at that step, pairIndex()[pairs, end): those
-// before interiorEnd are interior pairs (PairList::interiorPairs), the rest need the periodic
-// image; and its particles' wall candidates, wallIndex()[wallsBegin, wallsEnd).
+// to the next, after the listed pairs it computes at that step, the places of the runs
+// placeRuns()[runs, end): those before interiorEnd hold interior pairs (PairList::interiorPairs),
+// the rest pairs that need the periodic image; and its particles' wall candidates,
+// wallIndex()[wallsBegin, wallsEnd).
 struct WaveRegion {
-    std::uint32_t pairs = 0, interiorEnd = 0, end = 0;
+    std::uint32_t runs = 0, interiorEnd = 0, end = 0;
     std::uint32_t wallsBegin = 0, wallsEnd = 0;
     std::uint32_t runBegin[2] = {0, 0}, runEnd[2] = {0, 0};
     int level = 0;
@@ -101,28 +107,33 @@ struct WaveRegion {
 
 class WaveSchedule {
 public:
-    // The regions of a wave over the listed pairs (grouped by i, the first interiorPairs of them
-    // interior) of particles in slots [0, particles), listed at `positions`; false (and why) if
-    // the particles are not in the cells' order or a pair does not join neighbouring cells. It
-    // notes which region advances each particle at each step of the wave and fails if a particle
-    // does not advance once from every step in turn, or a region advances a particle whose partner
-    // is not at the same step or the next.
+    // The regions of a wave over the listed pairs (the first interiorPairs of them interior) of
+    // particles in slots [0, particles), listed at `positions`; false (and why) if the particles
+    // are not in the cells' order or a pair does not join neighbouring cells. It notes which
+    // region advances each particle at each step of the wave and fails if a particle does not
+    // advance once from every step in turn, or a region advances a particle whose partner is not
+    // at the same step or the next.
+    // pairOrder: if given, the order of the pairs that makes each region's pairs a few runs of
+    // places (new place k holds the pair at place pairOrder[k]; the interior pairs stay first),
+    // which the caller must give the list (PairList::reorderPairs) before the schedule is used:
+    // its runs are of the new places. Without it, the runs are of the places as they are.
     bool make(const WaveCells& cells, const std::vector<ParticlePair>& pairs, std::size_t interiorPairs,
               const std::vector<Vec3>& positions, std::size_t particles, std::string* why = nullptr,
-              const std::vector<WallCandidate>& walls = {});
+              const std::vector<WallCandidate>& walls = {}, std::vector<std::uint32_t>* pairOrder = nullptr);
 
     const std::vector<WaveRegion>& regions() const { return regions_; }
-    const std::vector<std::uint32_t>& pairIndex() const { return pairIndex_; }
+    const std::vector<PlaceRun>& placeRuns() const { return placeRuns_; }
     const std::vector<std::uint32_t>& wallIndex() const { return wallIndex_; }
     int levels() const { return levels_; }
     std::size_t bytes() const {
-        return regions_.capacity() * sizeof(WaveRegion) +
-               (pairIndex_.capacity() + wallIndex_.capacity()) * sizeof(std::uint32_t);
+        return regions_.capacity() * sizeof(WaveRegion) + placeRuns_.capacity() * sizeof(PlaceRun) +
+               wallIndex_.capacity() * sizeof(std::uint32_t);
     }
 
 private:
     std::vector<WaveRegion> regions_;
-    std::vector<std::uint32_t> pairIndex_, wallIndex_;
+    std::vector<PlaceRun> placeRuns_;
+    std::vector<std::uint32_t> wallIndex_;
     int levels_ = 0;
 };
 
