@@ -71,12 +71,11 @@ const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double grow
     NearPairs& near = list.near;
     const ParticleStore& p = state_.particles;
     const double dt = state_.settings.timeStep;
-    const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = 0.5 * nearSkin * (1 - 1e-9);
+    const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = nearAllowance(nearSkin);
     const double speed = 2 * list.maxSpeed + state_.gravity.norm() * waveSteps_ * dt + frame.norm();
     const double wave = (waveSteps_ + 1) * std::max(growth, 1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
     if (!(nearSkin > 0 && wave < nearLimit)) return nullptr;
-    const bool whole = near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
-                       near.listed == list.pairs.size() && near.skin == nearSkin && near.moved + wave < nearLimit;
+    const bool whole = nearPairsAreCurrent(list, nearSkin) && near.moved + wave < nearLimit;
     if (!whole) {
         SweptPairs scratch;
         makeNearPairs(list, p.position.data(), p.size(), p.radius.data(), nearSkin, PeriodicImage(state_.domain),
@@ -163,7 +162,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
     // step's but if the list was made at its positions (useNearPairs).
     const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
-    const double nearMoved = list.near.moved, nearLimit = 0.5 * list.near.skin * (1 - 1e-9);
+    const double nearMoved = list.near.moved, nearLimit = nearAllowance(list.near.skin);
     std::array<double, 256> levelGrowth{};  // (waves of at most 255 steps: setWaves)
     levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
     double growth = drifted.growth;

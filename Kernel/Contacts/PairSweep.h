@@ -346,19 +346,28 @@ inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& 
 // So the near list holds every pair the sweep would pick while moved + growth < skin / 2 (a
 // billionth less, for the rounding of the tests). A change of the list unmakes it; a near list
 // made now is usable if a step's growth is below skin / 2 (else the whole list is swept).
+// The sum of growths a near list of this skin holds for (a billionth under half the skin).
+inline double nearAllowance(double skin) { return 0.5 * skin * (1 - 1e-9); }
+
+// The near list is made, of the list as it is now (a build or a relisting changes its pairs),
+// with this skin.
+inline bool nearPairsAreCurrent(const PairList& list, double skin) {
+    const NearPairs& near = list.near;
+    return near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
+           near.listed == list.pairs.size() && near.skin == skin;
+}
+
 inline bool useNearPairs(PairList& list, double growth) {
     NearPairs& near = list.near;
     const double skin = list.nearSkinFraction * list.skin;
-    if (!(skin > 0) || !(growth < 0.5 * skin * (1 - 1e-9))) {
+    if (!(skin > 0) || !(growth < nearAllowance(skin))) {
         near.made = false;
         return false;
     }
-    if (near.made && (near.builds != list.builds || near.relisted != list.relistedParticles ||
-                      near.listed != list.pairs.size() || near.skin != skin))
-        near.made = false;
+    if (!nearPairsAreCurrent(list, skin)) near.made = false;
     if (near.made) {
         near.moved += growth;
-        if (!(near.moved + growth < 0.5 * skin * (1 - 1e-9))) near.made = false;
+        if (!(near.moved + growth < nearAllowance(skin))) near.made = false;
     }
     return true;
 }
