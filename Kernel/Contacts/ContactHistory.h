@@ -90,13 +90,6 @@ public:
         states_.push_back(h.state);
         if (withWarmStarts_) warmPoints_.push_back(h.warmPoint), warmMultipliers_.push_back(h.warmMultiplier);
     }
-    // Place k takes the history at place order[k] (a permutation), one array at a time (the
-    // copy of one array at most beside the list).
-    void permute(const std::vector<std::uint32_t>& order) {
-        gather(forces_, order);
-        gather(states_, order);
-        if (withWarmStarts_) gather(warmPoints_, order), gather(warmMultipliers_, order);
-    }
     // An empty list of the same kind (with warm starts if this one has them).
     ContactHistories emptyLike() const {
         ContactHistories h;
@@ -105,12 +98,6 @@ public:
     }
 
 private:
-    template <class T>
-    static void gather(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
-        std::vector<T> placed(order.size());
-        for (std::size_t k = 0; k < order.size(); ++k) placed[k] = values[order[k]];
-        values.swap(placed);
-    }
     bool withWarmStarts_ = false;
     std::vector<Vec3> warmPoints_;
     std::vector<double> warmMultipliers_;

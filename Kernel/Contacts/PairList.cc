@@ -268,15 +268,29 @@ void PairList::reorderPairs(const std::vector<std::uint32_t>& order) {
                                                   " places for " + std::to_string(pairs.size()) + " pairs");
     for (std::size_t k = 0; k < interiorPairs; ++k)
         if (order[k] >= interiorPairs) throw Error("PairList::reorderPairs: the order moves a face pair among the interior ones");
-    std::vector<bool> seen(order.size(), false);
-    for (std::uint32_t from : order) {
-        if (from >= order.size() || seen[from]) throw Error("PairList::reorderPairs: the order is not a permutation");
-        seen[from] = true;
+    constexpr std::uint32_t unplaced = 0xffffffffu;
+    std::vector<std::uint32_t> placeOf(order.size(), unplaced);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        if (order[k] >= order.size() || placeOf[order[k]] != unplaced)
+            throw Error("PairList::reorderPairs: the order is not a permutation (place " + std::to_string(k) + ")");
+        placeOf[order[k]] = static_cast<std::uint32_t>(k);
     }
+    // The histories other than a new pair's (the few that touch or are about to: a copy of them,
+    // not of the whole array) go to their new places; the rest start anew, as they were.
+    const ContactHistory fresh;
+    std::vector<std::pair<std::uint32_t, ContactHistory>> kept;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const ContactHistory h = history.get(k);
+        if (h.state != fresh.state || h.spring != fresh.spring || h.lastNormalForce != fresh.lastNormalForce ||
+            h.warmPoint != fresh.warmPoint || h.warmMultiplier != fresh.warmMultiplier)
+            kept.emplace_back(placeOf[k], h);
+    }
+    std::vector<std::uint32_t>().swap(placeOf);
     std::vector<ParticlePair> placed(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) placed[k] = pairs[order[k]];
     pairs.swap(placed);
-    history.permute(order);
+    history.assign(pairs.size());
+    for (const auto& [place, h] : kept) history.set(place, h);
     near.made = false;
 }
 

@@ -192,8 +192,8 @@ public:
     void followPermutation(const std::vector<std::size_t>& order);
 
     // The pairs take the order `order` (new place k holds the pair and history at place
-    // order[k]; the first interiorPairs places keep interior pairs: WaveSchedule::make's order),
-    // an array at a time. Unmakes the near list.
+    // order[k]; the first interiorPairs places keep interior pairs: WaveSchedule::make's order).
+    // Unmakes the near list.
     void reorderPairs(const std::vector<std::uint32_t>& order);
 
     // The particle in slot `removed` is gone and the last one, `last`, took its slot
