@@ -387,7 +387,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
-    stepsInWaves_ = waveNearKeeps_ = waveNearGivenUp_ = 0;
+    stepsInWaves_ = waveNearRunsFound_ = waveNearGivenUp_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
             const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;

@@ -226,7 +226,7 @@ private:
     // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
-    const std::uint64_t* nearPairsForWave(const Vec3& frame, double growth);
+    const PlaceRun* nearPairsForWave(const Vec3& frame, double growth);
     void continueWavesAfterRestart();
     void reportWaves(std::ostream& out, std::uint64_t steps) const;
     std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
@@ -262,9 +262,9 @@ private:
     std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;         // why the last build has none
     double waveLargestRadius_ = 0;            // at that build
-    std::vector<std::uint64_t> waveNearKeep_;  // a bit per place in the list: its pair is near
-    std::uint64_t waveNearKeepMakes_ = 0;     // the near list it was made from (NearPairs::makes)
-    std::uint64_t waveNearKeeps_ = 0;         // made in the run
+    std::vector<PlaceRun> waveNearRuns_;    // per run of the schedule, its pairs' places in the near list
+    std::uint64_t waveNearRunsMake_ = 0;     // the near list they were found in (NearPairs::makes)
+    std::uint64_t waveNearRunsFound_ = 0;         // found in the run
     std::uint64_t waveNearGivenUp_ = 0;       // waves of the run that went on over the whole list
     double lastDisplacement_ = 0;          // the largest since the build, of the positions now
     std::uint64_t stepsInWaves_ = 0;

@@ -35,7 +35,7 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
 // At a list build: the schedule of its waves over every listed pair (the particles are in the
 // order of its cells: reorderParticles), the list's pairs put in the schedule's order.
 void Simulation::makeWaveSchedule() {
-    waveScheduleBuild_ = waveNearKeepMakes_ = 0;
+    waveScheduleBuild_ = waveNearRunsMake_ = 0;
     waveScheduleRefusal_.clear();
     if (waveSteps_ < 2) return;
     if (idOrderedSums_) {  // (its sums follow the list's places: IdOrderedForceSums)
@@ -56,17 +56,18 @@ void Simulation::makeWaveSchedule() {
 }
 
 // The pairs the wave about to run computes (its first drift done, the sweep's points grown by
-// at most `growth` in `frame`): those of the near list (NearPairs), as a bit per place in the
-// list, where the moves within the wave keep that whole, else all (null). The near list holds
+// at most `growth` in `frame`): those of the near list (NearPairs), as the near pairs of each run
+// of the schedule (places in the near list), where the moves within the wave keep that whole,
+// else all (null). The near list holds
 // every pair the sweep can pick while its particles have moved (the sum of the steps' growths,
 // NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within the wave
 // that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if the
 // largest speed doubles (the assumption the list's reach is kept with: waveFits), and checked as
 // the wave goes (integrateWave). The near list is made anew when the prediction does not fit in
-// what is left of it. The force loop gathers the marked pairs of each region in the schedule's
-// order (ContactForceLoop::regionPairs): the forces of the whole list's waves, to the bit, for a
-// sweep of the near pairs alone.
-const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
+// what is left of it. The force loop sweeps each run's near pairs as a single step sweeps the
+// near list (ContactForceLoop::regionPairs): the forces of the whole list's waves, to the bit,
+// for a sweep of the near pairs alone.
+const PlaceRun* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
     PairList& list = state_.pairList;
     NearPairs& near = list.near;
     const ParticleStore& p = state_.particles;
@@ -81,13 +82,21 @@ const std::uint64_t* Simulation::nearPairsForWave(const Vec3& frame, double grow
         makeNearPairs(list, p.position.data(), p.size(), p.radius.data(), nearSkin, PeriodicImage(state_.domain),
                       list.nearPointScratch, scratch);
     }
-    if (waveNearKeepMakes_ != near.makes) {
-        waveNearKeep_.assign((list.pairs.size() + 63) / 64, 0);
-        for (const NearPairs::Pair& pair : near.pairs) waveNearKeep_[pair.index / 64] |= std::uint64_t{1} << (pair.index % 64);
-        waveNearKeepMakes_ = near.makes;
-        ++waveNearKeeps_;
+    if (waveNearRunsMake_ != near.makes) {
+        // The near list is in the list's order: a run of places holds a run of near pairs.
+        const auto at = [&](std::uint32_t place) {
+            return static_cast<std::uint32_t>(
+                std::lower_bound(near.pairs.begin(), near.pairs.end(), place,
+                                 [](const NearPairs::Pair& a, std::uint32_t b) { return a.index < b; }) -
+                near.pairs.begin());
+        };
+        const std::vector<PlaceRun>& runs = waveSchedule_.placeRuns();
+        waveNearRuns_.resize(runs.size());
+        for (std::size_t u = 0; u < runs.size(); ++u) waveNearRuns_[u] = {at(runs[u].begin), at(runs[u].end)};
+        waveNearRunsMake_ = near.makes;
+        ++waveNearRunsFound_;
     }
-    return waveNearKeep_.data();
+    return waveNearRuns_.data();
 }
 
 // Waves go on as in the run that saved: the schedule of the list it kept, and the displacement
@@ -103,8 +112,8 @@ void Simulation::continueWavesAfterRestart() {
 void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
     if (waveSteps_ < 2) return;
     out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
-    if (waveNearKeeps_ > 0)
-        out << ", over the near list (" << waveNearKeeps_ << " of them, the last of " << state_.pairList.near.pairs.size()
+    if (waveNearRunsFound_ > 0)
+        out << ", over the near list (" << waveNearRunsFound_ << " of them, the last of " << state_.pairList.near.pairs.size()
             << " of " << state_.pairList.pairs.size() << " pairs)";
     if (waveNearGivenUp_ > 0)
         out << "; " << waveNearGivenUp_ << " waves went on over the whole list when a particle sped up past the near list";
@@ -161,7 +170,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     const std::uint64_t nearMakes = list.near.makes;
     // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
     // step's but if the list was made at its positions (useNearPairs).
-    const std::uint64_t* near = nearPairsForWave(frame, drifted.growth);
+    const PlaceRun* near = nearPairsForWave(frame, drifted.growth);
     const double nearMoved = list.near.moved, nearLimit = nearAllowance(list.near.skin);
     std::array<double, 256> levelGrowth{};  // (waves of at most 255 steps: setWaves)
     levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;

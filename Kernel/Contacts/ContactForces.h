@@ -267,50 +267,23 @@ public:
     // interior pairs, those near a face, its particles' walls, then the batches applied, so that
     // the region's particles have all their forces of the step before they advance. The pairs are
     // runs of places in the list, swept as a single step sweeps the list.
-    // keep: if given, a bit per place in the list (bit k % 64 of keep[k / 64]): the pairs of the
-    // places whose bit is set alone (a near list's, Simulation::nearPairsForWave), gathered a
-    // chunk at a time, in the runs' order.
+    // nearRuns: if given, the places in the near list (list.near) of each run's near pairs
+    // (Simulation::nearPairsForWave): those alone are swept, as a single step sweeps the near list.
     void regionPairs(PairList& list, const Domain& domain, const WaveSchedule& schedule, const WaveRegion& region,
-                     const std::vector<Wall>& walls, const std::uint64_t* keep = nullptr) {
+                     const std::vector<Wall>& walls, const PlaceRun* nearRuns = nullptr) {
         const PeriodicImage image(domain);
         const SweepPoint* points = list.sweepPointScratch.data();
-        const PlaceRun* runs = schedule.placeRuns().data();
+        const PlaceRun* runs = nearRuns ? nearRuns : schedule.placeRuns().data();
+        const NearPairs* near = nearRuns ? &list.near : nullptr;
         SweptPairs swept;
-        if (keep) {
-            keptContacts<false>(list, runs + region.runs, runs + region.interiorEnd, keep, points, image, swept);
-            keptContacts<true>(list, runs + region.interiorEnd, runs + region.end, keep, points, image, swept);
-        } else {
-            for (std::uint32_t u = region.runs; u < region.interiorEnd; ++u)
-                sweptContacts<false>(list, runs[u].begin, runs[u].end, points, image, swept);
-            for (std::uint32_t u = region.interiorEnd; u < region.end; ++u)
-                sweptContacts<true>(list, runs[u].begin, runs[u].end, points, image, swept);
-        }
+        for (std::uint32_t u = region.runs; u < region.interiorEnd; ++u)
+            sweptContacts<false>(list, runs[u].begin, runs[u].end, points, image, swept, near);
+        for (std::uint32_t u = region.interiorEnd; u < region.end; ++u)
+            sweptContacts<true>(list, runs[u].begin, runs[u].end, points, image, swept, near);
         static const std::vector<PrescribedMotion> noMotions;
         for (std::uint32_t e = region.wallsBegin; e < region.wallsEnd; ++e)
             wallPair(list, schedule.wallIndex()[e], walls, noMotions);
         if constexpr (Law::batched) flush(list);
-    }
-    template <bool nearestImage>
-    void keptContacts(PairList& list, const PlaceRun* run, const PlaceRun* end, const std::uint64_t* keep,
-                      const SweepPoint* points, const PeriodicImage& image, SweptPairs& swept) {
-        std::uint32_t kept[SweptPairs::capacity];
-        std::size_t n = 0;
-        for (; run != end; ++run) {
-            const std::uint32_t from = run->begin, to = run->end;
-            for (std::uint32_t word = from / 64; word <= (to - 1) / 64; ++word) {
-                std::uint64_t bits = keep[word];
-                if (word == from / 64) bits &= ~std::uint64_t{0} << (from % 64);
-                if (word == (to - 1) / 64 && to % 64 != 0) bits &= ~(~std::uint64_t{0} << (to % 64));
-                for (; bits != 0; bits &= bits - 1) {
-                    kept[n++] = 64 * word + static_cast<std::uint32_t>(std::countr_zero(bits));
-                    if (n == SweptPairs::capacity) {
-                        sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
-                        n = 0;
-                    }
-                }
-            }
-        }
-        if (n > 0) sweptContacts<nearestImage>(list, 0, n, points, image, swept, nullptr, kept);
     }
     // Raises the largest speed the skipping of far walls assumes (to one measured since).
     void allowSpeed(double maxSpeed) { closing_ = std::max(closing_, 2 * maxSpeed * dt_); }
