@@ -197,14 +197,13 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                 for (int run = 0; run < 2; ++run) {
                     const std::size_t begin = region.runBegin[run], end = region.runEnd[run];
                     if (begin >= end) continue;
-                    halfKick(p, begin, end, half);
-                    if (last) continue;
-                    std::copy(p.force.begin() + static_cast<std::ptrdiff_t>(begin),
-                              p.force.begin() + static_cast<std::ptrdiff_t>(end),
-                              previousForce_.begin() + static_cast<std::ptrdiff_t>(begin));
+                    if (last) {
+                        halfKick(p, begin, end, half);
+                        continue;
+                    }
                     const DriftPassResult moved =
-                        kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition, state_.gravity,
-                                                frame, dt, list.sweepPointScratch, begin, end);
+                        closeKickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition, state_.gravity,
+                                                     frame, dt, list.sweepPointScratch, begin, end);
                     const double time = state_.time + (region.level + 1) * dt;
                     if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
                     speed2 = std::max(speed2, moved.moves.speed2);

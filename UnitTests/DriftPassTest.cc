@@ -6,6 +6,7 @@
 // PairListTest.cc, DriftInOnePassChangesNothing.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -86,6 +87,41 @@ TEST(DriftPass, EqualsThePassesItStandsIn) {
     EXPECT_TRUE(result.moves.finite);
     EXPECT_LT((result.meanVelocity - velocitySum / static_cast<double>(mobile)).norm(), 1e-14)
         << "the mean velocity of the mobile particles after the kick";
+}
+
+// A wave's advance of a region (SimulationWaves.cc): the end of one step and the start of the
+// next in one pass over some of the slots (from an odd slot, so that lanes and the tail both
+// run), against halfKick, the copy of the forces and the pass that kicks with them.
+TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
+    const Domain domain = someDomain();
+    const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009), frame(0.3, -0.1, 0.05);
+    ParticleStore onePass = someParticles(), byPasses = someParticles();
+    std::vector<Vec3> reference = someParticles().position;
+    for (Vec3& x : reference) domain.wrap(x);
+    const std::size_t first = 3, last = count - 2;
+    std::vector<Vec3> keptOne(count, Vec3(7, 7, 7)), keptByPasses = keptOne;
+    std::vector<SweepPoint> pointsOne(count), pointsByPasses(count);
+    const DriftPassResult one = closeKickDriftAndStartForces(onePass, keptOne, domain, &reference, gravity, frame, dt,
+                                                             pointsOne, first, last);
+
+    halfKick(byPasses, first, last, 0.5 * dt);
+    std::copy(byPasses.force.begin() + first, byPasses.force.begin() + last, keptByPasses.begin() + first);
+    const DriftPassResult three = kickDriftAndStartForces(byPasses, keptByPasses, domain, &reference, gravity, frame,
+                                                          dt, pointsByPasses, first, last);
+
+    EXPECT_TRUE(sameBits(onePass.position, byPasses.position));
+    EXPECT_TRUE(sameBits(onePass.velocity, byPasses.velocity));
+    EXPECT_TRUE(sameBits(onePass.angularVelocity, byPasses.angularVelocity));
+    EXPECT_TRUE(sameBits(onePass.force, byPasses.force));
+    EXPECT_TRUE(sameBits(onePass.torque, byPasses.torque));
+    EXPECT_TRUE(sameBits(keptOne, keptByPasses)) << "the forces kicked with, kept (the slots outside untouched)";
+    EXPECT_EQ(std::memcmp(pointsOne.data(), pointsByPasses.data(), count * sizeof(SweepPoint)), 0);
+    EXPECT_EQ(one.moves.displacement2, three.moves.displacement2);
+    EXPECT_EQ(one.moves.speed2, three.moves.speed2);
+    EXPECT_EQ(one.growth, three.growth);
+    EXPECT_EQ(one.mobile, three.mobile);
+    // (And that the kicks happened at all: the velocities moved from the start's.)
+    EXPECT_FALSE(sameBits(onePass.velocity, someParticles().velocity));
 }
 
 TEST(DriftPass, WithoutAReferenceMeasuresNoDisplacement) {

@@ -42,6 +42,7 @@ struct OneParticle {
     double* w;
     const double* oldForce;
     double* force;
+    double* keptForce;  // Close: the forces kicked with are kept here (previousForce)
     double* torque;
     const double *invMass, *invInertia, *mass, *radius, *reference;
     const std::uint8_t* fixed;
@@ -51,6 +52,9 @@ struct OneParticle {
     Vec3 gravity, frame;
     double half, dt;
 
+    // Close: first the second half kick of the step before, with the same forces and torques
+    // (halfKick's arithmetic), the forces kept.
+    template <bool Close>
     void operator()(std::size_t i, Maxima& m) const {
         using detail::unlessKept;
         const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
@@ -59,6 +63,11 @@ struct OneParticle {
         double* wi = w + 3 * i;
         const double kick = half * invMass[i], turn = half * invInertia[i];
         for (int c = 0; c < 3; ++c) {
+            if constexpr (Close) {
+                vi[c] = unlessKept(vi[c], lanes::multiplyAdd(kick, oldForce[3 * i + c], vi[c]), keep);
+                wi[c] = unlessKept(wi[c], lanes::multiplyAdd(turn, torque[3 * i + c], wi[c]), keep);
+                keptForce[3 * i + c] = oldForce[3 * i + c];
+            }
             vi[c] = unlessKept(vi[c], lanes::multiplyAdd(kick, oldForce[3 * i + c], vi[c]), keep);
             xi[c] = unlessKept(xi[c], lanes::multiplyAdd(dt, vi[c], xi[c]), keep);
             wi[c] = unlessKept(wi[c], lanes::multiplyAdd(turn, torque[3 * i + c], wi[c]), keep);
@@ -155,6 +164,7 @@ inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
 
 // The blocks of eight particles of the pass; returns where the scalar loop goes on.
 // Slots [first, n) while whole groups are left; returns where it stopped.
+template <bool Close>
 std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
                                 std::size_t n) {
     std::size_t i = first;
@@ -180,12 +190,19 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
         __m512d x[3], v[3];
         for (int c = 0; c < 3; ++c) {
             const std::size_t at = 3 * i + 8 * c;
-            v[c] = kick.advance(_mm512_loadu_pd(one.v + at), kick.factor[c], _mm512_loadu_pd(one.oldForce + at), c);
+            const __m512d f = _mm512_loadu_pd(one.oldForce + at), t = _mm512_loadu_pd(one.torque + at);
+            v[c] = _mm512_loadu_pd(one.v + at);
+            __m512d w = _mm512_loadu_pd(one.w + at);
+            if constexpr (Close) {
+                v[c] = kick.advance(v[c], kick.factor[c], f, c);
+                w = kick.advance(w, turn[c], t, c);
+                _mm512_storeu_pd(one.keptForce + at, f);
+            }
+            v[c] = kick.advance(v[c], kick.factor[c], f, c);
             _mm512_storeu_pd(one.v + at, v[c]);
             velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
             x[c] = kick.advance(_mm512_loadu_pd(one.x + at), drift, v[c], c);
-            _mm512_storeu_pd(one.w + at, kick.advance(_mm512_loadu_pd(one.w + at), turn[c],
-                                                      _mm512_loadu_pd(one.torque + at), c));
+            _mm512_storeu_pd(one.w + at, kick.advance(w, turn[c], t, c));
             _mm512_storeu_pd(one.torque + at, zero);
             _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
         }
@@ -234,6 +251,7 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
 // The same for blocks of four particles in AVX2 lanes (Math/FourParticleLanes.h): the kicks,
 // the drift and the forces in storage order, the norms and the sweep points per axis.
 // Slots [first, n) while whole groups are left; returns where it stopped.
+template <bool Close>
 std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
                                 std::size_t n) {
     std::size_t i = first;
@@ -259,11 +277,18 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
         __m256d x[3], v[3];
         for (int c = 0; c < 3; ++c) {
             const std::size_t at = 3 * i + 4 * c;
-            v[c] = lanes::advance(_mm256_loadu_pd(one.v + at), kick[c], _mm256_loadu_pd(one.oldForce + at), moves[c]);
+            const __m256d f = _mm256_loadu_pd(one.oldForce + at), t = _mm256_loadu_pd(one.torque + at);
+            v[c] = _mm256_loadu_pd(one.v + at);
+            __m256d w = _mm256_loadu_pd(one.w + at);
+            if constexpr (Close) {
+                v[c] = lanes::advance(v[c], kick[c], f, moves[c]);
+                w = lanes::advance(w, turn[c], t, moves[c]);
+                _mm256_storeu_pd(one.keptForce + at, f);
+            }
+            v[c] = lanes::advance(v[c], kick[c], f, moves[c]);
             _mm256_storeu_pd(one.v + at, v[c]);
             x[c] = lanes::advance(_mm256_loadu_pd(one.x + at), drift, v[c], moves[c]);
-            _mm256_storeu_pd(one.w + at, lanes::advance(_mm256_loadu_pd(one.w + at), turn[c],
-                                                        _mm256_loadu_pd(one.torque + at), moves[c]));
+            _mm256_storeu_pd(one.w + at, lanes::advance(w, turn[c], t, moves[c]));
             _mm256_storeu_pd(one.torque + at, zero);
             _mm256_storeu_pd(one.force + at, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
         }
@@ -349,18 +374,22 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& pre
     return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, n);
 }
 
-DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3>& previousForce, const Domain& domain,
-                                        const std::vector<Vec3>* reference, const Vec3& gravity,
-                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
-                                        std::size_t first, std::size_t last) {
+namespace {
+
+// The pass over slots [first, last), kicking with oldForce (Close: twice, keeping it in keptForce).
+template <bool Close>
+DriftPassResult driftPass(ParticleStore& p, const double* oldForce, double* keptForce, const Domain& domain,
+                          const std::vector<Vec3>* reference, const Vec3& gravity, const Vec3& frameVelocity, double dt,
+                          std::vector<SweepPoint>& points, std::size_t first, std::size_t last) {
     DriftPassResult result;
     result.moves = {0, 0, true};
     if (first >= last) return result;
     const OneParticle one{p.position[0].data(),
                           p.velocity[0].data(),
                           p.angularVelocity[0].data(),
-                          previousForce[0].data(),
+                          oldForce,
                           p.force[0].data(),
+                          keptForce,
                           p.torque[0].data(),
                           p.invMass.data(),
                           p.invInertia.data(),
@@ -378,11 +407,11 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3
     Maxima m;
     std::size_t i = first;
 #if defined(TALUS_AVX512_LANES)
-    i = inEightParticleLanes(one, domain, p, m, first, last);
+    i = inEightParticleLanes<Close>(one, domain, p, m, first, last);
 #elif defined(TALUS_AVX2_LANES)
-    i = inFourParticleLanes(one, domain, p, m, first, last);
+    i = inFourParticleLanes<Close>(one, domain, p, m, first, last);
 #endif
-    for (; i < last; ++i) one(i, m);
+    for (; i < last; ++i) one.operator()<Close>(i, m);
     result.moves = {std::bit_cast<double>(m.displacement2), std::bit_cast<double>(m.speed2),
                     saneMotion(std::bit_cast<double>(m.speed2), std::bit_cast<double>(m.coordinate))};
     result.growth = std::bit_cast<double>(m.growth);
@@ -391,6 +420,24 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3
     const Vec3 mean = Vec3(m.velocitySum[0], m.velocitySum[1], m.velocitySum[2]) / static_cast<double>(std::max<std::size_t>(m.mobile, 1));
     result.meanVelocity = mean.allFinite() ? mean : Vec3::Zero();
     return result;
+}
+
+}  // namespace
+
+DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3>& previousForce, const Domain& domain,
+                                        const std::vector<Vec3>* reference, const Vec3& gravity,
+                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
+                                        std::size_t first, std::size_t last) {
+    return driftPass<false>(p, previousForce[0].data(), nullptr, domain, reference, gravity, frameVelocity, dt, points,
+                            first, last);
+}
+
+DriftPassResult closeKickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
+                                             const std::vector<Vec3>* reference, const Vec3& gravity,
+                                             const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
+                                             std::size_t first, std::size_t last) {
+    return driftPass<true>(p, p.force[0].data(), previousForce[0].data(), domain, reference, gravity, frameVelocity, dt,
+                           points, first, last);
 }
 
 }  // namespace talus

@@ -58,4 +58,14 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
                                         std::size_t first, std::size_t last);
 
+// The end of a step and the start of the next for slots [first, last) in one pass, where a wave
+// advances a region from one step to the next (Contacts/WaveSchedule.h): the second half kick
+// with the forces and torques in p (halfKick's arithmetic), the forces copied to previousForce,
+// then the pass above with them. The same results, to the bit, as halfKick, the copy and the
+// pass above; the particles' data read and written once instead of three times.
+DriftPassResult closeKickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
+                                             const std::vector<Vec3>* reference, const Vec3& gravity,
+                                             const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
+                                             std::size_t first, std::size_t last);
+
 }  // namespace talus
