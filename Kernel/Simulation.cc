@@ -421,6 +421,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     }
     progress.finish(state_.time, steps);
     if (steps > 0) {
+        if (onRanks()) positionsChangedBetweenSteps_ = static_cast<std::uint64_t>(sumOverRanks(
+                           static_cast<double>(positionsChangedBetweenSteps_)));
         // Rebuilds cost a full neighbour search; boundaries that delete particles force one,
         // those that add or move a few have their pairs relisted.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
@@ -432,6 +434,9 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
         if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
+        if (positionsChangedBetweenSteps_ > 0 && state_.pairList.nearSkinFraction > 0)
+            out << "; particles moved between steps (by hand) found at " << positionsChangedBetweenSteps_
+                << (positionsChangedBetweenSteps_ == 1 ? " step" : " steps") << ": the near list made anew";
         out << std::endl;
         reportWaves(out, steps);
     }
@@ -481,8 +486,10 @@ void Simulation::initialise(bool restarted) {
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
     if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
     if (onRanks()) splitScene();
+    positionsChangedBetweenSteps_ = 0;
     if (restarted) {
         continueWavesAfterRestart();
+        notePositionsLeft(positionSum(state_.particles, state_.particles.owned()));
         return;
     }
 
@@ -490,8 +497,30 @@ void Simulation::initialise(bool restarted) {
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
     computeForces(&records_, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
+    notePositionsLeft(positionSum(state_.particles, state_.particles.owned()));
     writeOutput();
     records_.release();
+}
+
+// The near list (NearPairs) holds while the particles move by the steps' drifts alone: a step
+// that finds the positions other than the last step left them (a driver's hook moved particles
+// by hand) unmakes it, to be made anew at the positions as they are. (The neighbour list
+// itself measures the particles' real displacements: PairList::needsRebuild.)
+void Simulation::notePositionsLeft(std::uint64_t sum) {
+    positionsLeft_ = sum;
+    particlesLeft_ = state_.particles.owned();
+}
+
+void Simulation::checkPositionsFound(std::uint64_t found) {
+    if (positionsLeft_ && *positionsLeft_ == found) return;
+    PairList& list = state_.pairList;
+    // (Counted where the near list would have been swept: particles added, removed or moved by
+    // moveParticleBy change the list, which makes it anew anyway.)
+    if (state_.particles.owned() == particlesLeft_ && list.noted().empty() &&
+        nearPairsAreCurrent(list, list.nearSkinFraction * list.skin))
+        ++positionsChangedBetweenSteps_;
+    list.near.made = false;
+    positionsChangedThisStep_ = true;  // (on ranks, the ghosts of the moved particles moved too)
 }
 
 void Simulation::computeForces(ContactRecords* records, OverlapCheck check, const DriftPassResult* drifted) {
@@ -631,10 +660,12 @@ void Simulation::integrate(bool recordContacts) {
         drifted = kickDriftAndStartForces(p, previousForce_, state_.domain,
                                           list.comparable(p) ? &list.referencePosition : nullptr, state_.gravity,
                                           frame, dt, list.sweepPointScratch);
+        checkPositionsFound(drifted->positionsBefore);
         list.sweepPointsGrowth = drifted->growth;
         driftFrame_ = drifted->meanVelocity;
         lastDisplacement_ = std::sqrt(drifted->moves.displacement2);
     } else {
+        checkPositionsFound(positionSum(p, owned));
         driftFrame_.reset();
         halfKickAndDrift(p, owned, half, dt);
         if (p.hasShapes()) turnShapedParticles(half, dt);
@@ -648,6 +679,7 @@ void Simulation::integrate(bool recordContacts) {
                   recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep, drifted ? &*drifted : nullptr);
     halfKick(p, p.owned(), half);
     if (p.hasShapes()) turnShapedParticles(half, 0);
+    notePositionsLeft(drifted ? drifted->positionsAfter : positionSum(p, p.owned()));
 }
 
 // Particles/DriftPass.h: where nothing but the particles' own motion happens between the drift

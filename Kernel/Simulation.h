@@ -228,6 +228,8 @@ private:
     void makeWaveSchedule();
     const PlaceRun* nearPairsForWave(const Vec3& frame, double growth);
     void continueWavesAfterRestart();
+    void checkPositionsFound(std::uint64_t found);
+    void notePositionsLeft(std::uint64_t sum);
     void reportWaves(std::ostream& out, std::uint64_t steps) const;
     std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
     std::uint64_t saveEvery() const;
@@ -267,6 +269,13 @@ private:
     std::uint64_t waveNearRunsFound_ = 0;         // found in the run
     std::uint64_t waveNearGivenUp_ = 0;       // waves of the run that went on over the whole list
     double lastDisplacement_ = 0;          // the largest since the build, of the positions now
+    // positionSum (Particles/DriftPass.h) of the positions the last step or the set-up left (of
+    // that many owned particles), and the steps that found other positions of as many particles
+    // (moved by hand between steps: the near list unmade).
+    std::optional<std::uint64_t> positionsLeft_;
+    std::size_t particlesLeft_ = 0;
+    std::uint64_t positionsChangedBetweenSteps_ = 0;
+    bool positionsChangedThisStep_ = false;  // (on ranks, for all ranks to unmake their near lists)
     std::uint64_t stepsInWaves_ = 0;
     std::unique_ptr<CommandLine> commandLine_;
     struct KeptValue {

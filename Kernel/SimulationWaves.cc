@@ -156,6 +156,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     const Vec3 frame = sweepFrame();
     DriftPassResult drifted = kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition,
                                                       state_.gravity, frame, dt, list.sweepPointScratch);
+    checkPositionsFound(drifted.positionsBefore);
     state_.time += dt;
     ++state_.step;
     lastDisplacement_ = std::sqrt(drifted.moves.displacement2);
@@ -165,6 +166,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
         driftFrame_ = drifted.meanVelocity;
         computeForces(nullptr, OverlapCheck::withNextStep, &drifted);
         halfKick(p, p.owned(), half);
+        notePositionsLeft(drifted.positionsAfter);
         return 1;
     }
     const std::uint64_t nearMakes = list.near.makes;
@@ -179,6 +181,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2, finalDisplacement2 = 0;
     double velocitySum[3] = {0, 0, 0};
     std::size_t mobile = 0;
+    std::uint64_t positionsAfter = 0;  // (positionSum of where the last drift leaves the particles)
     ContactSummary early;  // of the wave's steps before its last (only their largest overlap counts)
     summary_ = ContactSummary{};
     if (recordContacts) records_.start(/*keepEach*/ state_.settings.writeFstat, p.owned());
@@ -231,6 +234,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                         finalDisplacement2 = std::max(finalDisplacement2, moved.moves.displacement2);
                         for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];
                         mobile += moved.mobile;
+                        positionsAfter += moved.positionsAfter;
                     }
                 }
             }
@@ -244,6 +248,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     // the particles are, as a single step leaves it (and a restart finds it: largestDisplacement).
     list.maxSpeed = std::sqrt(speed2);
     lastDisplacement_ = std::sqrt(finalDisplacement2);
+    notePositionsLeft(positionsAfter);
     const Vec3 mean = Vec3(velocitySum[0], velocitySum[1], velocitySum[2]) / static_cast<double>(std::max<std::size_t>(mobile, 1));
     driftFrame_ = mean.allFinite() ? mean : Vec3::Zero();
     if (near)

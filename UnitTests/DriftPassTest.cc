@@ -87,6 +87,9 @@ TEST(DriftPass, EqualsThePassesItStandsIn) {
     EXPECT_TRUE(result.moves.finite);
     EXPECT_LT((result.meanVelocity - velocitySum / static_cast<double>(mobile)).norm(), 1e-14)
         << "the mean velocity of the mobile particles after the kick";
+    EXPECT_EQ(result.positionsBefore, positionSum(someParticles(), count)) << "the checksum of the positions found";
+    EXPECT_EQ(result.positionsAfter, positionSum(byPasses, count)) << "and of those left (drifted and wrapped)";
+    EXPECT_NE(result.positionsBefore, result.positionsAfter);
 }
 
 // A wave's advance of a region (SimulationWaves.cc): the end of one step and the start of the
@@ -98,7 +101,7 @@ TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     ParticleStore onePass = someParticles(), byPasses = someParticles();
     std::vector<Vec3> reference = someParticles().position;
     for (Vec3& x : reference) domain.wrap(x);
-    const std::size_t first = 3, last = count - 2;
+    const std::size_t first = 3, last = onePass.size() - 1;  // (lanes from an odd slot, and a tail of one)
     std::vector<Vec3> keptOne(count, Vec3(7, 7, 7)), keptByPasses = keptOne;
     std::vector<SweepPoint> pointsOne(count), pointsByPasses(count);
     const DriftPassResult one = closeKickDriftAndStartForces(onePass, keptOne, domain, &reference, gravity, frame, dt,

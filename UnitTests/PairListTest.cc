@@ -188,6 +188,48 @@ TEST(PairList, NearListChangesNothing) {
         << "particles whose state differs from the whole list's sweep";
 }
 
+// A driver's hook that moves a particle by hand between steps (here 0.045 towards a sphere 0.05
+// away: outside the near list, within the neighbour list, which it keeps) and sends it on towards
+// that sphere: the next step finds the positions changed and makes the near list anew
+// (Simulation::checkPositionsFound), so the spheres collide as with the whole list, to the bit.
+// (Without that check the near list missed the pair: the spheres overlapped by 0.025 before it
+// was remade, against 0.002 with the whole list.)
+TEST(PairList, NearListFollowsParticlesMovedByHand) {
+    const auto run = [](Scene& s, double nearSkinFraction) {
+        s.setup = [nearSkinFraction](Scene& scene) {
+            scene.setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
+            const auto grain =
+                scene.addSpecies("grain", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25));
+            scene.addParticle(Vec3(0, 0, 0), 0.5, grain);
+            scene.addParticle(Vec3(1.05, 0, 0), 0.5, grain);
+            scene.state().pairList.nearSkinFraction = nearSkinFraction;
+        };
+        s.setSkin(0.2);
+        int step = 0;
+        double closest = INFINITY;
+        s.afterStep = [&](Scene& scene) {
+            ParticleStore& p = scene.particles();
+            const std::size_t a = scene.slotOf(0), b = scene.slotOf(1);
+            if (++step == 10) {
+                p.position[b].x() -= 0.045;
+                p.velocity[b].x() = -1;
+            }
+            closest = std::min(closest, (p.position[b] - p.position[a]).norm() - 1);
+        };
+        s.run(1e-4, 400e-4);
+        return closest;
+    };
+    Scene nearList, wholeList;
+    const double nearClosest = run(nearList, 0.15), wholeClosest = run(wholeList, 0);
+    EXPECT_GT(nearList.pairList().near.makes, 1u);
+    EXPECT_EQ(wholeList.pairList().near.makes, 0u);
+    EXPECT_LT(wholeClosest, -1e-3) << "the spheres should collide";
+    EXPECT_GT(wholeClosest, -5e-3);
+    EXPECT_EQ(nearClosest, wholeClosest);
+    EXPECT_EQ(particlesThatDiffer(nearList.particles(), wholeList.particles()), 0u)
+        << "particles whose state differs from the whole list's sweep";
+}
+
 // The sweep grows the radii by the speeds relative to the mean velocity of the mobile particles
 // (Contacts/PairSweep.h, sweepFrameVelocity), not by the speeds themselves. Any common velocity
 // bounds how fast pairs close, so the force loop gives every pair that needs it its force either

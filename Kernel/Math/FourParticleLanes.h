@@ -93,6 +93,12 @@ inline std::uint64_t largestBits(__m256i a) {
     for (int l = 1; l < 4; ++l) largest = largest > lanes[l] ? largest : lanes[l];
     return largest;
 }
+// The sum of the four 64-bit lanes, modulo 2^64 (a checksum: the same in any order).
+inline std::uint64_t sumOfLanes(__m256i a) {
+    alignas(32) std::uint64_t lanes[4];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), a);
+    return lanes[0] + lanes[1] + lanes[2] + lanes[3];
+}
 
 }  // namespace talus::lanes
 #endif

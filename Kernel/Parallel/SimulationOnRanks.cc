@@ -62,11 +62,16 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     }
     // A rebalance that is due (the same step on every rank) needs a list build to act.
     const bool due = rebalanceInterval_ > 0 && state_.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
-    double agreed[3] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0};
+    // (And whether a rank found its particles moved by hand since the last step: their ghosts
+    // on other ranks moved too, and every rank's near list is made anew: checkPositionsFound.)
+    double agreed[4] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
+                        positionsChangedThisStep_ ? 1.0 : 0.0};
+    positionsChangedThisStep_ = false;
     {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
-        split_->communicator().allReduce(agreed, 3, Communicator::Reduction::max);
+        split_->communicator().allReduce(agreed, 4, Communicator::Reduction::max);
     }
+    if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
                                               : failure,

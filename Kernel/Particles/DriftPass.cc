@@ -33,6 +33,7 @@ struct Maxima {
     std::uint64_t displacement2 = 0, speed2 = 0, coordinate = 0, growth = 0;
     double velocitySum[3] = {0, 0, 0};  // of the mobile particles, for the next step's frame
     std::size_t mobile = 0;
+    std::uint64_t positionsBefore = 0, positionsAfter = 0;  // (positionSum, before and after the pass)
 };
 
 // One particle, as the separate passes do it (the lanes below do the same for eight).
@@ -62,6 +63,7 @@ struct OneParticle {
         double* vi = v + 3 * i;
         double* wi = w + 3 * i;
         const double kick = half * invMass[i], turn = half * invInertia[i];
+        for (int c = 0; c < 3; ++c) m.positionsBefore += std::bit_cast<std::uint64_t>(xi[c]);
         for (int c = 0; c < 3; ++c) {
             if constexpr (Close) {
                 vi[c] = unlessKept(vi[c], lanes::multiplyAdd(kick, oldForce[3 * i + c], vi[c]), keep);
@@ -74,8 +76,10 @@ struct OneParticle {
             torque[3 * i + c] = 0;
             force[3 * i + c] = fixed[i] ? 0.0 : mass[i] * gravity[c];
         }
-        for (int c = 0; c < 3; ++c)
+        for (int c = 0; c < 3; ++c) {
             if (domain.periodic[c]) Domain::wrapCoordinate(xi[c], domain.lo[c], domain.hi[c], domain.length(c));
+            m.positionsAfter += std::bit_cast<std::uint64_t>(xi[c]);
+        }
         double d[3] = {0, 0, 0};
         if (reference)
             for (int c = 0; c < 3; ++c) d[c] = nearestOf(xi[c] - reference[3 * i + c], image, c);
@@ -178,6 +182,7 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
     __m512i displacement2 = _mm512_setzero_si512(), speed2 = displacement2, coordinate = displacement2,
             growth = displacement2;
     __m512d velocitySum[3] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
+    __m512i positionsBefore = _mm512_setzero_si512(), positionsAfter = positionsBefore;
     const __m512i magnitude = _mm512_set1_epi64(0x7fffffffffffffff);  // (all bits but the sign)
     for (; i + 8 <= n; i += 8) {
         const lanes::MobileLanes kick(one.fixed + i, one.half, one.invMass + i);
@@ -201,7 +206,9 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
             v[c] = kick.advance(v[c], kick.factor[c], f, c);
             _mm512_storeu_pd(one.v + at, v[c]);
             velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
-            x[c] = kick.advance(_mm512_loadu_pd(one.x + at), drift, v[c], c);
+            const __m512d before = _mm512_loadu_pd(one.x + at);
+            positionsBefore = _mm512_add_epi64(positionsBefore, _mm512_castpd_si512(before));
+            x[c] = kick.advance(before, drift, v[c], c);
             _mm512_storeu_pd(one.w + at, kick.advance(w, turn[c], t, c));
             _mm512_storeu_pd(one.torque + at, zero);
             _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
@@ -215,6 +222,7 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
             domain.wrap(p.position.data() + i, 8);
             for (int c = 0; c < 3; ++c) x[c] = _mm512_loadu_pd(one.x + 3 * i + 8 * c);
         }
+        for (int c = 0; c < 3; ++c) positionsAfter = _mm512_add_epi64(positionsAfter, _mm512_castpd_si512(x[c]));
         if (one.reference) {
             __m512d d[3];
             for (int c = 0; c < 3; ++c) {
@@ -239,6 +247,8 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
         growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
     }
     m.displacement2 = largestOf(displacement2);
+    m.positionsBefore += _mm512_reduce_add_epi64(positionsBefore);
+    m.positionsAfter += _mm512_reduce_add_epi64(positionsAfter);
     m.speed2 = largestOf(speed2);
     m.coordinate = largestOf(coordinate);
     m.growth = largestOf(growth);
@@ -265,6 +275,7 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
     __m256i displacement2 = _mm256_setzero_si256(), speed2 = displacement2, coordinate = displacement2,
             growth = displacement2;
     __m256d velocitySum[3] = {zero, zero, zero};
+    __m256i positionsBefore = _mm256_setzero_si256(), positionsAfter = positionsBefore;
     const __m256i magnitude = _mm256_set1_epi64x(0x7fffffffffffffff);  // (all bits but the sign)
     for (; i + 4 <= n; i += 4) {
         const __m256d mobile = lanes::mobileOf(one.fixed + i);
@@ -287,7 +298,9 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
             }
             v[c] = lanes::advance(v[c], kick[c], f, moves[c]);
             _mm256_storeu_pd(one.v + at, v[c]);
-            x[c] = lanes::advance(_mm256_loadu_pd(one.x + at), drift, v[c], moves[c]);
+            const __m256d before = _mm256_loadu_pd(one.x + at);
+            positionsBefore = _mm256_add_epi64(positionsBefore, _mm256_castpd_si256(before));
+            x[c] = lanes::advance(before, drift, v[c], moves[c]);
             _mm256_storeu_pd(one.w + at, lanes::advance(w, turn[c], t, moves[c]));
             _mm256_storeu_pd(one.torque + at, zero);
             _mm256_storeu_pd(one.force + at, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
@@ -302,6 +315,7 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
             domain.wrap(p.position.data() + i, 4);
             for (int c = 0; c < 3; ++c) x[c] = _mm256_loadu_pd(one.x + 3 * i + 4 * c);
         }
+        for (int c = 0; c < 3; ++c) positionsAfter = _mm256_add_epi64(positionsAfter, _mm256_castpd_si256(x[c]));
         if (one.reference) {
             __m256d d[3], dAxis[3];
             for (int c = 0; c < 3; ++c) {  // PeriodicImage::nearest
@@ -338,6 +352,8 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
         growth = lanes::largerBits(growth, _mm256_castpd_si256(_mm256_max_pd(zero, _mm256_sub_pd(grown, radius))));
     }
     m.displacement2 = lanes::largestBits(displacement2);
+    m.positionsBefore += lanes::sumOfLanes(positionsBefore);
+    m.positionsAfter += lanes::sumOfLanes(positionsAfter);
     m.speed2 = lanes::largestBits(speed2);
     m.coordinate = lanes::largestBits(coordinate);
     m.growth = lanes::largestBits(growth);
@@ -351,6 +367,13 @@ std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, Pa
 #endif
 
 }  // namespace
+
+std::uint64_t positionSum(const ParticleStore& p, std::size_t n) {
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < std::min(n, p.size()); ++i)
+        for (int c = 0; c < 3; ++c) sum += std::bit_cast<std::uint64_t>(p.position[i][c]);
+    return sum;
+}
 
 double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& reference, const Domain& domain) {
     const PeriodicImage image(domain);
@@ -416,6 +439,7 @@ DriftPassResult driftPass(ParticleStore& p, const double* oldForce, double* kept
                     saneMotion(std::bit_cast<double>(m.speed2), std::bit_cast<double>(m.coordinate))};
     result.growth = std::bit_cast<double>(m.growth);
     result.mobile = m.mobile;
+    result.positionsBefore = m.positionsBefore, result.positionsAfter = m.positionsAfter;
     for (int c = 0; c < 3; ++c) result.velocitySum[c] = m.velocitySum[c];
     const Vec3 mean = Vec3(m.velocitySum[0], m.velocitySum[1], m.velocitySum[2]) / static_cast<double>(std::max<std::size_t>(m.mobile, 1));
     result.meanVelocity = mean.allFinite() ? mean : Vec3::Zero();

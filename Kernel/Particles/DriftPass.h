@@ -20,6 +20,7 @@
 // PairSweep.h).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "Boundaries/Domain.h"
@@ -38,7 +39,16 @@ struct DriftPassResult {
     // What the mean is made of (to join the results of several ranges of slots).
     double velocitySum[3] = {0, 0, 0};
     std::size_t mobile = 0;
+    // positionSum of the slots as the pass found them and as it left them (drifted and wrapped).
+    std::uint64_t positionsBefore = 0, positionsAfter = 0;
 };
+
+// A checksum of the positions of the first n particles: the sum of the bit patterns of their
+// coordinates, modulo 2^64 (the same in any order of the particles and of the additions). The
+// near list (NearPairs in Contacts/PairList.h) holds only while the particles move by the steps'
+// drifts, whose growths it adds up; a step compares the positions it finds with the ones the
+// step before left, so that a particle moved by hand in between (in a driver's hook) unmakes it.
+std::uint64_t positionSum(const ParticleStore& p, std::size_t n);
 
 // reference: the positions at the list's build, or null (no build to compare with: no
 // displacement). The particles are all owned (no ghosts).
