@@ -36,15 +36,29 @@ bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
+const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009), frame(0.3, -0.1, 0.05);
+
+// The reference of the list's displacements: the wrapped positions a little while ago.
+std::vector<Vec3> wrappedReference(const Domain& domain) {
+    std::vector<Vec3> reference = someParticles().position;
+    for (Vec3& x : reference) domain.wrap(x);
+    return reference;
+}
+
+void expectSameParticles(const ParticleStore& a, const ParticleStore& b) {
+    EXPECT_TRUE(sameBits(a.position, b.position));
+    EXPECT_TRUE(sameBits(a.velocity, b.velocity));
+    EXPECT_TRUE(sameBits(a.angularVelocity, b.angularVelocity));
+    EXPECT_TRUE(sameBits(a.force, b.force));
+    EXPECT_TRUE(sameBits(a.torque, b.torque));
+}
+
 }  // namespace
 
 TEST(DriftPass, EqualsThePassesItStandsIn) {
     const Domain domain = someDomain();
-    const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009), frame(0.3, -0.1, 0.05);
     ParticleStore onePass = someParticles(), byPasses = someParticles();
-    // The reference: the wrapped positions a little while ago, some of them across a face.
-    std::vector<Vec3> reference = someParticles().position;
-    for (Vec3& x : reference) domain.wrap(x);
+    std::vector<Vec3> reference = wrappedReference(domain);  // (some of them across a face:)
     for (std::size_t i = 0; i < count; i += 4) reference[i].x() += reference[i].x() > 0 ? -1.9 : 1.9;
     std::vector<Vec3> previousForce, points3;
     std::vector<SweepPoint> points;
@@ -58,11 +72,7 @@ TEST(DriftPass, EqualsThePassesItStandsIn) {
     std::vector<SweepPoint> expectedPoints;
     const double expectedGrowth = sweepPointsForStep(byPasses, dt, frame, expectedPoints);
 
-    EXPECT_TRUE(sameBits(onePass.position, byPasses.position));
-    EXPECT_TRUE(sameBits(onePass.velocity, byPasses.velocity));
-    EXPECT_TRUE(sameBits(onePass.angularVelocity, byPasses.angularVelocity));
-    EXPECT_TRUE(sameBits(onePass.force, byPasses.force));
-    EXPECT_TRUE(sameBits(onePass.torque, byPasses.torque));
+    expectSameParticles(onePass, byPasses);
     EXPECT_TRUE(sameBits(previousForce, lastForces)) << "the last step's forces";
     ASSERT_EQ(points.size(), count);
     const PeriodicImage image(domain);
@@ -97,10 +107,8 @@ TEST(DriftPass, EqualsThePassesItStandsIn) {
 // run), against halfKick, the copy of the forces and the pass that kicks with them.
 TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     const Domain domain = someDomain();
-    const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009), frame(0.3, -0.1, 0.05);
     ParticleStore onePass = someParticles(), byPasses = someParticles();
-    std::vector<Vec3> reference = someParticles().position;
-    for (Vec3& x : reference) domain.wrap(x);
+    const std::vector<Vec3> reference = wrappedReference(domain);
     const std::size_t first = 3, last = onePass.size() - 1;  // (lanes from an odd slot, and a tail of one)
     std::vector<Vec3> keptOne(count, Vec3(7, 7, 7)), keptByPasses = keptOne;
     std::vector<SweepPoint> pointsOne(count), pointsByPasses(count);
@@ -112,11 +120,7 @@ TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     const DriftPassResult three = kickDriftAndStartForces(byPasses, keptByPasses, domain, &reference, gravity, frame,
                                                           dt, pointsByPasses, first, last);
 
-    EXPECT_TRUE(sameBits(onePass.position, byPasses.position));
-    EXPECT_TRUE(sameBits(onePass.velocity, byPasses.velocity));
-    EXPECT_TRUE(sameBits(onePass.angularVelocity, byPasses.angularVelocity));
-    EXPECT_TRUE(sameBits(onePass.force, byPasses.force));
-    EXPECT_TRUE(sameBits(onePass.torque, byPasses.torque));
+    expectSameParticles(onePass, byPasses);
     EXPECT_TRUE(sameBits(keptOne, keptByPasses)) << "the forces kicked with, kept (the slots outside untouched)";
     EXPECT_EQ(std::memcmp(pointsOne.data(), pointsByPasses.data(), count * sizeof(SweepPoint)), 0);
     EXPECT_EQ(one.moves.displacement2, three.moves.displacement2);
