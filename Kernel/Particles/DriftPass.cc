@@ -452,16 +452,18 @@ DriftPassResult kickDriftAndStartForces(ParticleStore& p, const std::vector<Vec3
                                         const std::vector<Vec3>* reference, const Vec3& gravity,
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
                                         std::size_t first, std::size_t last) {
-    return driftPass<false>(p, previousForce[0].data(), nullptr, domain, reference, gravity, frameVelocity, dt, points,
-                            first, last);
+    // (The arrays' starts without an element: they may be empty.)
+    return driftPass<false>(p, reinterpret_cast<const double*>(previousForce.data()), nullptr, domain, reference,
+                            gravity, frameVelocity, dt, points, first, last);
 }
 
 DriftPassResult closeKickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
                                              const std::vector<Vec3>* reference, const Vec3& gravity,
                                              const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points,
                                              std::size_t first, std::size_t last) {
-    return driftPass<true>(p, p.force[0].data(), previousForce[0].data(), domain, reference, gravity, frameVelocity, dt,
-                           points, first, last);
+    return driftPass<true>(p, reinterpret_cast<const double*>(p.force.data()),
+                           reinterpret_cast<double*>(previousForce.data()), domain, reference, gravity, frameVelocity,
+                           dt, points, first, last);
 }
 
 }  // namespace talus
