@@ -31,6 +31,13 @@ inline void require(bool condition, const std::string& message) {
     if (!condition) throw Error(message);
 }
 
+// Throws unless `word` is one word (not empty, no white space): names that files write
+// between spaces (a run's name, a species').
+inline void requireWord(const std::string& word, const std::string& what) {
+    require(!word.empty() && word.find_first_of(" \t\n\r") == std::string::npos,
+            what + " must be one word without spaces, got '" + word + "'");
+}
+
 // A number as messages show it (shortest form, as std::ostream writes it: 0.1, 1e-05, nan).
 inline std::string str(double x) {
     std::ostringstream s;
