@@ -129,6 +129,46 @@ TEST(WaveSchedule, EveryAdvanceFindsItsPairsComputedAtItsStep) {
     }
 }
 
+// The cells at a strip's edge advance next to the strip they border on, so that its side of them
+// is still cached: each seam region (row u at level t) comes within a few regions after the
+// interior region of the same row and level of the strip after the seam (for the seam between the
+// last strip and the first, of the last; with one strip, of the strip itself), not in a wave of
+// its own after all strips (as until 2026-12-04: a hundred regions and more later here).
+TEST(WaveSchedule, SeamsAdvanceBesideTheStripAfterThem) {
+    for (const int stripColumns : {40, 12, 8}) {  // one strip of 32 columns, two of 16, four of 8
+        const Bed b = randomBed(40, 38, 1, 1.2, 11);
+        const std::optional<WaveCells> cells = WaveCells::fit(b.domain, b.separation, 4, stripColumns);
+        ASSERT_TRUE(cells);
+        struct Visit {
+            int row, first, across, level;
+        };
+        std::vector<Visit> visits;
+        cells->forEachRegion([&](int u, int first, int across, int t) { visits.push_back({u, first, across, t}); });
+        int seams = 0;
+        for (std::size_t k = 0; k < visits.size(); ++k) {
+            const Visit& v = visits[k];
+            int beside = -1;  // the strip whose wave this seam region should go with, if it is one
+            for (int q = 0; q < cells->strips(); ++q)
+                if (v.first == (cells->stripStart(q + 1) - 1 - v.level) % cells->columns() && v.across == 2 * v.level + 2)
+                    beside = std::min(q + 1, cells->strips() - 1);
+            if (beside < 0) continue;
+            ++seams;
+            const int interiorFirst = cells->stripStart(beside) + v.level + 1;
+            const auto interior = std::find_if(visits.begin(), visits.end(), [&](const Visit& w) {
+                return w.row == v.row && w.level == v.level && w.first == interiorFirst;
+            });
+            ASSERT_NE(interior, visits.end()) << "row " << v.row << " level " << v.level;
+            const auto at = static_cast<std::size_t>(interior - visits.begin());
+            EXPECT_LT(at, k);
+            // (A step of a strip's wave visits at most one interior and two seam regions a level;
+            // the seams go a step behind.)
+            EXPECT_LE(k - at, static_cast<std::size_t>(6 * cells->levels()))
+                << "the seam of row " << v.row << " at level " << v.level << ", " << cells->strips() << " strips";
+        }
+        EXPECT_GT(seams, cells->rows());
+    }
+}
+
 // The replay above catches a schedule that breaks the order of steps (so it can fail): the
 // regions' order reversed.
 TEST(WaveSchedule, TheReplayCatchesRegionsOutOfOrder) {
