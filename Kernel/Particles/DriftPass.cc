@@ -147,6 +147,15 @@ inline std::uint64_t largestOf(__m512i a) {
     _mm512_store_si512(lanes, a);
     return *std::max_element(lanes, lanes + 8);
 }
+// The sum of the eight 64-bit lanes, modulo 2^64 (a checksum: the same in any order). Not
+// _mm512_reduce_add_epi64, which adds them as signed numbers (an overflow, for UBSan).
+inline std::uint64_t checksumOf(__m512i a) {
+    alignas(64) std::uint64_t lanes[8];
+    _mm512_store_si512(lanes, a);
+    std::uint64_t sum = 0;
+    for (const std::uint64_t lane : lanes) sum += lane;
+    return sum;
+}
 inline double sumOf(__m512d a) {
     alignas(64) double lanes[8];
     _mm512_store_pd(lanes, a);
@@ -247,8 +256,8 @@ std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, P
         growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
     }
     m.displacement2 = largestOf(displacement2);
-    m.positionsBefore += _mm512_reduce_add_epi64(positionsBefore);
-    m.positionsAfter += _mm512_reduce_add_epi64(positionsAfter);
+    m.positionsBefore += checksumOf(positionsBefore);
+    m.positionsAfter += checksumOf(positionsAfter);
     m.speed2 = largestOf(speed2);
     m.coordinate = largestOf(coordinate);
     m.growth = largestOf(growth);
