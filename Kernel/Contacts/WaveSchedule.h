@@ -14,7 +14,8 @@
 // Cells within t cells of a strip's edge along y sit out level t in their strip's wave and advance
 // in the next strip's, a row behind its front; rows within t cells of the periodic seam along x
 // sit out level t and advance afterwards in a second pass, as the trapezoid tilings of stencil
-// codes do (Frigo and Strumpen 2005; Wonnacott 2000 for time skewing). The design was tried first in a model of the step (Drivers/Benchmarks/StripWave.h).
+// codes do (Frigo and Strumpen 2005; Wonnacott 2000 for time skewing). The design was tried
+// first in a model of the step (Drivers/Benchmarks/StripWave.h).
 #pragma once
 
 #include <cstdint>
