@@ -135,7 +135,7 @@ TEST(WaveSchedule, EveryAdvanceFindsItsPairsComputedAtItsStep) {
 // last strip and the first, of the last; with one strip, of the strip itself), not in a wave of
 // its own after all strips (as until 2026-12-04: a hundred regions and more later here).
 TEST(WaveSchedule, SeamsAdvanceBesideTheStripAfterThem) {
-    for (const int stripColumns : {40, 12, 8}) {  // one strip of 32 columns, two of 16, four of 8
+    for (const int stripColumns : {40, 12, 8}) {  // of 31 columns: one strip, two of 15-16, three of 10-11
         const Bed b = randomBed(40, 38, 1, 1.2, 11);
         const std::optional<WaveCells> cells = WaveCells::fit(b.domain, b.separation, 4, stripColumns);
         ASSERT_TRUE(cells);
