@@ -6,6 +6,9 @@ particle-step of the benchmark's own wall time, every round's, and each run's us
 
     Drivers/Benchmarks/interleavedRounds.py [--binary PATH] ROUNDS 'label|arguments[|VAR=value ...]' ...
 
+A setting BINARY=path runs that configuration with another build of the benchmark (a copy of the
+binary before a change, to compare two versions of the code run for run).
+
 e.g. (the developed flow at 3000 particles in single steps against 108000 in waves of 8):
 
     D=../shared/peers/data/chute_B_flowing.data
@@ -33,14 +36,18 @@ for spec in args[1:]:
     if len(parts) < 2:
         sys.exit(f"interleavedRounds.py: '{spec}' is not 'label|arguments[|VAR=value ...]'")
     env = dict(os.environ)
+    own = binary
     for setting in (parts[2].split() if len(parts) > 2 else []):
         if '=' not in setting:
             sys.exit(f"interleavedRounds.py: '{setting}' in '{spec}' is not VAR=value")
         name, value = setting.split('=', 1)
-        env[name] = value
-    configs.append((parts[0], parts[1].split(), env))
-if not os.access(binary, os.X_OK):
-    sys.exit(f"interleavedRounds.py: no benchmark at {binary} (build first: Scripts/build.sh, or --binary)")
+        if name == 'BINARY':
+            own = value
+        else:
+            env[name] = value
+    if not os.access(own, os.X_OK):
+        sys.exit(f"interleavedRounds.py: no benchmark at {own} (build first: Scripts/build.sh, or --binary)")
+    configs.append((parts[0], [own] + parts[1].split(), env))
 
 times = {label: [] for label, _, _ in configs}
 cpu = {label: [] for label, _, _ in configs}
@@ -48,7 +55,7 @@ line = re.compile(r'^benchmark: flowing (\d+)\s+steps (\d+)\s+wall ([\d.]+) s', 
 for r in range(rounds):
     for label, arguments, env in configs:
         before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
-        run = subprocess.Popen([binary] + arguments + ['--progress-interval', '1e9'], stdout=subprocess.PIPE,
+        run = subprocess.Popen(arguments + ['--progress-interval', '1e9'], stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True, env=env)
         out, err = run.communicate()
         found = line.search(out)

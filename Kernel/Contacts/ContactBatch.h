@@ -33,28 +33,47 @@ struct ContactBatch {
     bool full() const { return count == size; }
     LinearSpringDashpot law(int l) const { return {kn[l], gn[l], kt[l], gt[l], mu[l]}; }
 
-    void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Vec3& d, const ParticleStore& p,
-             const std::vector<Vec3>& previousForce, const ContactHistories& history, const LinearSpringDashpot& pairLaw) {
+    // A lasting contact into the next lane: the pair, its separation and radii, its law. The
+    // particles' velocities, spins and last forces and the pair's history come in later, for
+    // all lanes at once (gather).
+    void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Vec3& d, double radiusA, double radiusB,
+             const LinearSpringDashpot& pairLaw) {
         const int l = count++;
         k[l] = static_cast<std::uint32_t>(pair), i[l] = a, j[l] = b;
         dx[l] = d.x(), dy[l] = d.y(), dz[l] = d.z();
-        ri[l] = p.radius[a], rj[l] = p.radius[b];
-        const Vec3 v = p.velocity[a] - p.velocity[b];
-        vx[l] = v.x(), vy[l] = v.y(), vz[l] = v.z();
-        const Vec3 &wi = p.angularVelocity[a], &wj = p.angularVelocity[b];
-        wix[l] = wi.x(), wiy[l] = wi.y(), wiz[l] = wi.z(), wjx[l] = wj.x(), wjy[l] = wj.y(), wjz[l] = wj.z();
-        inverseMassSum[l] = p.invMass[a] + p.invMass[b];
-        const Vec3 acceleration = previousForce[a] * p.invMass[a] - previousForce[b] * p.invMass[b];
-        ax[l] = acceleration.x(), ay[l] = acceleration.y(), az[l] = acceleration.z();
-        lastNormalForce[l] = history.lastNormalForceOf(pair);
-        const Vec3& spring = history.springOf(pair);
-        sx[l] = spring.x(), sy[l] = spring.y(), sz[l] = spring.z();
+        ri[l] = radiusA, rj[l] = radiusB;
         kn[l] = pairLaw.normalStiffness, gn[l] = pairLaw.normalDamping, kt[l] = pairLaw.tangentialStiffness;
         gt[l] = pairLaw.tangentialDamping, mu[l] = pairLaw.friction;
-        // The flush adds to j's force and torque up to a batch later; once the arrays outgrow the
-        // caches those loads miss (half of the flush at 10^5 particles), so they are asked for now.
-        __builtin_prefetch(p.force.data() + b, 1);
-        __builtin_prefetch(p.torque.data() + b, 1);
+    }
+
+    // The rest of every lane's input, from the particle arrays and the histories, in one loop of
+    // its own before compute: in the contact pass, among its branches, the same loads and stores
+    // left the compiler short of registers (their 30 loads and stores a contact were most of the
+    // pass's instructions; cachegrind and perf, settled bed, 2026-12-04).
+    void gather(const ParticleStore& p, const std::vector<Vec3>& previousForce, const ContactHistories& history) {
+        const double* __restrict velocity = p.velocity[0].data();
+        const double* __restrict spin = p.angularVelocity[0].data();
+        const double* __restrict invMass = p.invMass.data();
+        const double* __restrict lasting = history.lastingRecords();
+        for (int l = 0; l < count; ++l) {
+            const std::size_t a = i[l], b = j[l], a3 = 3 * a, b3 = 3 * b;
+            vx[l] = velocity[a3] - velocity[b3], vy[l] = velocity[a3 + 1] - velocity[b3 + 1];
+            vz[l] = velocity[a3 + 2] - velocity[b3 + 2];
+            wix[l] = spin[a3], wiy[l] = spin[a3 + 1], wiz[l] = spin[a3 + 2];
+            wjx[l] = spin[b3], wjy[l] = spin[b3 + 1], wjz[l] = spin[b3 + 2];
+            const double ma = invMass[a], mb = invMass[b];
+            inverseMassSum[l] = ma + mb;
+            // (As Eigen's expression, so that the compiler contracts it as the scalar path's.)
+            const Vec3 acceleration = previousForce[a] * ma - previousForce[b] * mb;
+            ax[l] = acceleration.x(), ay[l] = acceleration.y(), az[l] = acceleration.z();
+            const double* record = lasting + 4 * std::size_t{k[l]};
+            sx[l] = record[0], sy[l] = record[1], sz[l] = record[2], lastNormalForce[l] = record[3];
+            // The application adds to j's force and torque after compute; once the arrays outgrow
+            // the caches those loads miss (half of the application at 10^5 particles), so they
+            // are asked for now.
+            __builtin_prefetch(p.force.data() + b, 1);
+            __builtin_prefetch(p.torque.data() + b, 1);
+        }
     }
 
     // The kinematics of contactKinematics (SPEC.md 1: arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)

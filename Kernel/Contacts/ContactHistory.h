@@ -74,6 +74,15 @@ public:
     double lastNormalForceOf(std::size_t k) const { return forces_[k].lastNormalForce; }
     void prefetch(std::size_t k) const { __builtin_prefetch(forces_.data() + k); }  // (its spring and last force)
     const Vec3& springOf(std::size_t k) const { return forces_[k].spring; }
+    // The springs and last normal forces as plain numbers, four a pair (x, y, z, last force),
+    // and the states: for the force loop's application of its batches (ContactForces.h), in
+    // scenes without warm starts.
+    double* lastingRecords() {
+        static_assert(sizeof(Forces) == 4 * sizeof(double));
+        return reinterpret_cast<double*>(forces_.data());
+    }
+    const double* lastingRecords() const { return reinterpret_cast<const double*>(forces_.data()); }
+    ContactHistory::State* mutableStates() { return states_.data(); }
     void assign(std::size_t n) {
         forces_.assign(n, {});
         states_.assign(n, ContactHistory::apart);
