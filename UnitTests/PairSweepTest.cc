@@ -65,9 +65,10 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         }
         std::vector<SweepPoint> points(n);  // (as the force loop passes them)
         for (std::size_t i = 0; i < n; ++i) points[i] = {position[i].x(), position[i].y(), position[i].z(), grown[i]};
-        std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> sweeps[2];
+        const std::vector<SweepForm> forms = availableSweepForms();
+        std::vector<std::pair<std::vector<std::uint32_t>, std::vector<Vec3>>> sweeps;
         std::size_t wrongParticles = 0;  // picked pairs whose particles are not the listed pair's
-        for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
+        for (const SweepForm form : forms) {
             std::vector<std::uint32_t> picked;
             std::vector<Vec3> separations;
             SweptPairs swept;
@@ -80,11 +81,13 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
                     separations.push_back(swept.separation(a));
                 }
             }
-            sweeps[form == SweepForm::lanes] = {picked, separations};
+            sweeps.push_back({picked, separations});
         }
-        const auto& [picked, separations] = sweeps[1];
-        EXPECT_EQ(sweeps[0].first, picked) << "the two forms pick the same pairs";
-        EXPECT_EQ(sweeps[0].second, separations) << "with the same separations";
+        const auto& [picked, separations] = sweeps[0];
+        for (std::size_t f = 1; f < forms.size(); ++f) {
+            EXPECT_EQ(sweeps[f].first, picked) << sweepFormName(forms[f]) << " picks the scalar loop's pairs";
+            EXPECT_EQ(sweeps[f].second, separations) << sweepFormName(forms[f]) << ": the same separations";
+        }
         EXPECT_EQ(wrongParticles, 0u) << "each picked pair comes with its particles";
         std::vector<std::uint32_t> expected;
         std::vector<Vec3> expectedSeparations;
@@ -106,7 +109,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         for (std::size_t a = 0; a < expected.size(); ++a)
             if (expected[a] % 3 != 1)
                 expectedNear.push_back(expected[a]), expectedNearSeparations.push_back(expectedSeparations[a]);
-        for (const SweepForm form : {SweepForm::scalar, SweepForm::lanes}) {
+        for (const SweepForm form : forms) {
             std::vector<std::uint32_t> nearPicked;
             std::vector<Vec3> nearSeparations;
             SweptPairs swept;
@@ -119,7 +122,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
                     nearSeparations.push_back(swept.separation(a));
                 }
             }
-            EXPECT_EQ(nearPicked, expectedNear) << n << " particles, near list, lanes " << (form == SweepForm::lanes);
+            EXPECT_EQ(nearPicked, expectedNear) << n << " particles, near list, " << sweepFormName(form);
             EXPECT_EQ(nearSeparations, expectedNearSeparations) << n << " particles, near list";
         }
         EXPECT_EQ(wrongParticles, 0u) << "each picked pair of the near list comes with its particles";

@@ -135,7 +135,7 @@ public:
                     100 * sums[6] / ranks() / std::max(run.wallSeconds, 1e-300), sums[7],
                     100 * sums[8] / ranks() / std::max(run.wallSeconds, 1e-300),
                     100 * sums[9] / ranks() / std::max(run.wallSeconds, 1e-300),
-                    sweepForm() == SweepForm::lanes ? "lanes" : "scalar", static_cast<unsigned long long>(stepsInWaves()));
+                    sweepFormName(sweepForm()), static_cast<unsigned long long>(stepsInWaves()));
     }
 
 private:

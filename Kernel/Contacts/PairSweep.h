@@ -13,13 +13,14 @@
 // picked indices and separations. Both versions make the same decisions and give the same
 // separations, bit for bit (the same operations in the same order).
 //
-// Without AVX-512 but with AVX2 the lanes take four pairs at a time without gathers
-// (sweepInFourPairLanes): on the AMD Zen 3 host of 2026-12-03 3-5% faster for the whole step.
+// With AVX2 (and so with AVX-512 too) lanes take four pairs at a time without gathers
+// (sweepInFourPairLanes): on the AMD Zen 3 host of 2026-12-03 3-5% faster for the whole step;
+// on the Zen 4 host of 2026-12-04, where the gathers lost to the scalar loop, 2% (settled bed)
+// and 9% (developed flow) for the near list alone.
 //
-// Which of the two runs is decided per process by timing (chooseSweepForm): the lanes' gathers
-// are fast on some processors and slow on others (on the AMD Zen 5 hosts of 2026-12-01 the
-// scalar loop made the whole step 6-7% faster; on the Intel-like host before, the lanes made
-// the sweep 1.5x faster).
+// Which runs is decided per process by timing (chooseSweepForm): the gathers are fast on some
+// processors and slow on others (on the AMD Zen 5 hosts of 2026-12-01 the scalar loop made the
+// whole step 6-7% faster; on the Intel-like host before, the gathers made the sweep 1.5x faster).
 #pragma once
 
 #include <algorithm>
@@ -36,7 +37,8 @@
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #define TALUS_AVX512_SWEEP 1
 #include <immintrin.h>
-#elif defined(__AVX2__) && defined(__FMA__)
+#endif
+#if defined(__AVX2__) && defined(__FMA__)
 #define TALUS_AVX2_SWEEP 1
 #include <immintrin.h>
 #endif
@@ -60,21 +62,37 @@ struct SweptPairs {
     Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
 };
 
-// The form of the sweep this process uses: the scalar loop, or the lanes where the build has
-// them (AVX-512, or AVX2 without it). Undecided until chooseSweepForm has timed both; the
-// environment variable TALUS_SWEEP=scalar or TALUS_SWEEP=lanes fixes it (for measurements).
-enum class SweepForm { undecided, scalar, lanes };
-inline SweepForm& sweepForm() {
-#if defined(TALUS_AVX512_SWEEP) || defined(TALUS_AVX2_SWEEP)
-    static SweepForm form = [] {
-        const char* fixed = std::getenv("TALUS_SWEEP");
-        if (fixed && std::strcmp(fixed, "scalar") == 0) return SweepForm::scalar;
-        if (fixed && std::strcmp(fixed, "lanes") == 0) return SweepForm::lanes;
-        return SweepForm::undecided;
-    }();
-#else
-    static SweepForm form = SweepForm::scalar;
+// The form of the sweep this process uses: the scalar loop, four pairs at a time without
+// gathers (lanes; AVX2), or eight at a time with gathers (gathers; AVX-512, for the whole list:
+// a near list or a wave's selection goes in four-pair lanes then). Undecided until
+// chooseSweepForm has timed those the build has; the environment variable
+// TALUS_SWEEP=scalar|lanes|gathers fixes it (for measurements; a form the build lacks is the
+// scalar loop).
+enum class SweepForm { undecided, scalar, lanes, gathers };
+inline const char* sweepFormName(SweepForm form) {
+    return form == SweepForm::gathers ? "gathers" : form == SweepForm::lanes ? "lanes"
+                                          : form == SweepForm::scalar ? "scalar" : "undecided";
+}
+// The forms this build has, the scalar loop first.
+inline std::vector<SweepForm> availableSweepForms() {
+    std::vector<SweepForm> forms{SweepForm::scalar};
+#ifdef TALUS_AVX2_SWEEP
+    forms.push_back(SweepForm::lanes);
 #endif
+#ifdef TALUS_AVX512_SWEEP
+    forms.push_back(SweepForm::gathers);
+#endif
+    return forms;
+}
+inline SweepForm& sweepForm() {
+    static SweepForm form = [] {
+        if (availableSweepForms().size() == 1) return SweepForm::scalar;
+        const char* fixed = std::getenv("TALUS_SWEEP");
+        if (!fixed) return SweepForm::undecided;
+        for (const SweepForm f : availableSweepForms())
+            if (std::strcmp(fixed, sweepFormName(f)) == 0) return f;
+        return SweepForm::scalar;
+    }();
     return form;
 }
 
@@ -195,7 +213,7 @@ inline std::size_t sweepInFourPairLanes(PairAt pairAt, std::size_t begin, std::s
 #endif
 
 // Pairs [begin, end) of the list, at most SweptPairs::capacity of them, in the given form
-// (lanes: the AVX-512 lanes if the build has them, for as many whole groups of eight as fit).
+// (gathers: the AVX-512 lanes, for as many whole groups of eight as fit; lanes: four-pair lanes).
 // Without nearestImage the separation is the direct difference xi - xj: for the pairs that a
 // build found to keep it as their nearest image (PairList::interiorPairs).
 template <bool nearestImage = true>
@@ -206,7 +224,7 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 #ifdef TALUS_AVX512_SWEEP
     // (The gathers index the records' numbers with 32-bit 4 i; GCC 12 warns about the intrinsics'
     // own undefined pass-through operands.)
-    const std::size_t vectorEnd = form == SweepForm::lanes && particleCount < (std::size_t{1} << 31) / 4 ? end : begin;
+    const std::size_t vectorEnd = form == SweepForm::gathers && particleCount < (std::size_t{1} << 31) / 4 ? end : begin;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
     static_assert(sizeof(ParticlePair) == 8 && sizeof(ContactHistory::State) == 1);
@@ -246,7 +264,8 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
         picked += static_cast<std::size_t>(__builtin_popcount(pick));
     }
 #pragma GCC diagnostic pop
-#elif defined(TALUS_AVX2_SWEEP)
+#endif
+#ifdef TALUS_AVX2_SWEEP
     if (form == SweepForm::lanes)
         k = sweepInFourPairLanes<nearestImage>([pairs](std::size_t m) { return std::pair(pairs[m], m); }, k, end,
                                                points, states, image, out, picked);
@@ -257,14 +276,15 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
 
 // The same rule for the m-th pairs of a selection, m in [begin, end), at most
 // SweptPairs::capacity of them; pairAt(m) gives the pair and its place k in the whole list, which
-// out.pair holds.
+// out.pair holds. In four-pair lanes unless the form is the scalar loop (a selection's pairs
+// are not in one array for the gathers).
 template <bool nearestImage, class PairAt>
 inline void sweepSelectedPairs(PairAt pairAt, std::size_t begin, std::size_t end, const SweepPoint* points,
                                const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
                                [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, m = begin;
 #ifdef TALUS_AVX2_SWEEP
-    if (form == SweepForm::lanes) m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
+    if (form == SweepForm::lanes || form == SweepForm::gathers) m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
 #endif
     for (; m < end; ++m) {
         const auto [pair, k] = pairAt(m);
@@ -416,9 +436,9 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
     ++near.makes;
 }
 
-// Decides sweepForm() if undecided: sweeps the first chunk of a list both ways, alternating,
-// and keeps the faster (the fastest of 30 sweeps each, so that a busy machine's interruptions
-// do not decide). Called by the force loop on the first list long enough (a few chunks) for
+// Decides sweepForm() if undecided: sweeps the first chunk of a list in each form the build has,
+// in turn, and keeps the fastest (the fastest of 30 sweeps each, so that a busy machine's
+// interruptions do not decide). Called by the force loop on the first list long enough (a few chunks) for
 // the sweep to matter; the picks are the same either way, so only the speed depends on it.
 inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const SweepPoint* points,
                             std::size_t particleCount, const ContactHistory::State* states,
@@ -426,15 +446,15 @@ inline void chooseSweepForm(const ParticlePair* pairs, std::size_t count, const 
     if (sweepForm() != SweepForm::undecided) return;
     using Clock = std::chrono::steady_clock;
     const std::size_t end = std::min(count, SweptPairs::capacity);
-    Clock::duration fastest[2] = {Clock::duration::max(), Clock::duration::max()};
+    const std::vector<SweepForm> forms = availableSweepForms();
+    std::vector<Clock::duration> fastest(forms.size(), Clock::duration::max());
     for (int round = 0; round < 30; ++round)
-        for (int form = 0; form < 2; ++form) {
+        for (std::size_t f = 0; f < forms.size(); ++f) {
             const Clock::time_point start = Clock::now();
-            sweepPairs(pairs, 0, end, points, particleCount, states, image, scratch,
-                       form == 0 ? SweepForm::scalar : SweepForm::lanes);
-            fastest[form] = std::min(fastest[form], Clock::now() - start);
+            sweepPairs(pairs, 0, end, points, particleCount, states, image, scratch, forms[f]);
+            fastest[f] = std::min(fastest[f], Clock::now() - start);
         }
-    sweepForm() = fastest[1] < fastest[0] ? SweepForm::lanes : SweepForm::scalar;
+    sweepForm() = forms[static_cast<std::size_t>(std::min_element(fastest.begin(), fastest.end()) - fastest.begin())];
 }
 
 }  // namespace talus
