@@ -1,0 +1,93 @@
+// The batched lasting sphere contacts (Contacts/ContactBatch.h): a batch filled by add, gather
+// and compute must give, lane by lane, what the scalar path gives for the same pair (the
+// kinematics of contactKinematics and LinearSpringDashpot::force of a touching pair, as
+// ContactForceLoop::pairContact takes them when the batch is not used): the force, both
+// torques, the advanced spring, the normal force and the overlap. The lanes name particles
+// that recur in other lanes, in either role, and alternate between two laws, so a lane that
+// gathered another particle's or pair's numbers, or another lane's law, would differ.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "Contacts/ContactForces.h"
+
+using namespace talus;
+
+TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
+    std::mt19937_64 random(20261204);
+    std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
+    const std::size_t particles = 20;
+    ParticleStore p;
+    std::vector<Vec3> previousForce(particles);
+    for (std::size_t i = 0; i < particles; ++i) {
+        p.position.push_back(Vec3(unit(random), unit(random), unit(random)) * 10);
+        p.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
+        p.angularVelocity.push_back(Vec3(unit(random), unit(random), unit(random)) * 3);
+        p.force.push_back(Vec3::Zero());
+        p.torque.push_back(Vec3::Zero());
+        p.radius.push_back(radiusOf(random));
+        p.invMass.push_back(i % 7 == 3 ? 0 : 1 / (1 + unit(random) * 0.5));  // some fixed partners
+        previousForce[i] = Vec3(unit(random), unit(random), unit(random)) * 5;
+    }
+    const double dt = 1e-4;
+    const LinearSpringDashpot laws[2] = {LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5).withFriction(0.5),
+                                         LinearSpringDashpot::fromCollision(0.004, 0.6, 0.3).withFriction(0.2)};
+    ContactHistories histories;
+    histories.assign(ContactBatch::size + 5);
+    ContactBatch batch;
+    struct Lane {
+        std::size_t k;
+        std::uint32_t i, j;
+        Vec3 d;
+    };
+    std::vector<Lane> lanes;
+    while (!batch.full()) {
+        const auto i = static_cast<std::uint32_t>(random() % particles), j = static_cast<std::uint32_t>(random() % particles);
+        if (i == j) continue;
+        // Touching: the separation xi - xj shorter than ri + rj by a few percent.
+        const Vec3 direction = Vec3(unit(random), unit(random), unit(random)).normalized();
+        const Vec3 d = direction * (p.radius[i] + p.radius[j]) * (1 - fraction(random));
+        const std::size_t k = lanes.size() + 3;  // (places in the list that are not the lane numbers)
+        histories.set(k, {Vec3(unit(random), unit(random), unit(random)) * 1e-3, 10 * fraction(random) + 0.01,
+                          ContactHistory::touching});
+        batch.add(k, i, j, d, p.radius[i], p.radius[j], laws[lanes.size() % 2]);
+        lanes.push_back({k, i, j, d});
+    }
+    batch.gather(p, previousForce, histories);
+    batch.compute(dt);
+    double worst = 0;
+    for (std::size_t l = 0; l < lanes.size(); ++l) {
+        const auto [k, i, j, d] = lanes[l];
+        const LinearSpringDashpot& law = laws[l % 2];
+        const double distance = d.norm(), sumR = p.radius[i] + p.radius[j];
+        const Vec3 n = d / distance;
+        ContactHistory history = histories.get(k);
+        Arms arms;
+        ContactKinematics c = contactKinematics(n, sumR - distance, p.radius[i], p.radius[j], p.velocity[i] - p.velocity[j],
+                                                p.angularVelocity[i], p.angularVelocity[j], arms);
+        c.inverseDistance = 1 / distance;
+        c.inverseReducedMass = p.invMass[i] + p.invMass[j];
+        c.otherAcceleration = previousForce[i].dot(n) * p.invMass[i] - previousForce[j].dot(n) * p.invMass[j] -
+                              history.lastNormalForce * c.inverseReducedMass;
+        const ContactForce f = law.force(c, history, dt);
+        const Vec3 force = f.normalForce * n + f.tangentialForce;
+        const Vec3 turn = n.cross(f.tangentialForce);
+        const int b = static_cast<int>(l);
+        const auto near = [&](const Vec3& lane, const Vec3& expected, const char* what) {
+            const double error = (lane - expected).norm() / std::max(1.0, expected.norm());
+            worst = std::max(worst, error);
+            EXPECT_LT(error, 1e-11) << what << " of lane " << l << " (particles " << i << ", " << j << "): " << lane.transpose()
+                                    << " against " << expected.transpose();
+        };
+        near(Vec3(batch.fx[b], batch.fy[b], batch.fz[b]), force, "force on i");
+        near(Vec3(batch.tix[b], batch.tiy[b], batch.tiz[b]), -arms.i * turn, "torque on i");
+        near(Vec3(batch.tjx[b], batch.tjy[b], batch.tjz[b]), -arms.j * turn, "torque on j");
+        near(Vec3(batch.sx[b], batch.sy[b], batch.sz[b]), history.spring, "spring");
+        near(Vec3(batch.fn[b], batch.overlap[b], 0), Vec3(f.normalForce, c.overlap, 0), "normal force and overlap");
+        EXPECT_GT(f.tangentialForce.norm(), 0) << "a lane without friction would not test the spring";
+    }
+    std::printf("[ measured ] largest relative difference of %zu lanes from the scalar path: %.3g\n", lanes.size(), worst);
+}
