@@ -75,8 +75,9 @@ public:
     void prefetch(std::size_t k) const { __builtin_prefetch(forces_.data() + k); }  // (its spring and last force)
     const Vec3& springOf(std::size_t k) const { return forces_[k].spring; }
     // The springs and last normal forces as plain numbers, four a pair (x, y, z, last force),
-    // and the states: for the force loop's application of its batches (ContactForces.h), in
-    // scenes without warm starts.
+    // and the states: for the force loop's batches (ContactForces.h), which read them when they
+    // gather and write them when they apply their contacts (in scenes without warm starts, which
+    // set() keeps in step with them).
     double* lastingRecords() {
         static_assert(sizeof(Forces) == 4 * sizeof(double));
         return reinterpret_cast<double*>(forces_.data());

@@ -284,7 +284,8 @@ inline void sweepSelectedPairs(PairAt pairAt, std::size_t begin, std::size_t end
                                [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, m = begin;
 #ifdef TALUS_AVX2_SWEEP
-    if (form == SweepForm::lanes || form == SweepForm::gathers) m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
+    if (form == SweepForm::lanes || form == SweepForm::gathers)
+        m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
 #endif
     for (; m < end; ++m) {
         const auto [pair, k] = pairAt(m);
