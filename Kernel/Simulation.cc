@@ -213,6 +213,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
     stepsInWaves_ = waveNearRunsFound_ = waveNearGivenUp_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
+        if (waveAllowed(steps - k + 1, every) && !waveFits(steps - k + 1, every)) buildListForWave();
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
             const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
             const bool savingLast = isOutputStep(state_.step + static_cast<std::uint64_t>(waveSteps_), last, steps, every);
@@ -420,7 +421,7 @@ void Simulation::reorderParticles(bool withPreviousForces) {
     // With waves, the order of their cells (Contacts/WaveSchedule.h), where the box has them.
     // (the reach the coming build takes: PairList::rebuild)
     const std::optional<WaveCells> cells =
-        waveCellsForBuild(state_.pairList.skin + 2 * state_.pairList.maxSpeed * state_.settings.timeStep, nullptr);
+        waveCellsForBuild(state_.pairList.reachOfNextBuild(state_.settings.timeStep), nullptr);
     const std::vector<std::size_t> order =
         cells ? cells->order(p.position)
               : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);

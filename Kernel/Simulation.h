@@ -223,6 +223,9 @@ private:
     void reorderParticles(bool withPreviousForces);
     // Waves (SimulationWaves.cc).
     bool waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
+    bool waveAllowed(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
+    bool waveHasRoom(double displacement, double reach) const;
+    void buildListForWave();
     // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();

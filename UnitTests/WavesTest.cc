@@ -124,6 +124,33 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the schedules";
 }
 
+// Where the list has no room left for the next wave, it is built anew ahead of it
+// (Simulation::buildListForWave): the flow goes on in waves through its list builds, where until
+// 2026-12-04 the last steps before each build were single steps (980 of 1000 here in waves).
+TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
+    const double dt = 1e-4;
+    Scene s;
+    s.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
+    s.setSkin(0.2), s.setWaves(4, 8), s.run(dt, 1000 * dt);
+    EXPECT_GE(s.pairList().builds, 3u) << "the test needs list builds within the run";
+    EXPECT_EQ(s.stepsInWaves(), 1000u);
+}
+
+// ... but not where a new list would have no room for a wave either (a skin too thin for the
+// speeds): single steps then rebuild as they need, as without waves, not before every step.
+TEST(Waves, ASkinTooThinForWavesLeavesTheBuildsToSingleSteps) {
+    const double dt = 1e-4;
+    Scene waves, single;
+    waves.setup = single.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
+    waves.setSkin(0.002), single.setSkin(0.002);
+    waves.setWaves(4, 8);
+    waves.run(dt, 200 * dt);
+    single.run(dt, 200 * dt);
+    EXPECT_EQ(waves.stepsInWaves(), 0u);
+    EXPECT_GT(single.pairList().builds, 10u) << "the test needs a skin that takes frequent builds";
+    EXPECT_LE(waves.pairList().builds, single.pairList().builds + single.pairList().builds / 10);
+}
+
 // A driver's hook that moves the particles by hand between waves (each by up to 0.02 along each
 // axis, so that pairs left out of the near list, 0.03 wide, come within reach): the next wave
 // finds the positions changed and makes the near list anew (Simulation::checkPositionsFound),

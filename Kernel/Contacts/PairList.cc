@@ -234,7 +234,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
                        HGrid& grid, double dt, std::vector<CarriedHistory> carried) {
     // New candidates, with the history they had (`carried`: by global ids, sorted).
     pairs.clear();
-    reach = skin + 2 * maxSpeed * dt;
+    reach = reachOfNextBuild(dt);
     grid.findPairs(particles, domain, reach, pairs);
     const std::size_t owned = particles.owned();
     if (particles.ghostCount > 0)

@@ -108,6 +108,7 @@ public:
     std::vector<Vec3> referencePosition;  // positions when the list was built
     double skin = 0;
     double reach = 0;  // skin + 2 vmax dt at the last build
+    double reachOfNextBuild(double dt) const { return skin + 2 * maxSpeed * dt; }
     bool valid = false;  // false forces a rebuild (particles removed or reordered; added ones are relisted)
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
