@@ -213,7 +213,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
     stepsInWaves_ = waveNearRunsFound_ = waveNearGivenUp_ = 0;
     for (std::uint64_t k = 1; k <= steps; ++k) {
-        if (waveAllowed(steps - k + 1, every) && !waveFits(steps - k + 1, every)) buildListForWave();
+        if (waveAllowed(steps - k + 1, every) && !waveHasRoom(lastDisplacement_, state_.pairList.reach))
+            buildListForWave();  // (instead of single steps until the list needs a build)
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
             const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
             const bool savingLast = isOutputStep(state_.step + static_cast<std::uint64_t>(waveSteps_), last, steps, every);
