@@ -63,7 +63,11 @@ public:
     // periodic along x and y, one rank, nothing but the particles' own motion between steps, no
     // output within the wave). The same physics as single steps, the forces summed in another
     // order (round-off); actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
-    void setWaves(int steps, int stripColumns = 16);
+    // Without stripColumns, the width set before, else 4 columns per step of the wave (32 for
+    // waves of 8: the width measured fastest, Documentation/TimeSkewing.md "Using it").
+    void setWaves(int steps, int stripColumns);
+    void setWaves(int steps);
+    int waveStripColumns() const { return waveStripColumns_ > 0 ? waveStripColumns_ : 4 * waveSteps_; }
     // Steps taken in waves since the start of the last solve (for tests and the benchmark).
     std::uint64_t stepsInWaves() const { return stepsInWaves_; }
     std::uint64_t wavesOffTheNearList() const { return waveNearGivenUp_; }  // (given up mid-wave)
@@ -262,7 +266,7 @@ private:
     static bool defaultDriftInOnePass();
     IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
-    int waveSteps_ = 1, waveStripColumns_ = 16;
+    int waveSteps_ = 1, waveStripColumns_ = 0;  // (0: waveStripColumns() follows the steps)
     WaveSchedule waveSchedule_;               // over every listed pair
     std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;         // why the last build has none

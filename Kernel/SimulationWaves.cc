@@ -13,9 +13,14 @@
 namespace talus {
 
 void Simulation::setWaves(int steps, int stripColumns) {
-    require(steps >= 1 && steps <= 255, "waves of 1 to 255 steps, got " + std::to_string(steps));
     require(stripColumns >= 1, "strips of waves need at least one column, got " + std::to_string(stripColumns));
-    waveSteps_ = steps, waveStripColumns_ = stripColumns;
+    setWaves(steps);
+    waveStripColumns_ = stripColumns;
+}
+
+void Simulation::setWaves(int steps) {
+    require(steps >= 1 && steps <= 255, "waves of 1 to 255 steps, got " + std::to_string(steps));
+    waveSteps_ = steps;
     waveScheduleBuild_ = 0;
 }
 
@@ -29,7 +34,7 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
     }
     double largest = 0;
     for (double r : state_.particles.radius) largest = std::max(largest, r);
-    return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns_, why);
+    return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns(), why);
 }
 
 // At a list build: the schedule of its waves over every listed pair (the particles are in the
@@ -112,6 +117,9 @@ void Simulation::continueWavesAfterRestart() {
 void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
     if (waveSteps_ < 2) return;
     out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
+    if (const std::optional<WaveCells> cells = waveCellsForBuild(state_.pairList.reach, nullptr))
+        out << " (" << cells->strips() << (cells->strips() == 1 ? " strip" : " strips") << " of about "
+            << cells->columns() / cells->strips() << " columns, asked for " << waveStripColumns() << ")";
     if (waveNearRunsFound_ > 0)
         out << ", over the near list (" << waveNearRunsFound_ << " of them, the last of " << state_.pairList.near.pairs.size()
             << " of " << state_.pairList.pairs.size() << " pairs)";
