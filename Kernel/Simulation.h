@@ -230,7 +230,7 @@ private:
     bool waveAllowed(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
     bool waveHasRoom(double displacement, double reach) const;
     void buildListForWave();
-    // Returns the steps it took (1 if the list needed a rebuild); recordContacts: at its last step.
+    // Returns the steps it took; recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
     const PlaceRun* nearPairsForWave(const Vec3& frame, double growth);

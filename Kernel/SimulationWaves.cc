@@ -188,38 +188,53 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     const Domain& domain = state_.domain;
     const double dt = state_.settings.timeStep, half = 0.5 * dt;
     const int levels = waveSteps_;
-    // The first half of the wave's first step over all particles, as a single step's; the same
-    // frame for the sweep's growths all through the wave (any frame common to both particles of a
-    // pair at a step keeps the sweep's bound, PairSweep.h).
+    // The wave's first step starts as a single step's (the last step's forces become the ones to
+    // kick with), its first half kick and drift going along with the first level's regions
+    // (WaveRegion::driftBegin); the same frame for the sweep's growths all through the wave (any
+    // frame common to both particles of a pair at a step keeps the sweep's bound, PairSweep.h).
     const Vec3 frame = sweepFrame();
-    DriftPassResult drifted = kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition,
-                                                      state_.gravity, frame, dt, list.sweepPointScratch);
-    checkPositionsFound(drifted.positionsBefore);
+    checkPositionsFound(positionSum(p, p.owned()));
+    previousForce_.swap(p.force);
+    p.force.resize(p.size());
+    p.torque.resize(p.size());
+    list.sweepPointScratch.resize(p.size());
     state_.time += dt;
     ++state_.step;
-    lastDisplacement_ = std::sqrt(drifted.moves.displacement2);
-    // A single step instead if the list needs a rebuild (the prediction was wrong).
-    if (list.needsRebuild(drifted.moves, p, state_.time, dt)) [[unlikely]] {
-        list.sweepPointsGrowth = drifted.growth;
-        driftFrame_ = drifted.meanVelocity;
-        computeForces(nullptr, OverlapCheck::withNextStep, &drifted);
-        halfKick(p, p.owned(), half);
-        notePositionsLeft(drifted.positionsAfter);
-        return 1;
-    }
-    const std::uint64_t nearMakes = list.near.makes;
-    // Over the near list: the growth of each step (its largest) for NearPairs::moved, the first
-    // step's but if the list was made at its positions (useNearPairs).
-    const PlaceRun* near = nearPairsForWave(frame, drifted.growth);
+    // Over the near list: the growth of each step (its largest) for NearPairs::moved.
+    const PlaceRun* near = nearPairsForWave(frame, 0);
     const double nearMoved = list.near.moved, nearLimit = nearAllowance(list.near.skin);
     std::array<double, 256> levelGrowth{};  // (waves of at most 255 steps: setWaves)
-    levelGrowth[0] = list.near.makes != nearMakes ? 0 : drifted.growth;
-    double growth = drifted.growth;
+    double growth = 0;
     const double startSpeed = list.maxSpeed;
-    double speed2 = drifted.moves.speed2, displacement2 = drifted.moves.displacement2, finalDisplacement2 = 0;
+    double speed2 = 0, displacement2 = 0, finalDisplacement2 = 0;
     double velocitySum[3] = {0, 0, 0};
     std::size_t mobile = 0;
     std::uint64_t positionsAfter = 0;  // (positionSum of where the last drift leaves the particles)
+    // A drift of the wave into step `step` (1: its first) at `time`, noted: the largest speed,
+    // displacement and growth; the near list given up for the rest of the wave if a particle sped
+    // up past it (the pairs swept so far were within it: every growth of their particles so far
+    // fitted); the run stopped if past the list's allowance.
+    const auto noteDrift = [&](const DriftPassResult& moved, int step, double time) {
+        if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
+        speed2 = std::max(speed2, moved.moves.speed2);
+        displacement2 = std::max(displacement2, moved.moves.displacement2);
+        growth = std::max(growth, moved.growth);
+        double& grown = levelGrowth[static_cast<std::size_t>(step) - 1];
+        grown = std::max(grown, moved.growth);
+        if (near && nearMoved + (levels + 1) * growth >= nearLimit) [[unlikely]] {
+            near = nullptr;
+            ++waveNearGivenUp_;
+        }
+        if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
+            std::ostringstream m;
+            m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
+              << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
+              << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
+              << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
+              << "with --wave-steps 1, or a larger --skin";
+            throw Error(m.str());
+        }
+    };
     ContactSummary early;  // of the wave's steps before its last (only their largest overlap counts)
     summary_ = ContactSummary{};
     if (recordContacts) records_.start(/*keepEach*/ state_.settings.writeFstat, p.owned());
@@ -231,6 +246,12 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
             for (const WaveRegion& region : waveSchedule_.regions()) {
                 const bool last = region.level + 1 == levels;
                 ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
+                for (std::uint32_t k = region.driftBegin; k < region.driftEnd; ++k) {
+                    const PlaceRun run = waveSchedule_.driftRuns()[k];
+                    noteDrift(kickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition, state_.gravity,
+                                                      frame, dt, list.sweepPointScratch, run.begin, run.end),
+                              1, state_.time);
+                }
                 loop.allowSpeed(std::sqrt(speed2));
                 loop.regionPairs(list, domain, waveSchedule_, region, state_.walls, near);
                 // The region's particles: the second half kick of this step, and unless it is the
@@ -245,29 +266,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
                     const DriftPassResult moved =
                         closeKickDriftAndStartForces(p, previousForce_, domain, &list.referencePosition, state_.gravity,
                                                      frame, dt, list.sweepPointScratch, begin, end);
-                    const double time = state_.time + (region.level + 1) * dt;
-                    if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
-                    speed2 = std::max(speed2, moved.moves.speed2);
-                    displacement2 = std::max(displacement2, moved.moves.displacement2);
-                    growth = std::max(growth, moved.growth);
-                    double& grown = levelGrowth[static_cast<std::size_t>(region.level) + 1];
-                    grown = std::max(grown, moved.growth);
-                    // A particle sped up past the prediction: past the near list's allowance, the
-                    // rest of the wave sweeps the whole list (the pairs swept so far were within
-                    // it: every growth of their particles so far fitted); past the list's, stop.
-                    if (near && nearMoved + (levels + 1) * growth >= nearLimit) [[unlikely]] {
-                        near = nullptr;
-                        ++waveNearGivenUp_;
-                    }
-                    if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
-                        std::ostringstream m;
-                        m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
-                          << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
-                          << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
-                          << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
-                          << "with --wave-steps 1, or a larger --skin";
-                        throw Error(m.str());
-                    }
+                    noteDrift(moved, region.level + 2, state_.time + (region.level + 1) * dt);
                     if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
                         finalDisplacement2 = std::max(finalDisplacement2, moved.moves.displacement2);
                         for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];

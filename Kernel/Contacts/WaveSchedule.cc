@@ -52,10 +52,8 @@ std::optional<WaveCells> WaveCells::fit(const Domain& domain, double longestSepa
 }
 
 std::size_t WaveCells::cell(int row, int column) const {
-    // The strip holding the column: strips are a few, stripStart_ ascending.
-    const auto strip = static_cast<std::size_t>(std::upper_bound(stripStart_.begin(), stripStart_.end(), column) -
-                                                stripStart_.begin() - 1);
-    const int begin = stripStart_[strip], width = stripStart_[strip + 1] - begin;
+    const auto q = static_cast<std::size_t>(strip(column));
+    const int begin = stripStart_[q], width = stripStart_[q + 1] - begin;
     return static_cast<std::size_t>(begin) * static_cast<std::size_t>(rows_) +
            static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column - begin);
 }
@@ -83,6 +81,7 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     regions_.clear();
     placeRuns_.clear();
     wallIndex_.clear();
+    driftRuns_.clear();
     levels_ = cells.levels();
     if (positions.size() < particles) return fail(why, "fewer positions than particles");
     if (particles > 0xfffffffeu) return fail(why, "too many particles for a wave schedule");
@@ -123,6 +122,28 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     const auto levels = static_cast<std::size_t>(levels_);
     std::vector<std::uint32_t> regionAt(particles * levels);
     std::vector<std::uint16_t> step(particles, 0);
+    // The first step's start (the drift), a strip's row at a time (its cells take consecutive
+    // slots): each level-0 region starts those of its rows and the rows beside it, in the
+    // columns of its own and the next, that no region before it started (driftedBy[i]: the region).
+    std::vector<unsigned char> rowStarted(static_cast<std::size_t>(cells.strips()) * static_cast<std::size_t>(cells.rows()), 0);
+    constexpr std::uint32_t notYet = 0xffffffffu;
+    std::vector<std::uint32_t> driftedBy(particles, notYet);
+    std::uint32_t lastRunOf = notYet;  // (the region of the last run, which the next may extend)
+    const auto startRow = [&](int q, int r, std::uint32_t id) {
+        unsigned char& started = rowStarted[static_cast<std::size_t>(q) * static_cast<std::size_t>(cells.rows()) +
+                                            static_cast<std::size_t>(r)];
+        if (started) return;
+        started = 1;
+        const std::uint32_t begin = cellStart[cells.cell(r, cells.stripStart(q))];
+        const std::uint32_t end = cellStart[cells.cell(r, cells.stripStart(q + 1) - 1) + 1];
+        if (begin == end) return;
+        for (std::uint32_t i = begin; i < end; ++i) driftedBy[i] = id;
+        if (lastRunOf == id && driftRuns_.back().end == begin)
+            driftRuns_.back().end = end;
+        else
+            driftRuns_.push_back({begin, end});
+        lastRunOf = id;
+    };
     bool ok = true;
     cells.forEachRegion([&](int u, int firstColumn, int across, int t) {
         if (!ok) return;
@@ -160,11 +181,23 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
             wallIndex_.insert(wallIndex_.end(), wallOf.begin() + firstWall[region.runBegin[r]],
                               wallOf.begin() + firstWall[region.runEnd[r]]);
         region.wallsEnd = static_cast<std::uint32_t>(wallIndex_.size());
-        if (runs > 0) regions_.push_back(region);  // (a region without particles has no pairs)
+        if (runs == 0) return;  // (a region without particles has no pairs)
+        region.driftBegin = static_cast<std::uint32_t>(driftRuns_.size());
+        if (t == 0)
+            for (int r = u - 1; r <= u + 1; ++r)
+                for (int k = -1; k <= across; ++k) {
+                    const int column = ((firstColumn + k) % cells.columns() + cells.columns()) % cells.columns();
+                    startRow(cells.strip(column), (r + cells.rows()) % cells.rows(), id);
+                }
+        region.driftEnd = static_cast<std::uint32_t>(driftRuns_.size());
+        regions_.push_back(region);
     });
     if (!ok) return false;
-    for (std::size_t k = 0; k < particles; ++k)
+    for (std::size_t k = 0; k < particles; ++k) {
         if (step[k] != levels_) return fail(why, "particle " + std::to_string(k) + " was not advanced by every step of the wave");
+        if (driftedBy[k] > regionAt[k * levels])
+            return fail(why, "particle " + std::to_string(k) + " advanced before its first step started");
+    }
     // A pair is computed at level t by the first of its particles' regions to advance then (the
     // other particle is still at step t; when its own region advances, the first is at t + 1). So
     // the one advancing second must still be at step t when the first advances (its region of
@@ -184,6 +217,9 @@ bool WaveSchedule::make(const WaveCells& cells, const std::vector<ParticlePair>&
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const std::uint32_t* a = &regionAt[pairs[k].i * levels];
         const std::uint32_t* b = &regionAt[pairs[k].j * levels];
+        if (std::max(driftedBy[pairs[k].i], driftedBy[pairs[k].j]) > std::min(a[0], b[0]))
+            return fail(why, "listed pair (" + std::to_string(pairs[k].i) + ", " + std::to_string(pairs[k].j) +
+                                 ") computed before the first step of both its particles started");
         std::uint64_t key = 0;
         for (std::size_t t = 0; t < levels; ++t) {
             const bool iFirst = a[t] <= b[t];

@@ -18,6 +18,7 @@
 // first in a model of the step (Drivers/Benchmarks/StripWave.h).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -44,6 +45,10 @@ public:
     int strips() const { return static_cast<int>(stripStart_.size()) - 1; }
     int levels() const { return levels_; }
     int stripStart(int strip) const { return stripStart_[static_cast<std::size_t>(strip)]; }
+    // The strip holding a column (0 to columns() - 1).
+    int strip(int column) const {
+        return static_cast<int>(std::upper_bound(stripStart_.begin(), stripStart_.end(), column) - stripStart_.begin()) - 1;
+    }
     std::size_t cellCount() const { return static_cast<std::size_t>(rows_) * static_cast<std::size_t>(columns_); }
 
     int row(const Vec3& x) const { return bin(x[0] - lo_[0], width_[0], rows_); }
@@ -117,9 +122,15 @@ struct PlaceRun {
 // placeRuns()[runs, end): those before interiorEnd hold interior pairs (PairList::interiorPairs),
 // the rest pairs that need the periodic image; and its particles' wall candidates,
 // wallIndex()[wallsBegin, wallsEnd).
+// A region of the first level first starts the wave's first step (the half kick and the drift)
+// of the particles in the runs of slots driftRuns()[driftBegin, driftEnd), those of its own rows
+// and the next that no region before it started: the wave's first step goes along with its first
+// level, as its later steps do with the levels before them, instead of a pass over all particles
+// ahead of the wave (which at 10^6 particles reads them all from memory once more a wave).
 struct WaveRegion {
     std::uint32_t runs = 0, interiorEnd = 0, end = 0;
     std::uint32_t wallsBegin = 0, wallsEnd = 0;
+    std::uint32_t driftBegin = 0, driftEnd = 0;
     std::uint32_t runBegin[2] = {0, 0}, runEnd[2] = {0, 0};
     int level = 0;
 };
@@ -131,7 +142,8 @@ public:
     // are not in the cells' order or a pair does not join neighbouring cells. It notes which
     // region advances each particle at each step of the wave and fails if a particle does not
     // advance once from every step in turn, or a region advances a particle whose partner is not
-    // at the same step or the next.
+    // at the same step or the next, or a particle's first step does not start once, before the
+    // first region that computes one of its pairs or advances it.
     // pairOrder: if given, the order of the pairs that makes each region's pairs a few runs of
     // places (new place k holds the pair at place pairOrder[k]; the interior pairs stay first),
     // which the caller must give the list (PairList::reorderPairs) before the schedule is used:
@@ -143,16 +155,18 @@ public:
     const std::vector<WaveRegion>& regions() const { return regions_; }
     const std::vector<PlaceRun>& placeRuns() const { return placeRuns_; }
     const std::vector<std::uint32_t>& wallIndex() const { return wallIndex_; }
+    const std::vector<PlaceRun>& driftRuns() const { return driftRuns_; }  // (runs of slots)
     int levels() const { return levels_; }
     std::size_t bytes() const {
         return regions_.capacity() * sizeof(WaveRegion) + placeRuns_.capacity() * sizeof(PlaceRun) +
-               wallIndex_.capacity() * sizeof(std::uint32_t);
+               wallIndex_.capacity() * sizeof(std::uint32_t) + driftRuns_.capacity() * sizeof(PlaceRun);
     }
 
 private:
     std::vector<WaveRegion> regions_;
     std::vector<PlaceRun> placeRuns_;
     std::vector<std::uint32_t> wallIndex_;
+    std::vector<PlaceRun> driftRuns_;
     int levels_ = 0;
 };
 
