@@ -63,11 +63,11 @@ public:
     // periodic along x and y, one rank, nothing but the particles' own motion between steps, no
     // output within the wave). The same physics as single steps, the forces summed in another
     // order (round-off); actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
-    // Without stripColumns, the width set before, else 4 columns per step of the wave (32 for
-    // waves of 8: the width measured fastest, Documentation/TimeSkewing.md "Using it").
+    // Without stripColumns, the width set before, else 8 columns per step of the wave (64 for
+    // waves of 8: strips of 64-128 columns measured fastest, Documentation/TimeSkewing.md "Using it").
     void setWaves(int steps, int stripColumns);
     void setWaves(int steps);
-    int waveStripColumns() const { return waveStripColumns_ > 0 ? waveStripColumns_ : 4 * waveSteps_; }
+    int waveStripColumns() const { return waveStripColumns_ > 0 ? waveStripColumns_ : 8 * waveSteps_; }
     // Steps taken in waves since the start of the last solve (for tests and the benchmark).
     std::uint64_t stepsInWaves() const { return stepsInWaves_; }
     std::uint64_t wavesOffTheNearList() const { return waveNearGivenUp_; }  // (given up mid-wave)

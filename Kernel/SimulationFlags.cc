@@ -38,7 +38,7 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            "advance stretches of the bed N steps at a time while they are cached (time skewing; 1: a step per pass, "
            "the default); periodic x and y, spheres, one rank",
            [this](const std::string& v) { setWaves(CommandLine::toInt("wave-steps", v)); });
-    cl.add("wave-strip", "C", "columns of cells per strip of the waves (default 4 per step of the waves: 32 for 8)",
+    cl.add("wave-strip", "C", "columns of cells per strip of the waves (default 8 per step of the waves: 64 for 8)",
            [this](const std::string& v) { setWaves(waveSteps_, CommandLine::toInt("wave-strip", v)); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });

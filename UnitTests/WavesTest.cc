@@ -211,14 +211,14 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
 }
 
-// Strips four columns wide per step of the wave unless a width is asked for (TimeSkewing.md
-// "Using it": waves of 8 were measured fastest in strips of 32, and slower in the old default 16).
+// Strips eight columns wide per step of the wave unless a width is asked for (TimeSkewing.md
+// "Using it": waves of 8 were measured fastest in strips of 64-128 columns, slower in 32-50).
 TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
     Scene s;
     s.setWaves(8);
-    EXPECT_EQ(s.waveStripColumns(), 32);
+    EXPECT_EQ(s.waveStripColumns(), 64);
     s.setWaves(12);
-    EXPECT_EQ(s.waveStripColumns(), 48);
+    EXPECT_EQ(s.waveStripColumns(), 96);
     s.setWaves(12, 40);
     EXPECT_EQ(s.waveStripColumns(), 40);
     s.setWaves(8);  // (the width asked for stays)
