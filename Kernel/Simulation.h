@@ -233,7 +233,7 @@ private:
     // Returns the steps it took; recordContacts: at its last step.
     std::uint64_t integrateWave(bool recordContacts);
     void makeWaveSchedule();
-    const PlaceRun* nearPairsForWave(const Vec3& frame, double growth);
+    const PlaceRun* nearPairsForWave(const Vec3& frame);
     void continueWavesAfterRestart();
     void checkPositionsFound(std::uint64_t found);
     void notePositionsLeft(std::uint64_t sum);

@@ -60,10 +60,10 @@ void Simulation::makeWaveSchedule() {
     for (double r : state_.particles.radius) waveLargestRadius_ = std::max(waveLargestRadius_, r);
 }
 
-// The pairs the wave about to run computes (its first drift done, the sweep's points grown by
-// at most `growth` in `frame`): those of the near list (NearPairs), as the near pairs of each run
-// of the schedule (places in the near list), where the moves within the wave keep that whole,
-// else all (null). The near list holds
+// The pairs the wave about to run computes (before its first drift, the sweep's growths taken in
+// `frame`): those of the near list (NearPairs), as the near pairs of each run of the schedule
+// (places in the near list), where the moves within the wave keep that whole, else all (null).
+// The near list (made, if it is, at the positions before the first drift) holds
 // every pair the sweep can pick while its particles have moved (the sum of the steps' growths,
 // NearPairs::moved) less than half its skin less a step's growth (useNearPairs); within the wave
 // that is asked of (levels + 1) growths, each predicted as a sweep point's in `frame` if the
@@ -72,14 +72,14 @@ void Simulation::makeWaveSchedule() {
 // what is left of it. The force loop sweeps each run's near pairs as a single step sweeps the
 // near list (ContactForceLoop::regionPairs): the forces of the whole list's waves, to the bit,
 // for a sweep of the near pairs alone.
-const PlaceRun* Simulation::nearPairsForWave(const Vec3& frame, double growth) {
+const PlaceRun* Simulation::nearPairsForWave(const Vec3& frame) {
     PairList& list = state_.pairList;
     NearPairs& near = list.near;
     const ParticleStore& p = state_.particles;
     const double dt = state_.settings.timeStep;
     const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = nearAllowance(nearSkin);
     const double speed = 2 * list.maxSpeed + state_.gravity.norm() * waveSteps_ * dt + frame.norm();
-    const double wave = (waveSteps_ + 1) * std::max(growth, 1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
+    const double wave = (waveSteps_ + 1) * (1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
     if (!(nearSkin > 0 && wave < nearLimit)) return nullptr;
     const bool whole = nearPairsAreCurrent(list, nearSkin) && near.moved + wave < nearLimit;
     if (!whole) {
@@ -201,7 +201,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     state_.time += dt;
     ++state_.step;
     // Over the near list: the growth of each step (its largest) for NearPairs::moved.
-    const PlaceRun* near = nearPairsForWave(frame, 0);
+    const PlaceRun* near = nearPairsForWave(frame);
     const double nearMoved = list.near.moved, nearLimit = nearAllowance(list.near.skin);
     std::array<double, 256> levelGrowth{};  // (waves of at most 255 steps: setWaves)
     double growth = 0;
