@@ -194,10 +194,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     // frame common to both particles of a pair at a step keeps the sweep's bound, PairSweep.h).
     const Vec3 frame = sweepFrame();
     checkPositionsFound(positionSum(p, p.owned()));
-    previousForce_.swap(p.force);
-    p.force.resize(p.size());
-    p.torque.resize(p.size());
-    list.sweepPointScratch.resize(p.size());
+    startFirstHalf(p, previousForce_, list.sweepPointScratch);
     state_.time += dt;
     ++state_.step;
     // Over the near list: the growth of each step (its largest) for NearPairs::moved.

@@ -398,12 +398,16 @@ double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& refe
 DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
                                         const std::vector<Vec3>* reference, const Vec3& gravity,
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points) {
+    startFirstHalf(p, previousForce, points);
+    return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, p.size());
+}
+
+void startFirstHalf(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points) {
     const std::size_t n = p.size();
-    previousForce.swap(p.force);  // the last step's forces; p.force is refilled below
+    previousForce.swap(p.force);  // the last step's forces; p.force is refilled by the pass
     p.force.resize(n);
     p.torque.resize(n);
     points.resize(n);
-    return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, n);
 }
 
 namespace {

@@ -50,6 +50,12 @@ struct DriftPassResult {
 // step before left, so that a particle moved by hand in between (in a driver's hook) unmakes it.
 std::uint64_t positionSum(const ParticleStore& p, std::size_t n);
 
+// The start of a step's first half for all particles: the last step's forces become
+// `previousForce` (by a swap), and the force and torque arrays and the sweep's points are sized to
+// the particles, for the pass below over all of them or over ranges of slots (a wave's first
+// level, Contacts/WaveSchedule.h).
+void startFirstHalf(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points);
+
 // reference: the positions at the list's build, or null (no build to compare with: no
 // displacement). The particles are all owned (no ghosts).
 DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
