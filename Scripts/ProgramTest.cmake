@@ -33,7 +33,8 @@ function(talus_program_test)
     set(T_EXIT 0)
   endif()
   if(NOT T_EXIT MATCHES "^[0-9]+$")
-    message(FATAL_ERROR "talus_program_test ${T_NAME}: EXIT must be an exit status (0 to 255), got '${T_EXIT}'")
+    message(FATAL_ERROR "talus_program_test ${T_NAME}: EXIT must be an exit status (0 to 255), "
+                        "got '${T_EXIT}'")
   endif()
   # add_test runs an executable target named first by its file; behind the wrapper it must be named so.
   list(POP_FRONT T_COMMAND program)
@@ -44,7 +45,8 @@ function(talus_program_test)
   if(T_WORKING_DIRECTORY)
     set(workingDirectory WORKING_DIRECTORY ${T_WORKING_DIRECTORY})
   endif()
-  add_test(NAME ${T_NAME} COMMAND sh ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/expectExit.sh ${T_EXIT} ${program} ${T_COMMAND}
+  add_test(NAME ${T_NAME}
+           COMMAND sh ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/expectExit.sh ${T_EXIT} ${program} ${T_COMMAND}
            ${workingDirectory})
   set_tests_properties(${T_NAME} PROPERTIES FAIL_REGULAR_EXPRESSION "${TALUS_PROGRAM_TEST_FAIL}")
   set_property(DIRECTORY APPEND PROPERTY TALUS_PROGRAM_TESTS ${T_NAME})
@@ -62,9 +64,9 @@ function(talus_check_program_tests)
   get_property(programTests DIRECTORY PROPERTY TALUS_PROGRAM_TESTS)
   foreach(test IN LISTS tests)
     if(NOT test IN_LIST programTests)
-      message(FATAL_ERROR "test ${test} (${CMAKE_CURRENT_SOURCE_DIR}) was added by add_test, which ignores its "
-                          "exit status under PASS_REGULAR_EXPRESSION: add it by talus_program_test "
-                          "(Scripts/ProgramTest.cmake) or talus_self_test")
+      message(FATAL_ERROR "test ${test} (${CMAKE_CURRENT_SOURCE_DIR}) was added by add_test, which "
+                          "ignores its exit status under PASS_REGULAR_EXPRESSION: add it by "
+                          "talus_program_test (Scripts/ProgramTest.cmake) or talus_self_test")
     endif()
     get_test_property(${test} FAIL_REGULAR_EXPRESSION failPatterns)
     foreach(pattern IN LISTS TALUS_PROGRAM_TEST_FAIL)
