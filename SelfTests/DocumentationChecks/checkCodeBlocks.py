@@ -60,22 +60,39 @@ def driver_of(lines, repository):
     return None
 
 
+def write_if_changed(path, text):
+    """Writes text to path unless it is there already (a second run compiles nothing); whether
+    it wrote."""
+    if os.path.exists(path):
+        with open(path, encoding="utf-8") as f:
+            if f.read() == text:
+                return False
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    return True
+
+
 def build_and_run(programs, options):
     """programs: (name, where) pairs whose sources are in options.work; the failures, as text."""
     work = options.work
-    with open(os.path.join(work, "CMakeLists.txt"), "w") as f:
-        f.write("cmake_minimum_required(VERSION 3.20)\nproject(DocumentationPrograms LANGUAGES CXX)\n"
-                "set(CMAKE_CXX_STANDARD 20)\nfind_package(Talus REQUIRED)\n"
-                "add_compile_options(-Wall -Wextra -Wpedantic -Werror)\n")
-        for name, _ in programs:
-            f.write(f"add_executable({name} {name}.cc)\ntarget_link_libraries({name} PRIVATE Talus::talus)\n")
-    configure = subprocess.run(
-        [options.cmake, "-S", work, "-B", os.path.join(work, "build"),
-         f"-DTalus_DIR={os.path.abspath(options.talus_dir)}",
-         f"-DCMAKE_CXX_FLAGS={options.cxx_flags}", f"-DCMAKE_EXE_LINKER_FLAGS={options.link_flags}"],
-        env=dict(os.environ, CXX=options.cxx), capture_output=True, text=True)
-    if configure.returncode != 0:
-        return ["configuring the programs failed:\n" + configure.stdout + configure.stderr]
+    project = ("cmake_minimum_required(VERSION 3.20)\nproject(DocumentationPrograms LANGUAGES CXX)\n"
+               "set(CMAKE_CXX_STANDARD 20)\nfind_package(Talus REQUIRED)\n"
+               "add_compile_options(-Wall -Wextra -Wpedantic -Werror)\n")
+    for name, _ in programs:
+        project += f"add_executable({name} {name}.cc)\ntarget_link_libraries({name} PRIVATE Talus::talus)\n"
+    write_if_changed(os.path.join(work, "CMakeLists.txt"), project)
+    configure_command = [options.cmake, "-S", work, "-B", os.path.join(work, "build"),
+                         f"-DTalus_DIR={os.path.abspath(options.talus_dir)}",
+                         f"-DCMAKE_CXX_COMPILER={options.cxx}", f"-DCMAKE_CXX_FLAGS={options.cxx_flags}",
+                         f"-DCMAKE_EXE_LINKER_FLAGS={options.link_flags}"]
+    # Configured again only when the command changed (finding Talus and MPI takes seconds); a
+    # changed CMakeLists.txt or library is picked up by the build itself.
+    if write_if_changed(os.path.join(work, "configure.txt"), "\n".join(configure_command)) or \
+            not os.path.exists(os.path.join(work, "build", "CMakeCache.txt")):
+        configure = subprocess.run(configure_command, capture_output=True, text=True)
+        if configure.returncode != 0:
+            os.remove(os.path.join(work, "configure.txt"))
+            return ["configuring the programs failed:\n" + configure.stdout + configure.stderr]
     failures = []
     for name, where in programs:
         build = subprocess.run([options.cmake, "--build", os.path.join(work, "build"), "--target", name],
@@ -117,8 +134,8 @@ def main():
             if re.search(r"\bint\s+main\s*\(", block.text):
                 stem = re.sub(r"\W", "_", os.path.splitext(where_page)[0])
                 name = f"program_{stem}_{block.first_line}"
-                with open(os.path.join(options.work, name + ".cc"), "w") as f:
-                    f.write(f'#line {block.first_line} "{where_page}"\n' + block.text)
+                write_if_changed(os.path.join(options.work, name + ".cc"),
+                                 f'#line {block.first_line} "{where_page}"\n' + block.text)
                 programs.append((name, where))
             elif driver is None:
                 failures.append(f"{where}: the block is neither a whole program (with main) nor a quote of "
