@@ -16,6 +16,7 @@
 # FAIL_REGULAR_EXPRESSION (set_property(TEST name APPEND PROPERTY ...)); replacing it is refused.
 # At the end of a directory that uses talus_program_test, every test of the directory must have
 # been added by it (gtest_discover_tests' tests are not directory tests and are not concerned).
+# No argument may hold a ';' (CMake cuts lists there): write `sh -c "a && b"`, not "a; b".
 include_guard(GLOBAL)
 
 # The lines that fail a test whatever else it printed: the exit-status check's, AddressSanitizer's
