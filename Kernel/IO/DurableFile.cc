@@ -38,7 +38,7 @@ void flushToDisk(std::FILE* file, const std::string& path) {
     if (::fsync(::fileno(file)) != 0 && errno != EINVAL) throwWriteError(path);
 }
 
-void replaceFile(const std::string& path, const std::function<void(std::ostream&)>& write) {
+void replaceFile(const std::string& path, const std::function<void(std::ostream&)>& write, bool syncFolder) {
     const std::string temporary = path + ".tmp";
     {
         errno = 0;
@@ -54,6 +54,7 @@ void replaceFile(const std::string& path, const std::function<void(std::ostream&
     errno = 0;
     if (std::rename(temporary.c_str(), path.c_str()) != 0)
         throw Error("cannot rename " + temporary + " to " + path + ": " + std::strerror(errno));
+    if (!syncFolder) return;
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     syncPath(folder.empty() ? "." : folder.string(), O_RDONLY | O_DIRECTORY);
 }

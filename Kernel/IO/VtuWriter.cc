@@ -70,7 +70,8 @@ void writeFrame(std::ostream& out, const ParticleStore& p, const std::vector<std
 
 void writeVtu(const std::string& path, const ParticleStore& p, const std::vector<std::uint32_t>& order,
               const std::vector<Superquadric>& shapes) {
-    replaceFile(path, [&](std::ostream& out) { writeFrame(out, p, order, shapes); });
+    // (The folder is synced once per frame, by the restart file written after the frame.)
+    replaceFile(path, [&](std::ostream& out) { writeFrame(out, p, order, shapes); }, /*syncFolder*/ false);
 }
 
 void writePvd(const std::string& path, const std::string& base, const std::vector<double>& times) {
@@ -81,7 +82,7 @@ void writePvd(const std::string& path, const std::string& base, const std::vecto
         for (std::size_t k = 0; k < times.size(); ++k)
             out << "<DataSet timestep=\"" << times[k] << "\" file=\"" << file << "_" << k << ".vtu\"/>\n";
         out << "</Collection>\n</VTKFile>\n";
-    });
+    }, /*syncFolder*/ false);
 }
 
 }  // namespace talus
