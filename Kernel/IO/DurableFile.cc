@@ -38,6 +38,17 @@ void flushToDisk(std::FILE* file, const std::string& path) {
     if (::fsync(::fileno(file)) != 0 && errno != EINVAL) throwWriteError(path);
 }
 
+void cutBackToRestartPoint(const std::string& path, std::uint64_t bytes) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path, error);
+    if (error || size < bytes)
+        throw Error("cannot continue " + path + ": the restart file expects at least " + std::to_string(bytes) +
+                    " bytes, but it " + (error ? "does not exist" : "has " + std::to_string(size)) +
+                    " (restart in the folder of the run that wrote the restart file)");
+    std::filesystem::resize_file(path, bytes, error);
+    if (error) throw Error("cannot cut " + path + " back to the restart point: " + error.message());
+}
+
 void replaceFile(const std::string& path, const std::function<void(std::ostream&)>& write, bool syncFolder) {
     const std::string temporary = path + ".tmp";
     {

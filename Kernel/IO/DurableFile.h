@@ -6,6 +6,7 @@
 // ("No space left on device", "Not a directory", ...).
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <ostream>
@@ -18,6 +19,10 @@ namespace talus {
 
 // Flushes stdio's buffer of `file` (written to `path`) and syncs it to the disk.
 void flushToDisk(std::FILE* file, const std::string& path);
+
+// A restarted run's appended file: cut back to the `bytes` the restart file recorded (dropping
+// what a stopped run wrote after its restart point); an Error if it is shorter or missing.
+void cutBackToRestartPoint(const std::string& path, std::uint64_t bytes);
 
 // Writes PATH anew through `write` as described above. With syncFolder, the folder is synced
 // after the rename, which makes this rename and every earlier one in the folder survive a power

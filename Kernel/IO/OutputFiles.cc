@@ -36,14 +36,7 @@ OutputFiles::~OutputFiles() {
 void OutputFiles::open(File& file, const std::string& path, bool restarted, std::uint64_t bytes) {
     file.path = path;
     if (restarted) {
-        std::error_code error;
-        const auto size = fs::file_size(path, error);
-        if (error || size < bytes)
-            throw Error("cannot continue " + path + ": the restart file expects at least " + std::to_string(bytes) +
-                        " bytes, but it " + (error ? "does not exist" : "has " + std::to_string(size)) +
-                        " (restart in the folder of the run that wrote the restart file)");
-        fs::resize_file(path, bytes, error);  // drop frames written after the restart point
-        if (error) throw Error("cannot cut " + path + " back to the restart point: " + error.message());
+        cutBackToRestartPoint(path, bytes);  // drop frames written after the restart point
         file.handle = std::fopen(path.c_str(), "ab");
     } else {
         file.handle = std::fopen(path.c_str(), "wb");
