@@ -26,7 +26,7 @@
 // composition with the maser's.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -35,6 +35,7 @@
 #include "Boundaries/MaserBoundary.h"
 #include "Chute/Chute.h"
 #include "Chute/ChuteStatistics.h"
+#include "IO/SeriesFile.h"
 #include "Math/SummationRounding.h"
 
 using namespace talus;
@@ -279,17 +280,12 @@ private:
     void sample(const ChuteSnapshot& box) {
         const Census c = census();
         if (rank() != 0) return;
-        if (!series_.is_open()) {  // appended to, so that a restarted run continues it
-            series_.open(name() + ".series", std::ios::app);
-            if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
-                series_ << "# t active maserKineticEnergy maserMassFlux maserMeanVelocity maserHeight maserSmallConcentration"
-                           " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front"
-                           " maserSegregation\n";
-        }
-        series_ << time() << ' ' << (activatedAt_ >= 0) << ' ' << box.kineticEnergy << ' ' << box.massFlux << ' '
+        std::ostringstream line;
+        line << time() << ' ' << (activatedAt_ >= 0) << ' ' << box.kineticEnergy << ' ' << box.massFlux << ' '
                 << box.meanVelocity << ' ' << box.height << ' ' << box.smallConcentration << ' ' << maser.crossings() << ' '
                 << maser.createdMass(large) << ' ' << maser.createdMass(small) << ' ' << c.chute << ' ' << c.chuteMass
-                << ' ' << outlet.count() << ' ' << outlet.mass() << ' ' << c.front << ' ' << box.segregation << std::endl;
+                << ' ' << outlet.count() << ' ' << outlet.mass() << ' ' << c.front << ' ' << box.segregation << '\n';
+        series_.append(line.str());
     }
 
     // Created = in the chute + deleted, to the particle; the maser keeps its spheres.
@@ -336,7 +332,10 @@ private:
     double oneWayReactions_ = 0;  // pair-steps across the maser's face past the reaction overlap
     std::vector<double> unsummed_ = std::vector<double>(3, 0.0);  // this rank's sums since the last sample
     PlateauDetector plateau_{50, 0.02};
-    std::ofstream series_;
+    SeriesFile series_{*this, "series",
+                       "# t active maserKineticEnergy maserMassFlux maserMeanVelocity maserHeight maserSmallConcentration"
+                       " crossings createdMassLarge createdMassSmall chuteParticles chuteMass deleted deletedMass front"
+                       " maserSegregation\n"};
 };
 
 int main(int argc, char** argv) {

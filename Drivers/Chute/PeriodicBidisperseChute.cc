@@ -15,13 +15,15 @@
 // (The statistics are the driver's own: a restarted run starts them afresh.)
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <tuple>
 #include <vector>
 
 #include "Boundaries/InsertionBoundary.h"
 #include "Chute/Chute.h"
 #include "Chute/ChuteStatistics.h"
+#include "IO/DurableFile.h"
+#include "IO/SeriesFile.h"
 #include "Species/BidisperseRule.h"
 
 using namespace talus;
@@ -88,14 +90,10 @@ public:
         // At the multiples of the sample interval (so also after a restart).
         if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
         const ChuteSnapshot s = measureChute(*this, length, width, smallSpecies_);
-        if (!series_.is_open() && rank() == 0) {  // appended to, so that a restarted run continues it
-            series_.open(name() + ".series", std::ios::app);
-            if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
-                series_ << "# t kineticEnergy massFlux meanVelocity height smallConcentration (per unit area/width)\n";
-        }
-        if (rank() == 0)
-            series_ << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height
-                << ' ' << s.smallConcentration << std::endl;
+        std::ostringstream line;
+        line << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height << ' '
+             << s.smallConcentration << '\n';
+        series_.append(line.str());
         // No sphere may pass through the base (its centres lie within +-0.25 of z = 0).
         for (std::size_t i = 0; i < particles().owned(); ++i)
             if (!particles().fixed[i] && particles().position[i].z() < -0.5)
@@ -128,11 +126,12 @@ public:
         const MeanAndError u = batchMean(velocity), h = batchMean(height), q = batchMean(flux);
         profile_.write(name() + ".profile", this);
         if (rank() != 0) return;
-        std::ofstream out(name() + ".steady");
-        out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
-            << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";
-        out << "meanVelocity " << u.mean << ' ' << u.error << "\nheight " << h.mean << ' ' << h.error << "\nmassFlux "
-            << q.mean << ' ' << q.error << '\n';
+        replaceFile(name() + ".steady", [&](std::ostream& out) {
+            out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
+                << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";
+            out << "meanVelocity " << u.mean << ' ' << u.error << "\nheight " << h.mean << ' ' << h.error
+                << "\nmassFlux " << q.mean << ' ' << q.error << '\n';
+        });
         std::printf("%s: steady from t = %g; over %zu samples: mean velocity %.4f +- %.4f, height %.3f +- %.3f, "
                     "mass flux %.4f +- %.4f (NAME.steady, depth profiles in NAME.profile)\n",
                     name().c_str(), plateau_.steadySince(), steadySamples_.size(), u.mean, u.error, h.mean, h.error,
@@ -146,7 +145,8 @@ private:
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
     PlateauDetector plateau_{200, 0.02};
     std::vector<ChuteSnapshot> steadySamples_;
-    std::ofstream series_;
+    SeriesFile series_{*this, "series",
+                       "# t kineticEnergy massFlux meanVelocity height smallConcentration (per unit area/width)\n"};
     DepthProfile profile_{0.25, 40, 20, 10, 1};
 };
 

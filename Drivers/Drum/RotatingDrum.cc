@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "Chute/Chute.h"
 #include "DrumAnalysis.h"
@@ -233,13 +233,11 @@ void RotatingDrum::writeSample() {
     const double angle = rotating() ? drum::surfaceAngle(particles()) : NAN;
     if (rotating() && rotations() >= 1 && std::isfinite(angle)) angleSum_ += angle, ++angleSamples_;
     if (!settings().writeData) return;  // --files off
-    std::ofstream series(name() + ".series", std::ios::app);  // appended, so a restart continues it
-    if (step() <= 1 + static_cast<std::uint64_t>(std::llround(sampleInterval / timeStep())))
-        series << "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
-                  " (energy: translational + rotational of the bed; angle nan while filling)\n";
-    series.precision(10);
-    series << time() << ' ' << rotations() << ' ' << energies().kinetic + energies().rotational << ' '
-           << mixing.mixing << ' ' << mixing.segregation << ' ' << angle << '\n';
+    std::ostringstream line;
+    line.precision(10);
+    line << time() << ' ' << rotations() << ' ' << energies().kinetic + energies().rotational << ' '
+         << mixing.mixing << ' ' << mixing.segregation << ' ' << angle << '\n';
+    series_.append(line.str());
 }
 
 void RotatingDrum::actionsAfterSolve() {

@@ -24,6 +24,7 @@
 
 #include <string>
 
+#include "IO/SeriesFile.h"
 #include "Simulation.h"
 
 namespace talus {
@@ -72,6 +73,9 @@ private:
     int targetCount_ = 0, insertedSpheres_ = 0, insertedEllipsoids_ = 0, rounds_ = 0;
     double lastInsertion_ = 0, rotationStart_ = -1, innerRadius_ = 0, angleSum_ = 0;
     int angleSamples_ = 0;
+    SeriesFile series_{*this, "series",
+                       "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
+                       " (energy: translational + rotational of the bed; angle nan while filling)\n"};
 };
 
 }  // namespace talus

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <ostream>
 
 #include "Error.h"
+#include "IO/DurableFile.h"
 #include "Math/Vector.h"
 #include "Simulation.h"
 
@@ -206,14 +207,13 @@ void DepthProfile::restore(const std::vector<double>& v) {
 
 void DepthProfile::write(const std::string& path, const Simulation* s) const {
     if (s && s->rank() != 0) return;
-    std::ofstream out(path);
-    if (!out) throw Error("cannot write depth profile " + path);
-    out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";
-    const double slab = bin_ * length_ * width_ * static_cast<double>(std::max<std::size_t>(samples_, 1));
-    for (std::size_t k = 0; k < volume_.size(); ++k)
-        out << (k + 0.5) * bin_ << ' ' << volume_[k] / slab << ' ' << (mass_[k] > 0 ? momentum_[k] / mass_[k] : 0) << ' '
-            << (volume_[k] > 0 ? smallVolume_[k] / volume_[k] : 0) << '\n';
-    if (!out) throw Error("error while writing depth profile " + path);
+    replaceFile(path, [&](std::ostream& out) {
+        out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";
+        const double slab = bin_ * length_ * width_ * static_cast<double>(std::max<std::size_t>(samples_, 1));
+        for (std::size_t k = 0; k < volume_.size(); ++k)
+            out << (k + 0.5) * bin_ << ' ' << volume_[k] / slab << ' ' << (mass_[k] > 0 ? momentum_[k] / mass_[k] : 0)
+                << ' ' << (volume_[k] > 0 ? smallVolume_[k] / volume_[k] : 0) << '\n';
+    });
 }
 
 }  // namespace talus

@@ -4,6 +4,7 @@
 
 #include "Contacts/ContactReport.h"
 #include "Error.h"
+#include "IO/DurableFile.h"
 #include "IO/MercuryFormats.h"
 #include "IO/RestartFile.h"
 #include "IO/VtuWriter.h"
@@ -14,9 +15,17 @@ namespace fs = std::filesystem;
 
 OutputFiles::OutputFiles(const SimulationState& state, bool restarted) {
     const RunSettings& c = state.settings;
+    // A fresh run's files replace those of an earlier run of the same name; its restart file,
+    // which describes them, goes first, so that a run killed before it wrote its own leaves none.
+    if (!restarted) {
+        std::error_code ignored;
+        fs::remove(c.name + ".restart", ignored);
+    }
     if (c.writeData) open(data_, c.name + ".data", restarted, state.output.dataBytes);
     if (c.writeFstat) open(fstat_, c.name + ".fstat", restarted, state.output.fstatBytes);
     if (c.writeEne) open(ene_, c.name + ".ene", restarted, state.output.eneBytes);
+    // The index lists the frames of the restart point (a killed run may have listed later ones).
+    if (restarted && c.writeVtu) writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
 }
 
 OutputFiles::~OutputFiles() {
@@ -27,29 +36,23 @@ OutputFiles::~OutputFiles() {
 void OutputFiles::open(File& file, const std::string& path, bool restarted, std::uint64_t bytes) {
     file.path = path;
     if (restarted) {
-        std::error_code error;
-        const auto size = fs::file_size(path, error);
-        if (error || size < bytes)
-            throw Error("cannot continue " + path + ": the restart file expects at least " + std::to_string(bytes) +
-                        " bytes, but it " + (error ? "does not exist" : "has " + std::to_string(size)) +
-                        " (restart in the folder of the run that wrote the restart file)");
-        fs::resize_file(path, bytes);  // drop frames written after the restart point
+        cutBackToRestartPoint(path, bytes);  // drop frames written after the restart point
         file.handle = std::fopen(path.c_str(), "ab");
     } else {
         file.handle = std::fopen(path.c_str(), "wb");
     }
-    if (!file.handle) throw Error("cannot open output file " + path);
+    if (!file.handle) throwWriteError(path);
 }
 
 void OutputFiles::write(File& file, std::string& text) {
     if (std::fwrite(text.data(), 1, text.size(), file.handle) != text.size())
-        throw Error("error while writing " + file.path + " (disk full?)");
+        throwWriteError(file.path);
     text.clear();
 }
 
 std::uint64_t OutputFiles::append(File& file, std::string& text) {
     write(file, text);
-    if (std::fflush(file.handle) != 0) throw Error("error while writing " + file.path + " (disk full?)");
+    if (std::fflush(file.handle) != 0) throwWriteError(file.path);
     return static_cast<std::uint64_t>(std::ftell(file.handle));
 }
 
@@ -88,7 +91,11 @@ void OutputFiles::writeFrame(SimulationState& state, const ContactRecordList& re
 }
 
 void OutputFiles::writeRestart(const SimulationState& state) {
-    if (state.settings.writeRestart) writeRestartFile(state.settings.name + ".restart", state);
+    if (!state.settings.writeRestart) return;
+    // The restart file records the sizes of these files: they reach the disk first.
+    for (File* f : {&data_, &fstat_, &ene_})
+        if (f->handle) flushToDisk(f->handle, f->path);
+    writeRestartFile(state.settings.name + ".restart", state);
 }
 
 }  // namespace talus

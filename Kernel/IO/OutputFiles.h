@@ -2,10 +2,14 @@
 // file per frame with a name.pvd index for ParaView, and name.restart.
 //
 // Every frame is written whole and flushed, and the byte size of each file after the frame is
-// kept in the run state. A restarted run cuts each file back to the size the restart file
-// recorded and appends, so that a restarted run writes exactly the files of an uninterrupted
-// one. The restart file itself is written to name.restart.tmp and renamed, so a crash never
-// leaves a half-written restart file.
+// kept in the run state. Before the restart file is written, .data, .fstat and .ene are synced
+// to the disk; the restart file, each .vtu frame and the .pvd are written to FILE.tmp, synced
+// and renamed (IO/DurableFile.h). So whenever a run stops (killed at any moment, or the machine
+// down), NAME.restart is whole and the appended files hold at least the bytes it records. A
+// restarted run cuts each appended file back to those sizes (dropping frames written after the
+// restart point, whole or half) and rewrites the .pvd with the restart point's frames, so it
+// writes exactly the files of an uninterrupted run. Every failed write (a full disk, a missing
+// folder) stops the run with a talus::Error naming the file and the reason.
 #pragma once
 
 #include <cstdio>

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "Error.h"
+#include "IO/DurableFile.h"
 #include "Particles/RigidBodyRotation.h"
 
 namespace talus {
@@ -180,10 +181,7 @@ ContactHistory readHistory(Reader& r, bool shapes) {
 }  // namespace
 
 void writeRestartFile(const std::string& path, const SimulationState& s) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary);
-        if (!out) throw Error("cannot write restart file " + temporary);
+    replaceFile(path, [&s](std::ostream& out) {
         Writer w(out);
         const RunSettings& c = s.settings;
         w.key("Talus restart") << std::uint64_t(formatVersion); w.end();
@@ -263,10 +261,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("values") << std::uint64_t(s.keptValues.size()); w.end();
         for (const auto& [name, value] : s.keptValues) { w.key("  ") << name << value; w.end(); }
         w.key("end"); w.end();
-        out.flush();
-        if (!out) throw Error("error while writing restart file " + temporary);
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) throw Error("cannot rename " + temporary + " to " + path);
+    });
 }
 
 void readRestartFile(const std::string& path, SimulationState& s) {
