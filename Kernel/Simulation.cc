@@ -329,8 +329,7 @@ void Simulation::initialise(bool restarted) {
     }
     state_.pairList.skin = c.skin;
     if (state_.settings.idOrderedSums) {
-        require(!state_.particles.hasShapes() && state_.domain.oneWay.outflowSpecies.empty(),
-                "--id-ordered-sums is for scenes of spheres without a maser");
+        require(state_.domain.oneWay.outflowSpecies.empty(), "--id-ordered-sums is for scenes without a maser");
         state_.pairList.valid = false;  // the list is built anew with every pair oriented by ids
     }
     state_.pairList.orientById = c.idOrderedSums;

@@ -48,7 +48,7 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
     cl.add("id-ordered-sums", "on|off",
            "sum each particle's contact forces in the order of its partners' ids: the same result to the bit on "
-           "any number of ranks, for a second pass over the pairs (spheres, no maser; kept by a restart)",
+           "any number of ranks, for a second pass over the pairs (no maser; kept by a restart)",
            [&c](const std::string& v) { c.idOrderedSums = CommandLine::toBool("id-ordered-sums", v); });
     cl.add("rebalance-interval", "T",
            "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
