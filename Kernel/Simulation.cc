@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -194,8 +195,11 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     } else
         setupInitialConditions();
     // The command line has the last word: over the settings of the restart file, and over run
-    // settings that setupInitialConditions may have made.
+    // settings that setupInitialConditions may have made; a restarted run's time step and
+    // summation mode excepted.
+    const RunSettings saved = state_.settings;
     commandLine_->parse(flags);
+    if (!restartFile.empty()) refuseContradictions(saved, restartFile);
     initialise(!restartFile.empty());
 
     const double dt = state_.settings.timeStep;
@@ -216,8 +220,9 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         if (waveAllowed(steps - k + 1, every) && !waveHasRoom(lastDisplacement_, state_.pairList.reach))
             buildListForWave();  // (instead of single steps until the list needs a build)
         if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
-            const std::uint64_t last = k + static_cast<std::uint64_t>(waveSteps_) - 1;
-            const bool savingLast = isOutputStep(state_.step + static_cast<std::uint64_t>(waveSteps_), last, steps, every);
+            const auto waveSteps = static_cast<std::uint64_t>(state_.settings.waveSteps);
+            const std::uint64_t last = k + waveSteps - 1;
+            const bool savingLast = isOutputStep(state_.step + waveSteps, last, steps, every);
             actionsBeforeTimeStep();
             const std::uint64_t done = integrateWave(savingLast);
             k += done - 1;
@@ -270,6 +275,29 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     actionsAfterSolve();
 }
 
+// A restarted run continues the saved one: the flags that would make it another run are refused
+// when they contradict the restart file (Documentation/FileFormats/restart.md, "What a restart
+// keeps"). The time step changes the discretisation; --id-ordered-sums promises results that
+// are the same to the bit on any number of ranks, which a run that changes it halfway keeps on
+// neither side. The other settings that change the sums' order (skin, HGrid, reorder, relist,
+// waves) change only round-off and may be changed, as the number of ranks may.
+void Simulation::refuseContradictions(const RunSettings& saved, const std::string& restartFile) const {
+    const RunSettings& now = state_.settings;
+    auto refuse = [&](const std::string& flag, const std::string& given, const std::string& kept) {
+        throw Error("--" + flag + " " + given + " contradicts the restart file " + restartFile + ", whose run has --" +
+                    flag + " " + kept + ": a restarted run keeps it (leave the flag out or give " + kept + ")");
+    };
+    auto text = [](double x) {  // (the shortest %g that reads back as x)
+        char b[32];
+        for (int digits = 1; digits <= 17; ++digits)
+            if (std::snprintf(b, sizeof b, "%.*g", digits, x); std::strtod(b, nullptr) == x) break;
+        return std::string(b);
+    };
+    if (now.timeStep != saved.timeStep) refuse("dt", text(now.timeStep), text(saved.timeStep));
+    if (now.idOrderedSums != saved.idOrderedSums)
+        refuse("id-ordered-sums", now.idOrderedSums ? "on" : "off", saved.idOrderedSums ? "on" : "off");
+}
+
 std::uint64_t Simulation::saveEvery() const {
     const RunSettings& c = state_.settings;
     if (c.outputInterval <= 0) return ~std::uint64_t{0};
@@ -300,12 +328,12 @@ void Simulation::initialise(bool restarted) {
         c.skin = std::isfinite(rmin) ? 0.2 * rmin : 0;
     }
     state_.pairList.skin = c.skin;
-    if (idOrderedSums_) {
-        require(!state_.particles.hasShapes() && state_.domain.oneWay.outflowSpecies.empty(),
-                "--id-ordered-sums is for scenes of spheres without a maser");
+    if (state_.settings.idOrderedSums) {
+        require(state_.domain.oneWay.outflowSpecies.empty(), "--id-ordered-sums is for scenes without a maser");
         state_.pairList.valid = false;  // the list is built anew with every pair oriented by ids
     }
-    state_.pairList.orientById = idOrderedSums_;
+    state_.pairList.orientById = c.idOrderedSums;
+    state_.pairList.maxRelisted = c.relist ? PairList::defaultMaxRelisted : 0;
     largestRadius_ = 0;
     for (double r : state_.particles.radius) largestRadius_ = std::max(largestRadius_, r);
     files_.reset();
@@ -373,10 +401,11 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
-    if (rebuild && idOrderedSums_) idOrderedForceSums_.rebuild(list, p);
+    const bool idOrdered = state_.settings.idOrderedSums;
+    if (rebuild && idOrdered) idOrderedForceSums_.rebuild(list, p);
     if (rebuild) lastDisplacement_ = 0;  // (the positions are the new reference)
-    if (rebuild && waveSteps_ > 1) makeWaveSchedule();
-    PairContribution* perPair = idOrderedSums_ ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
+    if (rebuild && state_.settings.waveSteps > 1) makeWaveSchedule();
+    PairContribution* perPair = idOrdered ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
     summary_ = ContactSummary{};
     if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
     std::visit(
@@ -386,7 +415,7 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
                              &state_.shapes, perPair);
         },
         laws_);
-    if (idOrderedSums_) idOrderedForceSums_.addTo(p);
+    if (idOrdered) idOrderedForceSums_.addTo(p);
     if (records) {
         elasticEnergy_ = records->elasticEnergy();
         recordedContacts_ = records->count();

@@ -67,7 +67,10 @@ public:
     // waves of 8: strips of 64-128 columns measured fastest, Documentation/TimeSkewing.md "Using it").
     void setWaves(int steps, int stripColumns);
     void setWaves(int steps);
-    int waveStripColumns() const { return waveStripColumns_ > 0 ? waveStripColumns_ : 8 * waveSteps_; }
+    int waveStripColumns() const {
+        const RunSettings& c = state_.settings;
+        return c.waveStripColumns > 0 ? c.waveStripColumns : 8 * c.waveSteps;
+    }
     // Steps taken in waves since the start of the last solve (for tests and the benchmark).
     std::uint64_t stepsInWaves() const { return stepsInWaves_; }
     std::uint64_t wavesOffTheNearList() const { return waveNearGivenUp_; }  // (given up mid-wave)
@@ -204,6 +207,7 @@ protected:
 
 private:
     void initialise(bool restarted);
+    void refuseContradictions(const RunSettings& saved, const std::string& restartFile) const;
     void checkTimeStep() const;
     // How computeForces checks the overlaps against their limit: not at all (the caller checks),
     // agreed by all ranks at once, or (on ranks) agreed with the next step's neighbourhood: one
@@ -260,13 +264,11 @@ private:
     double elasticEnergy_ = 0;
     ContactRecords records_;        // of the last output step (each contact only with .fstat)
     std::size_t recordedContacts_ = 0;  // their number (on ranks, over all ranks)
-    bool idOrderedSums_ = false;  // --id-ordered-sums (Contacts/IdOrderedForceSums.h)
     bool driftInOnePass_ = defaultDriftInOnePass();
     std::optional<Vec3> driftFrame_;  // the last drift pass's mean velocity (DriftPassResult)
     static bool defaultDriftInOnePass();
-    IdOrderedForceSums idOrderedForceSums_;  // used when idOrderedSums_
+    IdOrderedForceSums idOrderedForceSums_;  // used with settings().idOrderedSums
     std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
-    int waveSteps_ = 1, waveStripColumns_ = 0;  // (0: waveStripColumns() follows the steps)
     WaveSchedule waveSchedule_;               // over every listed pair
     std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
     std::string waveScheduleRefusal_;         // why the last build has none

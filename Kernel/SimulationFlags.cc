@@ -29,9 +29,7 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
     cl.add("relist", "on|off",
            "list only the pairs of particles that boundaries add or move (on), or build the whole neighbour "
            "list anew (off)",
-           [this](const std::string& v) {
-               state_.pairList.maxRelisted = CommandLine::toBool("relist", v) ? PairList::defaultMaxRelisted : 0;
-           });
+           [&c](const std::string& v) { c.relist = CommandLine::toBool("relist", v); });
     cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
            [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
     cl.add("wave-steps", "N",
@@ -39,7 +37,7 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            "the default); periodic x and y, spheres, one rank",
            [this](const std::string& v) { setWaves(CommandLine::toInt("wave-steps", v)); });
     cl.add("wave-strip", "C", "columns of cells per strip of the waves (default 8 per step of the waves: 64 for 8)",
-           [this](const std::string& v) { setWaves(waveSteps_, CommandLine::toInt("wave-strip", v)); });
+           [this, &c](const std::string& v) { setWaves(c.waveSteps, CommandLine::toInt("wave-strip", v)); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("fstat", "on|off",
@@ -50,8 +48,8 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
            [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
     cl.add("id-ordered-sums", "on|off",
            "sum each particle's contact forces in the order of its partners' ids: the same result to the bit on "
-           "any number of ranks, for a second pass over the pairs (spheres, no maser)",
-           [this](const std::string& v) { idOrderedSums_ = CommandLine::toBool("id-ordered-sums", v); });
+           "any number of ranks, for a second pass over the pairs (no maser; kept by a restart)",
+           [&c](const std::string& v) { c.idOrderedSums = CommandLine::toBool("id-ordered-sums", v); });
     cl.add("rebalance-interval", "T",
            "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
            "(0: at the start, at saves and on request only)",

@@ -30,6 +30,12 @@ struct RunSettings {
     double progressInterval = 10;  // wall seconds between progress lines
     double maxOverlapFraction = 0.25;      // of the smaller radius, during the run
     double maxInitialOverlapFraction = 0.05;  // of the smaller radius, at the start
+    // How the forces are summed (each changes the result, if only by round-off; the restart file
+    // keeps them: Documentation/FileFormats/restart.md):
+    bool idOrderedSums = false;  // in the order of partners' ids (--id-ordered-sums, IdOrderedForceSums.h)
+    bool relist = true;          // pairs of added or moved particles relisted (--relist; PairList::maxRelisted)
+    int waveSteps = 1;           // steps per wave (--wave-steps; Simulation::setWaves)
+    int waveStripColumns = 0;    // columns per strip of the waves (--wave-strip; 0: 8 per wave step)
 };
 
 // How far each output file got: its byte size after the last saved frame, so that a restart

@@ -15,26 +15,27 @@ namespace talus {
 void Simulation::setWaves(int steps, int stripColumns) {
     require(stripColumns >= 1, "strips of waves need at least one column, got " + std::to_string(stripColumns));
     setWaves(steps);
-    waveStripColumns_ = stripColumns;
+    state_.settings.waveStripColumns = stripColumns;
 }
 
 void Simulation::setWaves(int steps) {
     require(steps >= 1 && steps <= 255, "waves of 1 to 255 steps, got " + std::to_string(steps));
-    waveSteps_ = steps;
+    state_.settings.waveSteps = steps;
     waveScheduleBuild_ = 0;
 }
 
 // The cells of a list build of the given reach: as wide as the longest pair it can list,
 // 2 rmax + reach.
 std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string* why) const {
-    if (waveSteps_ < 2) return std::nullopt;
+    if (state_.settings.waveSteps < 2) return std::nullopt;
     if (onRanks()) {
         if (why) *why = "waves run on one rank only";
         return std::nullopt;
     }
     double largest = 0;
     for (double r : state_.particles.radius) largest = std::max(largest, r);
-    return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), waveSteps_, waveStripColumns(), why);
+    return WaveCells::fit(state_.domain, (2 * largest + reach) * (1 + 1e-9), state_.settings.waveSteps,
+                          waveStripColumns(), why);
 }
 
 // At a list build: the schedule of its waves over every listed pair (the particles are in the
@@ -42,8 +43,8 @@ std::optional<WaveCells> Simulation::waveCellsForBuild(double reach, std::string
 void Simulation::makeWaveSchedule() {
     waveScheduleBuild_ = waveNearRunsMake_ = 0;
     waveScheduleRefusal_.clear();
-    if (waveSteps_ < 2) return;
-    if (idOrderedSums_) {  // (its sums follow the list's places: IdOrderedForceSums)
+    if (state_.settings.waveSteps < 2) return;
+    if (state_.settings.idOrderedSums) {  // (its sums follow the list's places: IdOrderedForceSums)
         waveScheduleRefusal_ = "waves do not run with --id-ordered-sums";
         return;
     }
@@ -78,8 +79,9 @@ const PlaceRun* Simulation::nearPairsForWave(const Vec3& frame) {
     const ParticleStore& p = state_.particles;
     const double dt = state_.settings.timeStep;
     const double nearSkin = list.nearSkinFraction * list.skin, nearLimit = nearAllowance(nearSkin);
-    const double speed = 2 * list.maxSpeed + state_.gravity.norm() * waveSteps_ * dt + frame.norm();
-    const double wave = (waveSteps_ + 1) * (1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
+    const double steps = state_.settings.waveSteps;
+    const double speed = 2 * list.maxSpeed + state_.gravity.norm() * steps * dt + frame.norm();
+    const double wave = (steps + 1) * (1.000001 * speed * dt + 1e-12 * waveLargestRadius_);
     if (!(nearSkin > 0 && wave < nearLimit)) return nullptr;
     const bool whole = nearPairsAreCurrent(list, nearSkin) && near.moved + wave < nearLimit;
     if (!whole) {
@@ -110,13 +112,13 @@ void Simulation::continueWavesAfterRestart() {
     const PairList& list = state_.pairList;
     if (!list.comparable(state_.particles) || onRanks()) return;
     lastDisplacement_ = largestDisplacement(state_.particles, list.referencePosition, state_.domain);
-    if (waveSteps_ > 1) makeWaveSchedule();
+    if (state_.settings.waveSteps > 1) makeWaveSchedule();
 }
 
 // The run's summary line of its waves, with why a scene takes none.
 void Simulation::reportWaves(std::ostream& out, std::uint64_t steps) const {
-    if (waveSteps_ < 2) return;
-    out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << waveSteps_;
+    if (state_.settings.waveSteps < 2) return;
+    out << name() << ": " << stepsInWaves_ << " of " << steps << " steps in waves of " << state_.settings.waveSteps;
     if (const std::optional<WaveCells> cells = waveCellsForBuild(state_.pairList.reach, nullptr))
         out << " (" << cells->strips() << (cells->strips() == 1 ? " strip" : " strips") << " of about "
             << cells->columns() / cells->strips() << " columns, asked for " << waveStripColumns() << ")";
@@ -145,18 +147,18 @@ bool Simulation::waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) cons
 // its last step is written after it). Waves start at multiples of their steps, so that a
 // restarted run takes them where the first run did, whatever the output steps.
 bool Simulation::waveAllowed(std::uint64_t stepsLeft, std::uint64_t saveEvery) const {
-    const auto steps = static_cast<std::uint64_t>(waveSteps_);
+    const auto steps = static_cast<std::uint64_t>(state_.settings.waveSteps);
     const PairList& list = state_.pairList;
     if (steps < 2 || stepsLeft < steps || state_.step % steps != 0) return false;
     if (saveEvery > 0 && state_.step / saveEvery != (state_.step + steps - 1) / saveEvery) return false;
-    return driftsInOnePass() && !idOrderedSums_ && waveScheduleBuild_ != 0 && waveScheduleBuild_ == list.builds &&
-           list.comparable(state_.particles) && list.oneWayPairs.empty();
+    return driftsInOnePass() && !state_.settings.idOrderedSums && waveScheduleBuild_ != 0 &&
+           waveScheduleBuild_ == list.builds && list.comparable(state_.particles) && list.oneWayPairs.empty();
 }
 
 // A particle `displacement` from the list's positions, at the largest speed doubled (and gravity's
 // gain), stays within half the list's `reach` through a wave and the step after it.
 bool Simulation::waveHasRoom(double displacement, double reach) const {
-    const double steps = waveSteps_, dt = state_.settings.timeStep;
+    const double steps = state_.settings.waveSteps, dt = state_.settings.timeStep;
     const double speed = 2 * state_.pairList.maxSpeed + state_.gravity.norm() * steps * dt;
     return displacement + (steps + 1) * speed * dt < 0.5 * reach;
 }
@@ -187,7 +189,7 @@ std::uint64_t Simulation::integrateWave(bool recordContacts) {
     PairList& list = state_.pairList;
     const Domain& domain = state_.domain;
     const double dt = state_.settings.timeStep, half = 0.5 * dt;
-    const int levels = waveSteps_;
+    const int levels = state_.settings.waveSteps;
     // The wave's first step starts as a single step's (the last step's forces become the ones to
     // kick with), its first half kick and drift going along with the first level's regions
     // (WaveRegion::driftBegin); the same frame for the sweep's growths all through the wave (any

@@ -146,7 +146,7 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
 // trajectories to round-off (only the order in which forces are summed differs).
 TEST(PairListRelist, ChangesNoPhysics) {
     FedChute relisting, rebuilding;
-    rebuilding.state().pairList.maxRelisted = 0;
+    rebuilding.settings().relist = false;
     relisting.run(1e-3, 4000 * 1e-3);
     rebuilding.run(1e-3, 4000 * 1e-3);
     const PairList &a = relisting.state().pairList, &b = rebuilding.state().pairList;

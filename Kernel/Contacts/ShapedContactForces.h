@@ -108,10 +108,15 @@ void ContactForceLoop<Law>::laneContact(PairList& list, int l, ContactHistory hi
     history.lastNormalForce = b.fn[l];
     list.history.set(b.k[l], history);
     const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
-    p_.force[i] += force;
-    p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
-    p_.force[j] -= force;
-    p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
+    const Vec3 torqueI(b.tix[l], b.tiy[l], b.tiz[l]), torqueJ(b.tjx[l], b.tjy[l], b.tjz[l]);
+    if (perPair_) [[unlikely]] {  // kept for the sums in id order (IdOrderedForceSums.h)
+        perPair_[b.k[l]] = {force, torqueI, torqueJ};
+    } else {
+        p_.force[i] += force;
+        p_.torque[i] += torqueI;
+        p_.force[j] -= force;
+        p_.torque[j] += torqueJ;
+    }
     ++summary_.contacts, ++summary_.contactsInLanes;
     noteOverlap(i, j, b.overlap[l], std::min(sizeOf(i), sizeOf(j)));
 }
@@ -125,6 +130,7 @@ void ContactForceLoop<Law>::shapedPairWith(PairList& list, std::size_t k, std::u
     history.warmPoint = g.solution.point;
     history.warmMultiplier = g.solution.multiplier;
     const Law& law = laws_(p_.species[i], p_.species[j]);
+    currentPair_ = k;  // (for the forces kept for sums in id order; the batch comes here out of turn)
     shapedContact(history, g, i, j, xj, p_.velocity[j], p_.angularVelocity[j], p_.invMass[j], law,
                   std::min(sizeOf(i), sizeOf(j)));
     if (!g.touching && g.gapBound > 0) {
@@ -183,11 +189,15 @@ void ContactForceLoop<Law>::shapedContact(ContactHistory& history, const ShapedC
     history.state = ContactHistory::touching;
     history.lastNormalForce = f.normalForce;
     const Vec3 force = f.normalForce * n + f.tangentialForce;
-    p_.force[i] += force;
-    p_.torque[i] += bi.cross(force);
-    if (j >= 0) {
-        p_.force[j] -= force;
-        p_.torque[j] -= bj.cross(force);
+    if (perPair_ && j >= 0) [[unlikely]] {  // kept for the sums in id order (IdOrderedForceSums.h)
+        perPair_[currentPair_] = {force, bi.cross(force), -bj.cross(force)};
+    } else {
+        p_.force[i] += force;
+        p_.torque[i] += bi.cross(force);
+        if (j >= 0) {
+            p_.force[j] -= force;
+            p_.torque[j] -= bj.cross(force);
+        }
     }
     ++summary_.contacts;
     noteOverlap(i, j, g.overlap, size);

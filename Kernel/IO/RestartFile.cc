@@ -16,8 +16,8 @@ namespace talus {
 namespace {
 
 // 2: the run line ends with the reorder flag; 3: kept values; 4: the one-way periodic box
-// (maser) and its pairs
-constexpr int formatVersion = 6;
+// (maser) and its pairs; 7: the summation line (the order of the force sums)
+constexpr int formatVersion = 7;
 
 class Writer {
 public:
@@ -190,6 +190,8 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
                      << c.maxOverlapFraction << c.maxInitialOverlapFraction << std::uint64_t(c.reorderParticles); w.end();
         w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
                        << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
+        w.key("summation") << std::uint64_t(c.idOrderedSums) << std::uint64_t(c.relist)
+                           << std::uint64_t(c.waveSteps) << std::uint64_t(c.waveStripColumns); w.end();
         w.key("time") << s.time << s.step; w.end();
         w.key("gravity") << s.gravity; w.end();
         w.key("domain") << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
@@ -293,6 +295,12 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     c.writeEne = r.flag("ene flag");
     c.writeVtu = r.flag("vtu flag");
     c.writeRestart = r.flag("restart flag");
+    r.expect("summation");
+    c.idOrderedSums = r.flag("id-ordered sums flag");
+    c.relist = r.flag("relist flag");
+    c.waveSteps = static_cast<int>(r.count("wave steps", 255));
+    if (c.waveSteps < 1) r.fail("wave steps must be 1 to 255, got 0");
+    c.waveStripColumns = static_cast<int>(r.count("wave strip columns", 1u << 30));
     r.expect("time");
     t.time = r.real("time");
     t.step = r.count("step");

@@ -12,7 +12,7 @@ namespace talus::cg {
 
 namespace {
 
-// Talus restart formats 4 to 6 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
+// Talus restart formats 4 to 7 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
 // `name density law...`, `particles N nextId` + N lines of 23 fields with id first, the species
 // at field 20 and the fixed flag at field 21.
 RestartInfo readTalusRestart(TextFile& file) {
