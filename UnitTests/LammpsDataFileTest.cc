@@ -105,6 +105,7 @@ TEST(LammpsDataFile, MalformedFilesNameFileAndLine) {
         {replaced("-1 30 zlo zhi\n", ""), "line 9: no zlo zhi line in the header"},
         {replaced("2 atom types\n", "2 atom types\n3 atom types\n"), "line 5: a second 'atom types' header line"},
         {replaced("0 20 xlo xhi", "0 20 0 xlo xhi xy"), "line 6: unknown or unsupported header line"},
+        {replaced("2 atom types", "2 2 atom types"), "line 4: unknown or unsupported header line '2 2 atom types'"},
         // Numbers that are not finite, and sizes that are not positive.
         {replaced("9 2 0.79", "9 2 nan"), "line 13: 'nan' for the diameter is not a finite number"},
         {replaced("1.5 2.5 0.25", "1.5 inf 0.25"), "line 12: 'inf' for the position is not a finite number"},

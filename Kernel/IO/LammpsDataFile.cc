@@ -77,13 +77,14 @@ LammpsData readLammpsData(const std::string& path) {
         }
         if (section.empty()) {  // header keywords
             // The words after the number(s): "atoms", "atom types", "xlo xhi", ...
-            const std::string key = joined(std::vector<std::string>(w.begin() + (w.size() == 4 ? 2 : 1), w.end()));
+            const bool boxLine = w.size() == 4 && (w[2] + w[3] == "xloxhi" || w[2] + w[3] == "yloyhi" || w[2] + w[3] == "zlozhi");
+            const std::string key = joined(std::vector<std::string>(w.begin() + (boxLine ? 2 : 1), w.end()));
             if (!headerSeen.insert(key).second) place.fail("a second '" + key + "' header line");
             if (key == "atoms") {
                 declaredAtoms = place.count(w[0], "the atom count");
             } else if (key == "atom types") {
                 data.types = static_cast<int>(place.count(w[0], "the type count", 1u << 20));
-            } else if (w.size() == 4 && (key == "xlo xhi" || key == "ylo yhi" || key == "zlo zhi")) {
+            } else if (boxLine) {
                 const int axis = w[2][0] - 'x';
                 data.lo[axis] = place.real(w[0], "the box");
                 data.hi[axis] = place.real(w[1], "the box");
