@@ -84,10 +84,8 @@ for t in "${targets[@]}"; do
     -artifact_prefix="$findings/" -max_len=16384 -timeout=10 -rss_limit_mb=2048 -close_fd_mask=1 \
     -print_final_stats=1 -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
     >"$build/$t.log" 2>&1 || true
-  executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$build/$t.log" | awk '{s += $2} END {print s + 0}')
-  if [ "$executions" -eq 0 ]; then  # (fork mode prints its totals as "#N ... exec/s")
-    executions=$(grep -oE '^#[0-9]+' "$build/$t.log" | tail -1 | tr -d '#')
-  fi
+  # (fork mode reports its progress as "#N: cov: ..."; the last is the total)
+  executions=$( (grep -oE '^#[0-9]+' "$build/$t.log" || true) | tail -1 | tr -d '#')
   after=$(ls "$findings" | wc -l)
   new=$((after - before))
   [ "$new" -gt 0 ] && status=1
