@@ -260,6 +260,9 @@ TEST(BadInput, CorruptedRestartFile) {
     // A particle line: id, position, velocity, angular velocity, force, torque (5 x 3 numbers),
     // radius, mass, inverse mass, inverse inertia, species, fixed flag, motion.
     const int speciesToken = 1 + 15 + 4;
+    const std::string firstId = full.substr(full.find_first_not_of(' ', firstParticle),
+                                            full.find(' ', full.find_first_not_of(' ', firstParticle)) -
+                                                full.find_first_not_of(' ', firstParticle));
     struct Case {
         const char* what;
         std::string text;
@@ -289,6 +292,25 @@ TEST(BadInput, CorruptedRestartFile) {
         {"contact law parameter out of range", replaceToken(full, firstSpecies, 3, "0"), firstSpecies,
          {"normal stiffness must be positive"}},
         {"text after the end", full + "more\n", full.size(), {"unexpected text after 'end'"}},
+        // Counts that are not whole numbers, or so large that reserving for them would fail
+        // (std::bad_alloc, not a message) before the file has shown it lacks the lines.
+        {"fractional count", replaceToken(full, particlesLine, 1, "2.5"), particlesLine,
+         {"'2.5' for particle count is not a whole number"}},
+        {"count written as a large real", replaceToken(full, particlesLine, 1, "1e30"), particlesLine,
+         {"'1e30' for particle count is not a whole number"}},
+        {"count beyond 64 bits", replaceToken(full, particlesLine, 1, "123456789012345678901234"), particlesLine,
+         {"particle count 123456789012345678901234 is out of range"}},
+        {"count of 2^32 - 1 particles", replaceToken(full, particlesLine, 1, "4294967295"), pairlistLine,
+         {"bad count 'pairlist' for particle id"}},
+        // Values no run can have: an inverted domain, a particle without mass, a negative
+        // inverse mass, and two particles with one id.
+        {"inverted domain", replaceToken(full, lineStarting(full, "domain"), 1, "99"), lineStarting(full, "domain"),
+         {"domain: the upper corner must lie above the lower corner"}},
+        {"zero mass", replaceToken(full, thirdParticle, 17, "0"), thirdParticle, {"mass must be positive"}},
+        {"negative inverse mass", replaceToken(full, thirdParticle, 18, "-2"), thirdParticle,
+         {"inverse mass and inverse inertia must not be negative"}},
+        {"an id twice", replaceToken(full, thirdParticle, 0, firstId), thirdParticle,
+         {"particle id " + firstId + " appears twice"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.what);

@@ -1,11 +1,9 @@
 #include "IO/CommandLine.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <sstream>
 
 #include "Error.h"
+#include "IO/InputNumbers.h"
 
 namespace talus {
 
@@ -62,20 +60,14 @@ std::string CommandLine::help(const std::string& program) const {
 }
 
 double CommandLine::toDouble(const std::string& flag, const std::string& value) {
-    errno = 0;
-    char* end = nullptr;
-    const double x = std::strtod(value.c_str(), &end);
-    // ERANGE also flags subnormal results, which are finite numbers; overflow shows as inf.
-    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(x))
-        throw Error("flag --" + flag + ": '" + value + "' is not a finite number");
+    double x = 0;
+    if (!toFiniteReal(value, x)) throw Error("flag --" + flag + ": '" + value + "' is not a finite number");
     return x;
 }
 
 int CommandLine::toInt(const std::string& flag, const std::string& value) {
-    errno = 0;
-    char* end = nullptr;
-    const long x = std::strtol(value.c_str(), &end, 10);
-    if (value.empty() || end != value.c_str() + value.size() || errno == ERANGE || x < -2147483647L || x > 2147483647L)
+    std::int64_t x = 0;
+    if (!toInteger(value, x) || x < -2147483647 || x > 2147483647)
         throw Error("flag --" + flag + ": '" + value + "' is not an integer");
     return static_cast<int>(x);
 }

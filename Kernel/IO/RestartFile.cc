@@ -1,14 +1,16 @@
 #include "IO/RestartFile.h"
 
-#include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_set>
 
 #include "Error.h"
 #include "IO/DurableFile.h"
+#include "IO/InputNumbers.h"
 #include "Particles/RigidBodyRotation.h"
 
 namespace talus {
@@ -39,14 +41,13 @@ private:
     std::ostream& out_;
 };
 
-// Reads whitespace-separated tokens, remembering the line of each for error messages.
+// Reads whitespace-separated tokens, remembering the line of each for error messages; numbers
+// are read strictly (IO/InputNumbers.h).
 class Reader {
 public:
-    Reader(std::istream& in, std::string path) : in_(in), path_(std::move(path)) {}
+    Reader(std::istream& in, const std::string& path) : in_(in), place_("restart file " + path) {}
 
-    [[noreturn]] void fail(const std::string& what) const {
-        throw Error("restart file " + path_ + " line " + std::to_string(line_) + ": " + what);
-    }
+    [[noreturn]] void fail(const std::string& what) const { place_.fail(what); }
     std::string token(const char* what) {
         std::string t;
         for (;;) {
@@ -57,7 +58,7 @@ public:
             }
             if (c == '\n') {
                 if (!t.empty()) { in_.unget(); return t; }
-                ++line_;
+                ++place_.line;
                 continue;
             }
             if (std::isspace(c)) {
@@ -71,46 +72,30 @@ public:
         const std::string t = token(keyword);
         if (t != keyword) fail("expected '" + std::string(keyword) + "', found '" + t + "'");
     }
-    double real(const char* what) {
-        const std::string t = token(what);
-        errno = 0;
-        char* end = nullptr;
-        const double x = std::strtod(t.c_str(), &end);
-        // strtod also reports ERANGE for subnormal results, which the writer legitimately
-        // produces (a decaying velocity or spring) and which read back exactly; only overflow is bad.
-        const bool overflow = errno == ERANGE && std::isinf(x);
-        if (t.empty() || end != t.c_str() + t.size() || overflow) fail(std::string("bad number '") + t + "' for " + what);
-        if (!std::isfinite(x)) fail(std::string("'") + t + "' for " + what + " is not a finite number");
-        return x;
-    }
+    double real(const char* what) { return place_.real(token(what), what); }
     Vec3 vec(const char* what) {
         Vec3 v;
         for (int a = 0; a < 3; ++a) v[a] = real(what);
         return v;
     }
     std::uint64_t count(const char* what, std::uint64_t max = ~std::uint64_t{0}) {
-        const std::string t = token(what);
-        errno = 0;
-        char* end = nullptr;
-        const unsigned long long x = std::strtoull(t.c_str(), &end, 10);
-        if (t.empty() || t[0] == '-' || end != t.c_str() + t.size() || errno == ERANGE)
-            fail(std::string("bad count '") + t + "' for " + what);
-        if (x > max) fail(std::string(what) + " " + t + " is out of range (at most " + std::to_string(max) + ")");
-        return x;
+        return place_.count(token(what), what, max);
     }
-    std::int64_t integer(const char* what) {
+    // An index into a list of `size` things (of none when size is 0).
+    std::uint64_t index(const char* what, std::uint64_t size) {
         const std::string t = token(what);
-        errno = 0;
-        char* end = nullptr;
-        const long long x = std::strtoll(t.c_str(), &end, 10);
-        if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE) fail(std::string("bad integer '") + t + "' for " + what);
-        return x;
+        const std::uint64_t k = place_.count(t, what);
+        if (k >= size)
+            fail(std::string(what) + " " + t + " is out of range (" +
+                 (size == 0 ? std::string("there are none") : "at most " + std::to_string(size - 1)) + ")");
+        return k;
     }
+    std::int64_t integer(const char* what) { return place_.integer(token(what), what); }
     bool flag(const char* what) { return count(what, 1) == 1; }
     bool atEnd() {
         int c;
         while ((c = in_.get()) != EOF) {
-            if (c == '\n') ++line_;
+            if (c == '\n') ++place_.line;
             if (!std::isspace(c)) {
                 in_.unget();
                 return false;
@@ -122,8 +107,7 @@ public:
 
 private:
     std::istream& in_;
-    std::string path_;
-    int line_ = 1;
+    InputPlace place_;
 };
 
 void writeLaw(Writer& w, const ContactLaw& law) {
@@ -309,11 +293,15 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     r.expect("domain");
     t.domain.lo = r.vec("domain lower corner");
     t.domain.hi = r.vec("domain upper corner");
+    if (!((t.domain.hi - t.domain.lo).minCoeff() > 0))
+        r.fail("domain: the upper corner must lie above the lower corner along x, y and z");
     for (int a = 0; a < 3; ++a) t.domain.periodic[a] = r.flag("periodic flag");
     r.expect("oneway");
     t.domain.oneWay.active = r.flag("one-way box flag");
     t.domain.oneWay.lo = r.real("one-way box lower end");
     t.domain.oneWay.hi = r.real("one-way box upper end");
+    if (t.domain.oneWay.active && !(t.domain.oneWay.hi > t.domain.oneWay.lo))
+        r.fail("one-way box: the upper end must lie above the lower end");
     const auto outflowCount = r.count("one-way box species count", 1u << 16);
     for (std::uint64_t k = 0; k < outflowCount; ++k) {
         const auto species = r.integer("one-way box outflow species");
@@ -335,7 +323,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     r.expect("pairs");
     const auto pairCount = r.count("pair count", speciesCount * speciesCount);
     for (std::uint64_t k = 0; k < pairCount; ++k) {
-        const auto a = r.count("species index", speciesCount - 1), b = r.count("species index", speciesCount - 1);
+        const auto a = r.index("species index", speciesCount), b = r.index("species index", speciesCount);
         ContactLaw law = readLaw(r);
         try {
             std::visit([](const auto& l) { l.validate("species pair"); }, law);
@@ -362,7 +350,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (Wall& w : t.walls) {
         w.normal = r.vec("wall normal");
         w.point = r.vec("wall point");
-        w.species = static_cast<std::uint32_t>(r.count("wall species", speciesCount - 1));
+        w.species = static_cast<std::uint32_t>(r.index("wall species", speciesCount));
         w.motion = motionIndex("wall motion");
         w.radius = r.real("wall radius");
         if (!(w.radius >= 0)) r.fail("wall radius must be 0 (a plane) or positive (a cylinder)");
@@ -388,9 +376,14 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         p.enableShapes();
         t.pairList.enableWarmStarts();
     }
-    p.reserve(n);
+    // (A file of n particles has at least n lines of 23 words; a corrupt count reserves no more.)
+    std::error_code noSize;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, noSize);
+    p.reserve(noSize ? 0 : std::min<std::uint64_t>(n, bytes / 46));
+    std::unordered_set<std::uint64_t> ids;
     for (std::uint64_t i = 0; i < n; ++i) {
         p.id.push_back(r.count("particle id"));
+        if (!ids.insert(p.id.back()).second) r.fail("particle id " + std::to_string(p.id.back()) + " appears twice");
         p.position.push_back(r.vec("position"));
         p.velocity.push_back(r.vec("velocity"));
         p.angularVelocity.push_back(r.vec("angular velocity"));
@@ -399,9 +392,12 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         p.radius.push_back(r.real("radius"));
         if (!(p.radius.back() > 0)) r.fail("radius must be positive");
         p.mass.push_back(r.real("mass"));
+        if (!(p.mass.back() > 0)) r.fail("mass must be positive");
         p.invMass.push_back(r.real("inverse mass"));
         p.invInertia.push_back(r.real("inverse inertia"));
-        p.species.push_back(static_cast<std::uint32_t>(r.count("species", speciesCount - 1)));
+        if (!(p.invMass.back() >= 0 && p.invInertia.back() >= 0))
+            r.fail("inverse mass and inverse inertia must not be negative (0: a fixed particle)");
+        p.species.push_back(static_cast<std::uint32_t>(r.index("species", speciesCount)));
         p.fixed.push_back(r.flag("fixed flag"));
         p.motion.push_back(motionIndex("particle motion"));
         if (shapes) {
@@ -433,14 +429,13 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     const auto references = r.count("reference count", n);
     l.interiorPairs = r.count("interior pair count", pairs);
     for (std::uint64_t k = 0; k < pairs; ++k) {
-        const auto i = r.count("pair particle", n - 1), j = r.count("pair particle", n - 1);
+        const auto i = r.index("pair particle", n), j = r.index("pair particle", n);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         l.history.push_back(readHistory(r, shapes));
     }
     for (std::uint64_t k = 0; k < wallPairs; ++k) {
-        const auto i = r.count("wall pair particle", n - 1);
-        const auto w = r.count("wall pair wall", t.walls.empty() ? 0 : t.walls.size() - 1);
-        if (t.walls.empty()) r.fail("wall pair without walls");
+        const auto i = r.index("wall pair particle", n);
+        const auto w = r.index("wall pair wall", t.walls.size());
         l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
         l.wallHistory.push_back(readHistory(r, shapes));
     }
@@ -448,7 +443,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     r.expect("onewaypairs");
     const auto oneWayPairs = r.count("one-way pair count", 1ull << 40);
     for (std::uint64_t k = 0; k < oneWayPairs; ++k) {
-        const auto i = r.count("one-way pair particle", n - 1), j = r.count("one-way pair particle", n - 1);
+        const auto i = r.index("one-way pair particle", n), j = r.index("one-way pair particle", n);
         l.oneWayPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         l.oneWayHistory.push_back(readHistory(r, shapes));
     }

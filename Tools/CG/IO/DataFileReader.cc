@@ -1,5 +1,6 @@
 #include "IO/DataFileReader.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "IO/InputError.h"
@@ -26,12 +27,15 @@ bool DataFileReader::readHeader(ParticleFrame& frame, long& count) {
         file_.fail("expected a frame header of 8 fields (N t xmin ymin zmin xmax ymax zmax), found " +
                    std::to_string(fields_.size()));
     }
-    count = parseInteger(fields_[0], file_, "the particle count N");
-    if (count < 0) file_.fail("negative particle count " + std::to_string(count));
+    count = parseCount(fields_[0], file_, "the particle count N");
     frame.time = parseReal(fields_[1], file_, "the time t");
     for (int k = 0; k < 3; ++k) {
         frame.box.lo[k] = parseReal(fields_[2 + k], file_, "the domain minimum");
         frame.box.hi[k] = parseReal(fields_[5 + k], file_, "the domain maximum");
+        if (frame.box.hi[k] < frame.box.lo[k]) {
+            file_.fail("the domain maximum " + str(frame.box.hi[k]) + " lies below the minimum " + str(frame.box.lo[k]) +
+                       " along " + "xyz"[k] + " (an inverted box)");
+        }
     }
     frame.headerLine = file_.lineNumber();
     return true;
@@ -41,10 +45,13 @@ bool DataFileReader::readFrame(ParticleFrame& frame) {
     long count = 0;
     if (!readHeader(frame, count)) return false;
     frame.clear();
-    frame.position.reserve(count);
-    frame.velocity.reserve(count);
-    frame.radius.reserve(count);
-    frame.species.reserve(count);
+    // A particle line has 14 numbers: at least 28 bytes. A corrupt count reserves no more than
+    // the file can hold.
+    const auto reserved = static_cast<std::size_t>(std::min<std::uintmax_t>(count, file_.size() / 28));
+    frame.position.reserve(reserved);
+    frame.velocity.reserve(reserved);
+    frame.radius.reserve(reserved);
+    frame.species.reserve(reserved);
     for (long p = 0; p < count; ++p) {
         if (!file_.nextLine(line_)) {
             file_.failAtLine(file_.lineNumber() + 1,

@@ -12,6 +12,19 @@ namespace talus::cg {
 
 namespace {
 
+// A 0 or 1 flag.
+bool parseFlag(std::string_view token, const TextFile& file, const std::string& what) {
+    const long value = parseCount(token, file, what);
+    if (value > 1) file.fail(what + " must be 0 or 1, found " + std::string(token));
+    return value == 1;
+}
+
+// How many entries to reserve for `count` lines of at least 46 bytes (23 fields): no more than
+// the file can hold, so that a corrupt count does not reserve gigabytes.
+std::size_t reservable(long count, const TextFile& file) {
+    return static_cast<std::size_t>(std::min<std::uintmax_t>(static_cast<std::uintmax_t>(count), file.size() / 46));
+}
+
 // Talus restart formats 4 to 7 (restart.md): `domain lo(3) hi(3) px py pz`, `species S` + S lines
 // `name density law...`, `particles N nextId` + N lines of 23 fields with id first, the species
 // at field 20 and the fixed flag at field 21.
@@ -28,11 +41,11 @@ RestartInfo readTalusRestart(TextFile& file) {
             info.time = parseReal(fields[1], file, "the time");
         } else if (fields[0] == "domain") {
             if (fields.size() != 10) file.fail("expected 'domain' with 9 values, found " + std::to_string(fields.size() - 1));
-            for (int k = 0; k < 3; ++k) info.periodic[k] = parseInteger(fields[7 + k], file, "a periodic flag") != 0;
+            for (int k = 0; k < 3; ++k) info.periodic[k] = parseFlag(fields[7 + k], file, "a periodic flag");
             sawDomain = true;
         } else if (fields[0] == "species") {
             if (fields.size() != 2) file.fail("expected 'species COUNT'");
-            const long count = parseInteger(fields[1], file, "the species count");
+            const long count = parseCount(fields[1], file, "the species count");
             for (long s = 0; s < count; ++s) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the species list (truncated file?)");
                 splitFields(line, fields);
@@ -45,7 +58,7 @@ RestartInfo readTalusRestart(TextFile& file) {
         } else if (fields[0] == "walls" && fields.size() == 2) {
             // restart.md: per wall normal (3; a cylinder's axis direction), point (3; a point of
             // its axis), species, motion index, radius (0: a plane).
-            const long count = parseInteger(fields[1], file, "the wall count");
+            const long count = parseCount(fields[1], file, "the wall count");
             for (long w = 0; w < count; ++w) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the wall list (truncated file?)");
                 splitFields(line, fields);
@@ -56,6 +69,9 @@ RestartInfo readTalusRestart(TextFile& file) {
                     wall.axisPoint[k] = parseReal(fields[3 + k], file, "the wall point");
                 }
                 wall.radius = parseReal(fields[8], file, "the wall radius");
+                if (wall.radius < 0) file.fail("the wall radius must be 0 (a plane) or positive (a cylinder)");
+                if (wall.radius > 0 && wall.axisDirection == std::array<double, 3>{0, 0, 0})
+                    file.fail("a cylinder wall needs an axis direction (its normal), found 0 0 0");
                 if (wall.radius > 0) info.cylinders.push_back(wall);
             }
         } else if (fields[0] == "shapes") {
@@ -64,20 +80,20 @@ RestartInfo readTalusRestart(TextFile& file) {
             // branch vectors of the contact stress), which for a superquadric is its bounding
             // radius: refused rather than silently wrong.
             if (fields.size() != 3) file.fail("expected 'shapes FLAG COUNT'");
-            if (parseInteger(fields[1], file, "the shapes flag") != 0)
+            if (parseFlag(fields[1], file, "the shapes flag"))
                 file.fail("the run has superquadric particles (Documentation/Superquadrics/Superquadrics.md); "
                           "talus-cg coarse-grains spheres only so far");
         } else if (fields[0] == "particles") {
             if (fields.size() != 3) file.fail("expected 'particles COUNT NEXTID'");
-            const long count = parseInteger(fields[1], file, "the particle count");
+            const long count = parseCount(fields[1], file, "the particle count");
             std::vector<std::pair<long, bool>> idFixed;
-            idFixed.reserve(count);
+            idFixed.reserve(reservable(count, file));
             for (long p = 0; p < count; ++p) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
                 splitFields(line, fields);
                 if (fields.size() != 23) file.fail("expected 23 fields for a particle, found " + std::to_string(fields.size()));
-                idFixed.emplace_back(parseInteger(fields[0], file, "the particle id"),
-                                     parseInteger(fields[21], file, "the fixed flag") != 0);
+                idFixed.emplace_back(parseCount(fields[0], file, "the particle id"),
+                                     parseFlag(fields[21], file, "the fixed flag"));
             }
             // .data lines are in ascending id (data.md).
             std::sort(idFixed.begin(), idFixed.end());
@@ -139,7 +155,7 @@ RestartInfo readMercuryRestart(TextFile& file) {
             if (axis < 0 || axis > 2) file.fail("periodic boundary normal is not along x, y or z");
             info.periodic[axis] = true;
         } else if (fields[0] == "Particles" && fields.size() == 2) {
-            const long count = parseInteger(fields[1], file, "the particle count");
+            const long count = parseCount(fields[1], file, "the particle count");
             for (long p = 0; p < count; ++p) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
                 splitFields(line, fields);

@@ -66,32 +66,75 @@ void splitFields(std::string_view line, std::vector<std::string_view>& fields) {
     }
 }
 
-bool toReal(std::string_view token, double& value) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error == std::errc::result_out_of_range) {
-        // Subnormal numbers (a 1e-320 overlap) are numbers: read them as the stream would.
-        value = std::strtod(std::string(token).c_str(), nullptr);
-        return end == token.data() + token.size();
+namespace {
+
+// Drops one leading '+', which from_chars does not take; "+-1" stays no number.
+bool dropPlus(std::string_view& token) {
+    if (!token.empty() && token.front() == '+') {
+        token.remove_prefix(1);
+        return !token.empty() && token.front() != '-';
     }
-    return error == std::errc() && end == token.data() + token.size() && !token.empty();
+    return !token.empty();
+}
+
+// A token that is a whole number but not a finite one: nan, inf, or beyond the largest double.
+bool nonFiniteNumber(std::string_view token) {
+    double value = 0;
+    if (!dropPlus(token)) return false;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return end == token.data() + token.size() && (error == std::errc::result_out_of_range || !std::isfinite(value));
+}
+
+// "'TOKEN' for WHAT", for messages (appended: GCC 12 warns falsely on "'" + std::string(token)).
+std::string tokenFor(std::string_view token, const std::string& what) {
+    std::string text = "'";
+    text.append(token).append("' for ").append(what);
+    return text;
+}
+
+}  // namespace
+
+bool toReal(std::string_view token, double& value) {
+    if (!dropPlus(token)) return false;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (end != token.data() + token.size()) return false;
+    if (error == std::errc::result_out_of_range) {
+        // Below the subnormals (1e-400) the number reads as 0, as the stream would read it; beyond
+        // the largest double it is no number.
+        value = std::strtod(std::string(token).c_str(), nullptr);
+        return std::isfinite(value);
+    }
+    return error == std::errc() && std::isfinite(value);
 }
 
 bool toInteger(std::string_view token, long& value) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    if (!dropPlus(token)) return false;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    return error == std::errc() && end == token.data() + token.size() && !token.empty();
+    return error == std::errc() && end == token.data() + token.size();
 }
 
 double parseReal(std::string_view token, const TextFile& file, const std::string& what) {
     double value = 0;
-    if (!toReal(token, value)) file.fail("bad number '" + std::string(token) + "' for " + what);
+    if (!toReal(token, value)) {
+        if (nonFiniteNumber(token)) file.fail(tokenFor(token, what) + " is not a finite number");
+        file.fail("bad number " + tokenFor(token, what));
+    }
     return value;
 }
 
 long parseInteger(std::string_view token, const TextFile& file, const std::string& what) {
     long value = 0;
-    if (!toInteger(token, value)) file.fail("bad integer '" + std::string(token) + "' for " + what);
+    if (!toInteger(token, value)) {
+        double real = 0;
+        if (toReal(token, real)) file.fail(tokenFor(token, what) + " is not an integer");
+        file.fail("bad integer " + tokenFor(token, what));
+    }
+    return value;
+}
+
+long parseCount(std::string_view token, const TextFile& file, const std::string& what) {
+    const long value = parseInteger(token, file, what);
+    if (value < 0) file.fail(what + " must not be negative, found " + std::string(token));
     return value;
 }
 

@@ -187,3 +187,60 @@ TEST(BadFiles, ErrorsNameFileAndLine) {
     EXPECT_EQ(errorOf([&] { grainer.setFrame(frames[0], nullptr, "two.data"); }),
               "two.data line 2: a particle of species 1, but densities are known for 1 species only (--density d0,d1,... or --restart)");
 }
+
+// Numbers that are no finite numbers, counts that are negative or absurd, and an inverted box:
+// each an InputError naming file and line (before, NaN and Inf positions, times and forces were
+// read as such, and a negative particle count in a restart file gave std::length_error).
+TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
+    const std::string particle = "0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n";
+    struct Case {
+        std::string path, text, expected;
+    };
+    const std::vector<Case> dataCases = {
+        {"nan.data", "1 0 0 0 0 1 1 1\n0.5 nan 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n",
+         "nan.data line 2: 'nan' for the position is not a finite number"},
+        {"inf.data", "1 inf 0 0 0 1 1 1\n" + particle, "inf.data line 1: 'inf' for the time t is not a finite number"},
+        {"overflow.data", "1 0 0 0 0 1 1 1\n0.5 0.5 0.5 1e999 0 0 0.5 0 0 0 0 0 0 0\n",
+         "overflow.data line 2: '1e999' for the velocity is not a finite number"},
+        {"inverted.data", "1 0 0 0 0 1 -1 1\n" + particle,
+         "inverted.data line 1: the domain maximum -1 lies below the minimum 0 along y (an inverted box)"},
+        {"negative.data", "-1 0 0 0 0 1 1 1\n", "negative.data line 1: the particle count N must not be negative, found -1"},
+        {"fraction.data", "1.5 0 0 0 0 1 1 1\n" + particle, "fraction.data line 1: '1.5' for the particle count N is not an integer"},
+        {"huge.data", "9223372036854775807 0 0 0 0 1 1 1\n" + particle,
+         "huge.data line 3: file ends after 1 of the 9223372036854775807 particle lines of the frame at t = 0 (header line 1): truncated file?"},
+    };
+    for (const Case& c : dataCases) {
+        write(c.path, c.text);
+        EXPECT_EQ(errorOf([&] { readAllDataFrames(c.path); }), c.expected);
+    }
+    const std::string header = "# 0 1\n# 0 0 0 1 1 1\n# 0.5 0.5 0 0 0 0\n";
+    const std::vector<Case> fstatCases = {
+        {"nan.fstat", header + "0 1 0 0.5 0.5 0.5 0.01 0 nan 0 1 0 0 0 1 0\n",
+         "nan.fstat line 4: 'nan' for the normal force fn is not a finite number"},
+        {"inf.fstat", header + "0 1 0 0.5 0.5 0.5 0.01 0 1 0 -inf 0 0 0 1 0\n",
+         "inf.fstat line 4: '-inf' for the normal is not a finite number"},
+        {"time.fstat", "# nan 1\n# 0 0 0 1 1 1\n# 0.5 0.5 0 0 0 0\n", "time.fstat line 1: 'nan' for the frame time is not a finite number"},
+        {"index.fstat", header + "0 1.5 0 0.5 0.5 0.5 0.01 0 1 0 1 0 0 0 1 0\n",
+         "index.fstat line 4: '1.5' for particle i is not an integer"},
+    };
+    for (const Case& c : fstatCases) {
+        write(c.path, c.text);
+        EXPECT_EQ(errorOf([&] { readAllFstatFrames(c.path); }), c.expected);
+    }
+    const std::string talus = "Talus restart 6\nname x\ntime 0.5 10\ndomain 0 0 0 1 1 1 1 0 0\nspecies 1\n  a 1 law\n";
+    const std::vector<Case> restartCases = {
+        {"negative.restart", talus + "particles -1 0\n", "negative.restart line 7: the particle count must not be negative, found -1"},
+        {"species.restart", "Talus restart 6\nspecies -2\n", "species.restart line 2: the species count must not be negative, found -2"},
+        {"walls.restart", talus + "walls 1\n  0 0 1 0 0 0 0 -1 -0.5\n",
+         "walls.restart line 8: the wall radius must be 0 (a plane) or positive (a cylinder)"},
+        {"axis.restart", talus + "walls 1\n  0 0 0 0 0 0 0 -1 0.5\n",
+         "axis.restart line 8: a cylinder wall needs an axis direction (its normal), found 0 0 0"},
+        {"time.restart", "Talus restart 6\ntime inf 10\n", "time.restart line 2: 'inf' for the time is not a finite number"},
+        {"flag.restart", "Talus restart 6\ndomain 0 0 0 1 1 1 2 0 0\n", "flag.restart line 2: a periodic flag must be 0 or 1, found 2"},
+        {"mercury.restart", "MercuryDPM 1\nParticles -3\n", "mercury.restart line 2: the particle count must not be negative, found -3"},
+    };
+    for (const Case& c : restartCases) {
+        write(c.path, c.text);
+        EXPECT_EQ(errorOf([&] { readRestartFile(c.path); }), c.expected);
+    }
+}

@@ -1,0 +1,27 @@
+// Fuzz target: the restart reader of talus-cg (Talus's and MercuryDPM's restart files).
+#include <cmath>
+
+#include "FuzzEntries.h"
+#include "IO/InputError.h"
+#include "IO/RestartFileReader.h"
+
+namespace talus::fuzz {
+
+bool cgRestart(const std::uint8_t* data, std::size_t size) {
+    cg::RestartInfo info;
+    try {
+        info = cg::readRestartFile(scratchFile("cg-restart", data, size));
+    } catch (const cg::InputError&) {
+        return false;
+    }
+    promise(std::isfinite(info.time), "a time not finite");
+    for (double density : info.speciesDensity) promise(density > 0 && std::isfinite(density), "a density not positive");
+    for (const cg::CylinderWall& w : info.cylinders) {
+        promise(w.radius > 0 && std::isfinite(w.radius), "a cylinder radius not positive");
+        for (int k = 0; k < 3; ++k)
+            promise(std::isfinite(w.axisPoint[k]) && std::isfinite(w.axisDirection[k]), "a cylinder number not finite");
+    }
+    return true;
+}
+
+}  // namespace talus::fuzz
