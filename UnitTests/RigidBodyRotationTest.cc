@@ -208,7 +208,9 @@ TEST(RigidBodyRotation, RotationAboutMajorAndMinorAxesIsStable) {
 }
 
 // Dzhanibekov effect: started 0.01 off along both other axes, the body flips over and over: the
-// body angular velocity along that axis changes sign, with the period of eulerPeriod.
+// body angular velocity along that axis changes sign, with the period of eulerPeriod. Measured
+// 7.4e-6 and 4.2e-6 off at |omega| dt = 0.02 (the step's own error and the linear interpolation
+// of the crossings within a step): checked to 1e-4 (was 1e-2).
 TEST(RigidBodyRotation, IntermediateAxisFlipsWithTheEllipticPeriod) {
     const double dt = 0.02;
     for (const Vec3& I : {textbookBody, triaxialEllipsoid}) {
@@ -233,7 +235,7 @@ TEST(RigidBodyRotation, IntermediateAxisFlipsWithTheEllipticPeriod) {
         const double analytic = eulerPeriod(I, omega);
         std::printf("[ measured ] I = (%g, %g, %g): %d flips, period %.5f, analytic %.5f, relative error %.2e\n", I.x(),
                     I.y(), I.z(), signChanges, measured, analytic, measured / analytic - 1);
-        EXPECT_NEAR(measured / analytic, 1, 0.01);
+        EXPECT_NEAR(measured / analytic, 1, 1e-4);
         EXPECT_GE(signChanges, 2 * int(downCrossings.size()) - 2);
     }
 }
