@@ -106,24 +106,39 @@ TEST(MercuryFormats, FstatAndEneAgreeWithTheDataFrame) {
     // .fstat frame 0: three header lines, then contact lines until the next '#'.
     const auto fstat = lines("formats_values.fstat");
     std::map<std::pair<int, int>, int> sides;
+    // The elastic energy of the linear springs, 1/2 kn dn^2 + 1/2 kt xi^2 summed over the contacts
+    // (each once): dn from the .data positions, |xi| the .fstat's tangential overlap. Every pair
+    // law of the scene has the same kn and kt (species a and b are made with the same collision
+    // time, restitution and reduced mass; a mixed pair takes their mean).
+    const LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5);
+    double springEnergy = 0, tangentialEnergy = 0;
     std::size_t k = 3;
     for (; k < fstat.size() && fstat[k][0] != '#'; ++k) {
         const Row c = numbers(fstat[k]);
         ASSERT_EQ(c.size(), 16u);
         const int i = static_cast<int>(c[1]), j = static_cast<int>(c[2]);
+        const bool firstSide = sides.count({j, i}) == 0;
         ++sides[{i, j}];
         const Vec3 xi(particle[i][0], particle[i][1], particle[i][2]);
         const Vec3 n(c[10], c[11], c[12]);
         EXPECT_NEAR(n.norm(), 1, 1e-9);
+        const double overlap = j < 0 ? particle[i][6] - xi.z()
+                                     : particle[i][6] + particle[j][6] -
+                                           (xi - Vec3(particle[j][0], particle[j][1], particle[j][2])).norm();
+        if (firstSide) {
+            const double tangential = 0.5 * law.tangentialStiffness * c[7] * c[7];
+            springEnergy += 0.5 * law.normalStiffness * overlap * overlap + tangential;
+            tangentialEnergy += tangential;
+        }
         if (j < 0) {  // the floor z = 0; MercuryDPM writes the normal into the wall
             EXPECT_EQ(j, -1);
             EXPECT_NEAR((n - Vec3(0, 0, -1)).norm(), 0, 1e-9);
-            EXPECT_NEAR(c[6], particle[i][6] - xi.z(), 1e-9);  // overlap r - distance
+            EXPECT_NEAR(c[6], overlap, 1e-9);  // overlap r - distance
             continue;
         }
         const Vec3 xj(particle[j][0], particle[j][1], particle[j][2]);
         EXPECT_NEAR((n - (xi - xj).normalized()).norm(), 0, 1e-9) << fstat[k];
-        EXPECT_NEAR(c[6], particle[i][6] + particle[j][6] - (xi - xj).norm(), 1e-9);
+        EXPECT_NEAR(c[6], overlap, 1e-9);
         EXPECT_GE(c[8], 0);                        // pressed together at rest: repulsive
         EXPECT_LE(c[9], 0.5 * std::abs(c[8]) + 1e-12);  // Coulomb, mu <= 0.5
     }
@@ -154,7 +169,12 @@ TEST(MercuryFormats, FstatAndEneAgreeWithTheDataFrame) {
     EXPECT_EQ(e[1], 0);
     EXPECT_NEAR(e[2], kinetic, 1e-9 * kinetic);
     EXPECT_NEAR(e[3], rotational, 1e-9 * rotational);
-    EXPECT_GT(e[4], 0);  // springs compressed
+    // The springs: overlaps 0.02, 0.01 and 0.01, 1/2 kn (4 + 1 + 1) 1e-4 = 62.1003 with kn = 2.07e5,
+    // and the tangential spring of the pair (0, 1), whose contact points move sideways at
+    // |vt| = 0.295: |xi| = |vt| dt = 2.95e-5 after the first step, 2.6e-5 of energy, which the
+    // check sees. The .ene file writes 10 digits: 62.10037022, 5e-9 at most off.
+    EXPECT_NEAR(e[4], springEnergy, 1e-8);
+    EXPECT_GT(tangentialEnergy, 100 * 1e-8);
     for (int a = 0; a < 3; ++a) EXPECT_NEAR(e[5 + a], moment[a] / mass, 1e-9);
     EXPECT_EQ(e[8], 3);  // contacts, each once: the mobile pair, the mobile-fixed pair, the floor
 }

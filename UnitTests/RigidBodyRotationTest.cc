@@ -123,14 +123,33 @@ void rungeKuttaStep(Quat& q, Vec3& M, const Vec3& I, double h) {
     M = y.tail<3>();
 }
 
+// The lab angular velocity that turns q0 into q2 over the time 2 dt, read off the orientations
+// alone: the rotation q2 q0^* (lab frame) has the rotation vector 2 dt omega(t1) + O(dt^3) (the
+// central difference of the orientation at the middle step).
+Vec3 angularVelocityFromOrientations(const Quat& q0, const Quat& q2, double dt) {
+    Quat d = q2 * q0.conjugate();
+    if (d.w() < 0) d.coeffs() = -d.coeffs();  // the shorter way round
+    const double sine = d.vec().norm();
+    if (sine == 0) return Vec3::Zero();
+    return 2 * std::atan2(sine, d.w()) / sine * d.vec() / (2 * dt);
+}
+
 }  // namespace
 
-// Torque-free: L is untouched by the drift (lab frame), so all three components are conserved to
-// the bit; the energy of a symplectic step oscillates within O(dt^2) without drift.
-// |omega| = 1, dt = 0.01, 10^5 steps (t = 1000, some 160 turns). The textbook body (1, 2, 3) is a
-// flat lamina (I3 = I1 + I2), the hardest case of this splitting: 3.4e-6 at dt = 0.02, 8.5e-7 here.
+// Torque-free: the energy of a symplectic step oscillates within O(dt^2) without drift, and L
+// stays what it was. The drift leaves the stored L alone by construction, so L is checked as the
+// motion of q gives it, independently of the stored L: L_kin = A I A^T omega with omega the
+// central difference of the orientations (angularVelocityFromOrientations) and A I A^T the lab
+// inertia at the middle orientation. Its error is that of the difference quotient, O(dt^2), plus
+// the integrator's O(dt^2) error in the motion; an orientation turned at a wrong rate or about a
+// wrong axis (a first-order error or a wrong moment in a piece of the splitting) shows as O(dt)
+// or O(1): measured at most 2.1e-5, bounded by 1e-4 (the isotropic piece turned 1% too fast
+// gives 6.5e-3 to 1.3e-2, with the energy unchanged). |omega| = 1, dt = 0.01, 10^5 steps
+// (t = 1000, some 160 turns). The textbook body (1, 2, 3) is a flat lamina (I3 = I1 + I2), the
+// hardest case of this splitting: energy error 3.4e-6 at dt = 0.02, 8.5e-7 here.
 TEST(RigidBodyRotation, TorqueFreeBodyConservesEnergyAndAngularMomentum) {
     const double dt = 0.01;
+    double worstOfAll = 0;
     for (const Vec3& I : {textbookBody, triaxialEllipsoid}) {
         for (const Vec3& omega : startingAngularVelocities()) {
             Body body(I, omega);
@@ -138,19 +157,27 @@ TEST(RigidBodyRotation, TorqueFreeBodyConservesEnergyAndAngularMomentum) {
             const double E0 = energyOf(I, omega);
             EXPECT_NEAR(rotationalKineticEnergy(body.q, body.L, I), E0, 1e-15);
             double worstEnergy = 0, worstMomentum = 0, worstEarlyEnergy = 0;
+            Quat before = body.q;
             for (int n = 0; n < 100000; ++n) {
+                const Quat middle = body.q;
                 body.step(dt);
                 worstEnergy = std::max(worstEnergy, std::abs(rotationalKineticEnergy(body.q, body.L, I) / E0 - 1));
-                worstMomentum = std::max(worstMomentum, (body.L - L0).norm() / L0.norm());
+                if (n > 0) {
+                    const Vec3 kinematicL = labInertia(middle, I) * angularVelocityFromOrientations(before, body.q, dt);
+                    worstMomentum = std::max(worstMomentum, (kinematicL - L0).norm() / L0.norm());
+                }
+                before = middle;
                 if (n < 10000) worstEarlyEnergy = worstEnergy;
             }
+            worstOfAll = std::max(worstOfAll, worstMomentum);
             std::printf("[ measured ] I = (%g, %g, %g), omega_body(0) = (%.3f, %.3f, %.3f): energy error %.2e, "
-                        "|L| error %.2e, |q| - 1 = %.1e\n",
+                        "L from the motion of q: error %.2e, |q| - 1 = %.1e\n",
                         I.x(), I.y(), I.z(), omega.x(), omega.y(), omega.z(), worstEnergy, worstMomentum,
                         body.q.norm() - 1);
             EXPECT_LT(worstEnergy, 1e-6);
             EXPECT_LT(worstEnergy, 1.5 * worstEarlyEnergy);  // no drift: the first tenth of the run saw most of it
-            EXPECT_EQ(worstMomentum, 0);
+            EXPECT_LT(worstMomentum, 1e-4);
+            EXPECT_EQ(body.L, L0);  // the drift does not touch L (the header's promise)
             EXPECT_NEAR(body.q.norm(), 1, 1e-15);
         }
     }
@@ -181,7 +208,9 @@ TEST(RigidBodyRotation, RotationAboutMajorAndMinorAxesIsStable) {
 }
 
 // Dzhanibekov effect: started 0.01 off along both other axes, the body flips over and over: the
-// body angular velocity along that axis changes sign, with the period of eulerPeriod.
+// body angular velocity along that axis changes sign, with the period of eulerPeriod. Measured
+// 7.4e-6 and 4.2e-6 off at |omega| dt = 0.02 (the step's own error and the linear interpolation
+// of the crossings within a step): checked to 1e-4 (was 1e-2).
 TEST(RigidBodyRotation, IntermediateAxisFlipsWithTheEllipticPeriod) {
     const double dt = 0.02;
     for (const Vec3& I : {textbookBody, triaxialEllipsoid}) {
@@ -206,7 +235,7 @@ TEST(RigidBodyRotation, IntermediateAxisFlipsWithTheEllipticPeriod) {
         const double analytic = eulerPeriod(I, omega);
         std::printf("[ measured ] I = (%g, %g, %g): %d flips, period %.5f, analytic %.5f, relative error %.2e\n", I.x(),
                     I.y(), I.z(), signChanges, measured, analytic, measured / analytic - 1);
-        EXPECT_NEAR(measured / analytic, 1, 0.01);
+        EXPECT_NEAR(measured / analytic, 1, 1e-4);
         EXPECT_GE(signChanges, 2 * int(downCrossings.size()) - 2);
     }
 }

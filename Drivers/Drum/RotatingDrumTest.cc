@@ -121,6 +121,13 @@ TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
     // never has to hold the sphere up). Energy: (7/10) m v^2 = m g (r - s)(1 - cos phi_max), so
     // 1 - cos phi_max = 2 V^2 / (35 g (r - s)) = 2 F r / (35 (r - s)) with V^2 = w^2 r^2 = F g r.
     // (Rolling needs |F| = (2/7) m g sin(phi) <= mu m g cos(phi), tan(phi) <= 3.5 mu: far away.)
+    // What the formula leaves out, each a few 1e-4 of the amplitude: the sphere sinks into the
+    // wall by m g / kn = 6.6e-4 s, which shortens its lever arm (v = V / (1 + (5/2)(1 - dn/(2s))^2)
+    // is (5/7) dn/s = 4.7e-4 faster), and gravity acts during the slip (it ends near
+    // t_s = 2V / (7 mu g) = 0.11, after the sphere has climbed 1e-3 rad). Measured: 2.7e-4, so
+    // the amplitude is checked to 1e-3. The pendulum starts when the slip ends, about t_s / 2
+    // late, so half a period after the drum starts the sphere is still about
+    // sin(2 pi (t_s / 2) / T) = 2.6% of the amplitude from the bottom (measured 3.1%): checked to 10%.
     CheckedDrum drum;
     const double r = 4, s = 0.5, froude = 0.01;
     drum.afterSetup = [&](CheckedDrum& d) {
@@ -149,10 +156,11 @@ TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
     ASSERT_TRUE(drum.rotating());
     ASSERT_LT(drum.rotationStartTime(), 30 - period / 2);
     const double expected = std::acos(1 - 2 * froude * r / (35 * (r - s)));
-    std::printf("[ measured ] sphere carried to %.5f rad (pendulum amplitude %.5f), %.5f half a period later\n", phiMax,
-                expected, lastPhi);
-    EXPECT_NEAR(phiMax, expected, 0.05 * expected);
-    EXPECT_LT(std::abs(lastPhi), 0.2 * expected);  // back at the bottom after half a period
+    std::printf("[ measured ] sphere carried to %.7f rad (pendulum amplitude %.7f, relative error %.2e), %.5f half a "
+                "period later\n",
+                phiMax, expected, phiMax / expected - 1, lastPhi);
+    EXPECT_NEAR(phiMax, expected, 1e-3 * expected);
+    EXPECT_LT(std::abs(lastPhi), 0.1 * expected);  // back at the bottom after half a period
 }
 
 TEST(RotatingDrum, BadFlagsAreNamed) {
