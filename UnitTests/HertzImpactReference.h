@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace talus::test {
 
@@ -50,6 +51,9 @@ struct HertzImpactOutcome {
 class HertzImpactReference {
 public:
     explicit HertzImpactReference(const HertzImpact& p) : p_(p) {
+        // (The header's phases assume gt = 0: with friction, only elastic impacts.)
+        if (p.friction > 0 && p.restitution != 1)
+            throw std::invalid_argument("HertzImpactReference: friction only with restitution 1");
         const double logE = std::log(p.restitution);
         const double beta = logE / std::sqrt(logE * logE + std::numbers::pi * std::numbers::pi);
         dampingPrefactor_ = 2 * std::sqrt(5.0 / 6.0) * std::abs(beta);
