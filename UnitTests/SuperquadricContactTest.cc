@@ -97,3 +97,49 @@ TEST(SuperquadricContact, WarmStartFollowsALastingContactInFewIterations) {
         }
     }
 }
+
+// Plan B, the fallback when Newton's method fails (morphing from the bounding spheres to the
+// true shapes, SuperquadricContact.h), run alone on every class of configurations but two spheres
+// (which take the closed form), blocky (e down to 0.1), flat faces, edges and needles included:
+// it must find the same contact as
+// the independent reference (the dual route of SuperquadricReference.h), that is the same
+// overlap, normal and contact point (the middle of the overlap along the normal,
+// Xc + (di - dj)/2 outOfI with di, dj the reference's bisected distances to the surfaces).
+TEST(SuperquadricContact, PlanBAloneAgreesWithTheIndependentReference) {
+    std::mt19937_64 random(41);
+    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::blocky, reference::Case::parallelFaces,
+                                 reference::Case::edgeOnFace, reference::Case::needles}) {
+        int failures = 0, wrongSide = 0;
+        double worstOverlap = 0, worstNormal = 0, worstPoint = 0;
+        for (int trial = 0; trial < trialsPerClass / 3; ++trial) {
+            const reference::Configuration c = reference::randomConfiguration(kind, random);
+            const SuperquadricContact found = findSuperquadricContactByMorphing(c.i, c.j);
+            const reference::Contact expected = reference::contact(c.i, c.j);
+            if (!found.converged) {
+                ++failures;
+                continue;
+            }
+            EXPECT_GT(found.morphStages, 0) << name(kind);
+            if (found.touching != (expected.value < 0)) {
+                if (std::abs(expected.value) > 1e-12) ++wrongSide;  // (grazing: |F| at round-off)
+                continue;
+            }
+            if (!found.touching) continue;
+            const double size = std::min(c.shapeI.semiAxes().minCoeff(), c.shapeJ.semiAxes().minCoeff());
+            const Vec3 outOfI = -expected.normal;
+            const double di = reference::surfaceDistance(c.i, expected.point, outOfI),
+                         dj = reference::surfaceDistance(c.j, expected.point, -outOfI);
+            const Vec3 expectedPoint = expected.point + 0.5 * (di - dj) * outOfI;
+            worstOverlap = std::max(worstOverlap, std::abs(found.overlap - expected.overlap) / size);
+            worstNormal = std::max(worstNormal, (found.normal - expected.normal).norm());
+            worstPoint = std::max(worstPoint, (found.contactPoint - expectedPoint).norm() / size);
+        }
+        std::printf("plan B, %s: worst overlap error %.2g, normal %.2g, contact point %.2g\n", name(kind), worstOverlap,
+                    worstNormal, worstPoint);
+        EXPECT_EQ(failures, 0) << name(kind);
+        EXPECT_EQ(wrongSide, 0) << name(kind);
+        EXPECT_LT(worstOverlap, 1e-6) << name(kind);
+        EXPECT_LT(worstNormal, 1e-6) << name(kind);
+        EXPECT_LT(worstPoint, 1e-6) << name(kind);
+    }
+}

@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "Error.h"
@@ -131,6 +132,35 @@ bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
     for (std::size_t k = 0; k < a.size(); ++k)
         if (!sameBits(a[k], b[k])) return false;
     return true;
+}
+
+// Every per-particle array, found through forEachArray so that a field added later is compared
+// without touching the tests that use it.
+inline void expectSameParticles(ParticleStore a, ParticleStore b) {
+    std::size_t arrayA = 0;
+    a.forEachArray([&](auto& arrayOfA) {
+        std::size_t arrayB = 0;
+        b.forEachArray([&](auto& arrayOfB) {
+            if constexpr (std::is_same_v<decltype(arrayOfA), decltype(arrayOfB)>) {
+                if (arrayA == arrayB) {
+                    EXPECT_TRUE(sameBits(arrayOfA, arrayOfB)) << "particle array " << arrayA;
+                }
+            }
+            ++arrayB;
+        });
+        ++arrayA;
+    });
+    EXPECT_EQ(a.size(), b.size());
+}
+
+// A restarted run against the uninterrupted one at the same step: the time, every particle array,
+// the pairs and their histories, bitwise.
+inline void expectSameContinuation(const Simulation& restarted, const Simulation& uninterrupted) {
+    EXPECT_TRUE(sameBits(restarted.time(), uninterrupted.time()));
+    expectSameParticles(restarted.particles(), uninterrupted.particles());
+    EXPECT_TRUE(restarted.pairList().pairs == uninterrupted.pairList().pairs);
+    EXPECT_TRUE(sameBits(restarted.pairList().history, uninterrupted.pairList().history));
+    EXPECT_TRUE(sameBits(restarted.pairList().wallHistory, uninterrupted.pairList().wallHistory));
 }
 
 }  // namespace talus::test

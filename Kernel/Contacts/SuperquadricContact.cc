@@ -194,11 +194,37 @@ Superquadric morphed(const Superquadric& shape, double s) {
     return {lerp(R, shape.a()), lerp(R, shape.b()), lerp(R, shape.c()), lerp(1, shape.e1()), lerp(1, shape.e2())};
 }
 
-}  // namespace
+// Plan B: from the bounding spheres (point `start`) to the true shapes in 4, then 8, then 16
+// stages, each stage's solution starting the next; adds its iterations and stages to `contact`.
+NewtonResult morphFromBoundingSpheres(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                      const SuperquadricContactPoint& start, const SuperquadricContactSettings& settings,
+                                      double scale, SuperquadricContact& contact) {
+    NewtonResult found;
+    for (int stages = 4; !found.converged && stages <= 16; stages *= 2) {
+        SuperquadricContactPoint point = start;
+        bool ok = true;
+        for (int k = 1; k <= stages && ok; ++k) {
+            const double s = static_cast<double>(k) / stages;
+            const Superquadric shapeI = morphed(*i.shape, s), shapeJ = morphed(*j.shape, s);
+            const NewtonResult stage = solve({&shapeI, i.centre, i.rotation}, {&shapeJ, j.centre, j.rotation}, point,
+                                             settings, scale);
+            contact.iterations += stage.iterations;
+            ok = stage.converged;
+            point = stage.point;
+        }
+        contact.morphStages = stages;
+        if (ok) {
+            const ShapeValue atI = i.at(point.point), atJ = j.at(point.point);
+            found = {true, point, 0, {atI.value, atI.gradient}, {atJ.value, atJ.gradient}};
+        }  // (the morphed shapes' Fi is not i's)
+    }
+    return found;
+}
 
-SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
-                                            const SuperquadricContactPoint* start,
-                                            const SuperquadricContactSettings& settings) {
+// findSuperquadricContact, or with newtonFirst false plan B alone.
+SuperquadricContact findContact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                const SuperquadricContactPoint* start, const SuperquadricContactSettings& settings,
+                                bool newtonFirst) {
     SuperquadricContact contact;
     const double Ri = i.shape->boundingRadius(), Rj = j.shape->boundingRadius();
     const Vec3 between = j.centre - i.centre;
@@ -232,31 +258,16 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
         return SuperquadricContactPoint{i.centre + (Ri - 0.5 * (Ri + Rj - distance)) * iToJ, 1};
     };
 
-    NewtonResult found = solve(i, j, start ? *start : sphereStart(), settings, scale);
-    contact.iterations = found.iterations;
-    if (!found.converged && start) {
-        found = solve(i, j, sphereStart(), settings, scale);
-        contact.iterations += found.iterations;
-    }
-    // Plan B: from the bounding spheres to the true shapes in stages.
-    for (int stages = 4; !found.converged && stages <= 16; stages *= 2) {
-        SuperquadricContactPoint point = sphereStart();
-        bool ok = true;
-        for (int k = 1; k <= stages && ok; ++k) {
-            const double s = static_cast<double>(k) / stages;
-            const Superquadric shapeI = morphed(*i.shape, s), shapeJ = morphed(*j.shape, s);
-            const NewtonResult stage = solve({&shapeI, i.centre, i.rotation}, {&shapeJ, j.centre, j.rotation}, point,
-                                             settings, scale);
-            contact.iterations += stage.iterations;
-            ok = stage.converged;
-            point = stage.point;
+    NewtonResult found;
+    if (newtonFirst) {
+        found = solve(i, j, start ? *start : sphereStart(), settings, scale);
+        contact.iterations = found.iterations;
+        if (!found.converged && start) {
+            found = solve(i, j, sphereStart(), settings, scale);
+            contact.iterations += found.iterations;
         }
-        contact.morphStages = stages;
-        if (ok) {
-            const ShapeValue atI = i.at(point.point), atJ = j.at(point.point);
-            found = {true, point, 0, {atI.value, atI.gradient}, {atJ.value, atJ.gradient}};
-        }  // (the morphed shapes' Fi is not i's)
     }
+    if (!found.converged) found = morphFromBoundingSpheres(i, j, sphereStart(), settings, scale, contact);
     if (!found.converged) return contact;
 
     contact.converged = true;
@@ -286,6 +297,19 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
     contact.overlap = di + dj;
     contact.contactPoint = x + 0.5 * (di - dj) * outOfI;
     return contact;
+}
+
+}  // namespace
+
+SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                            const SuperquadricContactPoint* start,
+                                            const SuperquadricContactSettings& settings) {
+    return findContact(i, j, start, settings, true);
+}
+
+SuperquadricContact findSuperquadricContactByMorphing(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                                      const SuperquadricContactSettings& settings) {
+    return findContact(i, j, nullptr, settings, false);
 }
 
 }  // namespace talus

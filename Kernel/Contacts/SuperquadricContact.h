@@ -101,4 +101,10 @@ SuperquadricContact findSuperquadricContact(const PlacedSuperquadric& i, const P
                                             const SuperquadricContactPoint* start = nullptr,
                                             const SuperquadricContactSettings& settings = {});
 
+// Plan B alone: the contact found by morphing from the bounding spheres, without trying Newton's
+// method on the true shapes first (what findSuperquadricContact falls back to when that fails;
+// for testing the fallback on any configuration).
+SuperquadricContact findSuperquadricContactByMorphing(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
+                                                      const SuperquadricContactSettings& settings = {});
+
 }  // namespace talus

@@ -4,7 +4,7 @@
 //   gn = -2 sqrt(5/6) beta sqrt(Sn m*), gt = -2 sqrt(5/6) beta sqrt(St m*),
 //   beta = ln e / sqrt(ln^2 e + pi^2)
 // (Tsuji et al. 1992 in the form of Antypov & Elliott 2011; the restitution this damping gives
-// does not depend on the impact speed and is close to, not equal to, e.)
+// does not depend on the impact speed and is e: UnitTests/HertzMindlinTest.cc.)
 // E* and G* are the effective moduli of the pair: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
 #pragma once
 
