@@ -40,7 +40,7 @@ constexpr double friction = 0.1;
 constexpr double collisionTime = 0.005;
 constexpr double timeStep = collisionTime / 50;
 // A slow normal speed keeps the largest overlap dmax = vn0 tc/pi at 3e-4 r: the kernel's lever
-// arm r - dn/2 (branch vector to the middle of the overlap, SPEC.md 1) then changes the spin by
+// arm r - dn/2 (the branch vector ends at the middle of the overlap) then changes the spin by
 // O(dmax/r), 1e-4 to 2e-4, which the checks below either predict or allow for.
 constexpr double normalSpeed = 0.1;
 constexpr double largestOverlap = normalSpeed * collisionTime / pi;

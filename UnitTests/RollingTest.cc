@@ -6,10 +6,11 @@
 // i.e. tan a <= 7/2 mu. Beyond that the sphere slides with F = mu m g cos a:
 // x'' = g (sin a - mu cos a), and the contact point keeps slipping since its acceleration,
 // g (sin a - mu cos a) - r (5/2 mu g cos a / r) = g (sin a - 7/2 mu cos a), is positive.
-// The kernel's lever arm r - dn/2 (SPEC.md 1) differs from r by dn/(2r) = 2.5e-6 here: with the
-// arm b, x' = b w and I w' = F b give x'' = g sin a / (1 + I / (m b^2)), (2/7) dn/r = 1.4e-6 below
-// 5/7 g sin a (measured: 1.3e-6). The rolling check allows ten times that; the sliding one is
-// exact but for round-off (the Coulomb force is constant), which over the 30000 steps adds up to
+// The kernel's lever arm r - dn/2 (the branch vector ends at the middle of the overlap) differs
+// from r by dn/(2r) = 2.5e-6 here: with the arm b, x' = b w and I w' = F b give
+// x'' = g sin a / (1 + I / (m b^2)), (2/7) dn/r = 1.4e-6 below 5/7 g sin a (measured: 1.3e-6).
+// The rolling check allows ten times that; the sliding one is exact but for round-off (the
+// Coulomb force is constant), which over the 30000 steps adds up to
 // at most 30000 ulp(1.5) = 7e-12 in the speed, 5e-12 of the acceleration (measured: 3e-12).
 #include <gtest/gtest.h>
 
