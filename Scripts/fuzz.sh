@@ -6,7 +6,8 @@
 # executions, corpus size and new findings per target.
 #   Scripts/fuzz.sh [minutes per target, default 2] [target ...]
 #   targets: lammps-data talus-restart cg-data cg-fstat cg-restart command-line (default: all)
-# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default <repo>/../shared).
+# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default <repo>/../shared),
+# FUZZ_JOBS (targets fuzzed at once, default 1; each uses one core).
 # Each finding (a crash, a hang, running out of memory, or a reader that accepted garbage) is a
 # file in $FUZZ_BUILD/findings/TARGET/: reproduce it with $FUZZ_BUILD/SelfTests/Fuzz/fuzz-TARGET
 # FILE, fix the reader, and commit the file to SelfTests/Fuzz/Regressions/TARGET/ under a name
@@ -63,19 +64,23 @@ for lammps in "$shared"/peers/data/*.data "$shared"/reference/mercury/*.data; do
 done
 
 summary=$build/fuzz-summary.txt
+jobs=${FUZZ_JOBS:-1}
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: FUZZ_JOBS must be a positive integer, got '$jobs'"; exit 2; }
 {
-  echo "Fuzzing $(date -u +%Y-%m-%dT%H:%MZ), $seconds s per target, commit $(git -C "$top" rev-parse --short HEAD)"
+  echo "Fuzzing $(date -u +%Y-%m-%dT%H:%MZ), $seconds s per target, $jobs at once, commit $(git -C "$top" rev-parse --short HEAD)"
   printf '%-14s %12s %10s %8s %9s\n' target executions "exec/s" corpus findings
 } >"$summary"
-status=0
-for t in "${targets[@]}"; do
-  corpus=$build/corpus/$t
-  findings=$build/findings/$t
+
+# Fuzzes one target and writes its summary line to $build/TARGET.summary.
+fuzz_target() {
+  local t=$1
+  local corpus=$build/corpus/$t findings=$build/findings/$t
   mkdir -p "$corpus" "$findings"
+  local before
   before=$(ls "$findings" | wc -l)
-  inputs=("$corpus" "$top/SelfTests/Fuzz/Seeds/$t" "$seeds/$t")
+  local inputs=("$corpus" "$top/SelfTests/Fuzz/Seeds/$t" "$seeds/$t")
   [ -d "$top/SelfTests/Fuzz/Regressions/$t" ] && inputs+=("$top/SelfTests/Fuzz/Regressions/$t")
-  dict=()
+  local dict=()
   [ -f "$top/SelfTests/Fuzz/$t.dict" ] && dict=(-dict="$top/SelfTests/Fuzz/$t.dict")
   echo "fuzz: $t for $minutes min"
   # -close_fd_mask=1: the targets' stdout (none of their messages) is not the report's.
@@ -85,12 +90,28 @@ for t in "${targets[@]}"; do
     -print_final_stats=1 -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
     >"$build/$t.log" 2>&1 || true
   # (fork mode reports its progress as "#N: cov: ..."; the last is the total)
+  local executions
   executions=$( (grep -oE '^#[0-9]+' "$build/$t.log" || true) | tail -1 | tr -d '#')
+  local after
   after=$(ls "$findings" | wc -l)
-  new=$((after - before))
-  [ "$new" -gt 0 ] && status=1
   printf '%-14s %12s %10s %8s %9s\n' "$t" "${executions:-0}" "$(( ${executions:-0} / seconds ))" \
-    "$(ls "$corpus" | wc -l)" "$new" >>"$summary"
+    "$(ls "$corpus" | wc -l)" "$((after - before))" >"$build/$t.summary"
+}
+
+running=0
+for t in "${targets[@]}"; do
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+  fuzz_target "$t" &
+  running=$((running + 1))
+done
+wait
+status=0
+for t in "${targets[@]}"; do
+  cat "$build/$t.summary" >>"$summary"
+  [ "$(awk '{ print $5 }' "$build/$t.summary")" -gt 0 ] && status=1
 done
 cat "$summary"
 echo "logs: $build/TARGET.log; findings: $build/findings/TARGET/"
