@@ -18,7 +18,7 @@ using namespace talus::test;
 
 namespace {
 
-// The benchmark's chute (SPEC.md 2, Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
+// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
 // the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
 // along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
 void benchmarkChute(Scene& s, const std::string& file) {

@@ -1,4 +1,4 @@
-// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of SPEC.md 1-2 as the
+// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of Theory/Chutes.md eq. (2)-(4) as the
 // peer codes run it (shared/peers/README.md, scenes B and C), timed from a LAMMPS start file.
 //
 // A rough base of fixed spheres (type 1, d = 1) carries 1000 flowing spheres of d = 1 (type 2) and

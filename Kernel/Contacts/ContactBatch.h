@@ -76,7 +76,7 @@ struct ContactBatch {
         }
     }
 
-    // The kinematics of contactKinematics (SPEC.md 1: arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
+    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
     // and the law's lasting-contact step, for every lane.
     [[gnu::noinline]] void compute(double dt) {
         for (int l = 0; l < count; ++l) {
