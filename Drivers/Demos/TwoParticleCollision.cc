@@ -62,7 +62,7 @@ public:
                     restitution, errorE);
         std::printf("collision time: measured %.6e, analytic %.6e, relative error %.2e\n", durationMeasured,
                     collisionTime, errorT);
-        std::printf("agrees with SPEC.md 1 to 1e-3: %s\n", separated_ && errorE < 1e-3 && errorT < 1e-3 ? "yes" : "no");
+        std::printf("agrees with the analytic tc and e to 1e-3: %s\n", separated_ && errorE < 1e-3 && errorT < 1e-3 ? "yes" : "no");
     }
 
 private:

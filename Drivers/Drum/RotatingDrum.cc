@@ -20,7 +20,7 @@ constexpr double particleVolume = pi / 6;  // d = 1 spheres and the ellipsoids o
 }  // namespace
 
 RotatingDrum::RotatingDrum() {
-    addFlag("radius", "drum radius r (SPEC.md 5: 15)", radius);
+    addFlag("radius", "drum radius r (the thesis: 15)", radius);
     addFlag("length", "periodic length of the drum along its axis y", length);
     addFlag("aspect", "aspect ratio R of the ellipsoids (a = R^(2/3)/2, b = c = R^(-1/3)/2)", aspect);
     addFlag("fill", "fraction of the drum's cross-section the bed fills, in (0, 1)", fill);

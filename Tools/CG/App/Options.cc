@@ -313,7 +313,7 @@ std::string usage() {
     return R"(usage: talus-cg NAME [options]     (reads NAME.data, and NAME.fstat, NAME.restart when present)
 
 Coarse-grains DEM output (.data/.fstat of Talus or MercuryDPM) into continuum fields
-(SPEC.md 6; Documentation/CoarseGraining.md): density, volume fraction, momentum, velocity,
+(Documentation/CoarseGraining.md, Documentation/Theory/CoarseGraining.md): density, volume fraction, momentum, velocity,
 kinetic stress, contact stress, per-species density and concentration.
 
 input:
@@ -362,11 +362,11 @@ derived (Documentation/CoarseGraining.md "Depth averages", "Mixing and segregati
                           instead of the fields; z must be resolved and its range cover the flow
   --bulk-density RHO      bulk density for the height h = mass per area / RHO (default: the
                           mass-weighted mean density of the column)
-  --mixing K              mixing index M and segregation index S (SPEC.md 5) with species K as the
+  --mixing K              mixing index M and segregation index S (Theory/CoarseGraining.md) with species K as the
                           spheres, for every frame written (or the time average)
   --mixing-output FILE    where M and S go (default: the output file with .mixing.csv for .csv)
 
-width scan (Documentation/CoarseGraining.md "Choosing the widths"; SPEC.md 6):
+width scan (Documentation/CoarseGraining.md "Choosing the widths"):
   --width-scan            scan diagonal widths of two directions on a log grid at the scan points, write
                           the field and its sensitivity per width pair, and choose the widths at the
                           centre of the largest plateau of insensitivity common to all points
