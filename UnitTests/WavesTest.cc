@@ -125,8 +125,8 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
 }
 
 // Where the list has no room left for the next wave, it is built anew ahead of it
-// (Simulation::buildListForWave): the flow goes on in waves through its list builds, where until
-// 2026-12-04 the last steps before each build were single steps (980 of 1000 here in waves).
+// (Simulation::buildListForWave): the flow goes on in waves through its list builds, rather than in
+// single steps until each build (980 of 1000 steps here in waves).
 TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
     const double dt = 1e-4;
     Scene s;

@@ -106,9 +106,8 @@ public:
     void actionsAfterSolve() override {
         const ParticleStore& p = particles();
         // The peak of the memory the run allocated: the peak resident set less the pages of files
-        // and shared memory (code and libraries paged in as the run goes, MPI's segments: 0.6-1.2 MB
-        // at 3000 particles on the Zen 3 host of 2026-12-03, a fifth to a third of the whole
-        // resident growth there; they only grow, so the end's are their peak) and less the
+        // and shared memory (code and libraries paged in as the run goes, MPI's segments: a large
+        // part of the resident growth of a small scene; they only grow, so the end's are their peak) and less the
         // allocations before the set-up.
         const double allocated =
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;

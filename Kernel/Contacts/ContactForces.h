@@ -461,7 +461,7 @@ private:
     // noted, nothing else. Through plain pointers that the compiler knows apart (they do not
     // alias: separate arrays), so that a lane costs its loads, additions and stores: with the
     // vectors' own accessors, and the rare cases' branches in the loop, it took 88 instructions
-    // a contact (cachegrind, settled bed, 2026-12-04), a fifth of the settled step's.
+    // a contact in a profile of the settled bed, a fifth of the settled step's.
     void applyBatch(PairList& list) {
         const ContactBatch& b = batch_;
         double* __restrict force = p_.force[0].data();
