@@ -502,7 +502,7 @@ Vec3 Simulation::sweepFrame() const {
     return driftFrame_ ? *driftFrame_ : sweepFrameVelocity(state_.particles);
 }
 
-// Velocity Verlet (SPEC.md 1): half kick, drift, forces at the new positions, half kick.
+// Velocity Verlet (Theory/Integration.md eq. (3)-(6)): half kick, drift, forces at the new positions, half kick.
 void Simulation::integrate(bool recordContacts) {
     ParticleStore& p = state_.particles;
     const double dt = state_.settings.timeStep;

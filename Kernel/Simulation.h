@@ -1,8 +1,8 @@
-// talus::Simulation, the base class of every driver (DESIGN.md "The driver contract").
+// talus::Simulation, the base class of every driver (Documentation/Architecture.md "The driver contract").
 //
 // A driver sets species, particles, walls and boundaries in setupInitialConditions() and may
 // override the hooks; main() sets the name, time step and end time and calls solve(argc, argv).
-// The time loop is velocity Verlet (SPEC.md 1): half kick, drift, prescribed motions, periodic
+// The time loop is velocity Verlet (Theory/Integration.md eq. (3)-(6)): half kick, drift, prescribed motions, periodic
 // wrap, boundaries (addBoundary), neighbour-list update when needed, forces, half kick.
 #pragma once
 
@@ -109,7 +109,7 @@ public:
                             const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
     // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
     std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
-    // Superquadric particles (SPEC.md 4): a shape added once, then particles of it. The particle's
+    // Superquadric particles (Theory/Superquadrics.md): a shape added once, then particles of it. The particle's
     // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
     // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
     std::size_t addShape(const Superquadric& shape);
@@ -189,7 +189,7 @@ public:
     // Energies of the mobile particles; elastic energy of the last force evaluation.
     Energies energies() const;
     const ContactSummary& contactSummary() const { return summary_; }
-    // The shortest collision time over the species pairs present (SPEC.md 1), and what it is.
+    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is.
     double shortestCollisionTime(std::string* which = nullptr) const;
 
     SimulationState& state() { return state_; }

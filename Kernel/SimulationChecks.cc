@@ -1,4 +1,4 @@
-// What stops a run before it goes wrong (DESIGN.md, "never silently wrong"): a time step too
+// What stops a run before it goes wrong (Documentation/Reliability.md): a time step too
 // large for the stiffest contact present, and overlaps beyond a sane fraction of the radius, at
 // the start (bad input) and during the run (a blow-up). Part of talus::Simulation.
 #include <sstream>

@@ -2,12 +2,13 @@
 # Fuzzes the readers with libFuzzer (SelfTests/Fuzz): builds the targets with clang under
 # AddressSanitizer and UndefinedBehaviorSanitizer in their own build folder, seeds each with the
 # repository's files (SelfTests/Fuzz/Seeds, Regressions) and with cuts of the MercuryDPM and
-# peer files in ../shared when present, runs each for the given minutes, and writes a summary:
+# peer files in $FUZZ_SHARED when present, runs each for the given minutes, and writes a summary:
 # executions, corpus size and new findings per target.
 #   Scripts/fuzz.sh [minutes per target, default 2] [target ...]
 #   targets: lammps-data talus-restart cg-data cg-fstat cg-restart command-line (default: all)
-# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default <repo>/../shared),
-# FUZZ_JOBS (targets fuzzed at once, default 1; each uses one core).
+# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default: the folder
+# 'shared' next to the repository, which holds the peers' start files), FUZZ_JOBS (targets
+# fuzzed at once, default 1; each uses one core).
 # Each finding (a crash, a hang, running out of memory, or a reader that accepted garbage) is a
 # file in $FUZZ_BUILD/findings/TARGET/: reproduce it with $FUZZ_BUILD/SelfTests/Fuzz/fuzz-TARGET
 # FILE, fix the reader, and commit the file to SelfTests/Fuzz/Regressions/TARGET/ under a name

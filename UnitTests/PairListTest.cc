@@ -15,7 +15,7 @@ using namespace talus::test;
 
 namespace {
 
-// A small periodic chute (SPEC.md 2): a jittered base of fixed spheres and 150 flowing spheres
+// A small periodic chute (Theory/Chutes.md "The rough base"): a jittered base of fixed spheres and 150 flowing spheres
 // of two sizes dropped on it with random velocities, inclined at 24 degrees.
 void chuteScene(Scene& s) {
     s.setDomain(Vec3::Zero(), Vec3(6, 6, 12));

@@ -18,7 +18,7 @@ using namespace talus::test;
 
 namespace {
 
-// The benchmark's chute (SPEC.md 2, Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
+// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
 // the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
 // along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
 void benchmarkChute(Scene& s, const std::string& file) {
@@ -125,8 +125,8 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
 }
 
 // Where the list has no room left for the next wave, it is built anew ahead of it
-// (Simulation::buildListForWave): the flow goes on in waves through its list builds, where until
-// 2026-12-04 the last steps before each build were single steps (980 of 1000 here in waves).
+// (Simulation::buildListForWave): the flow goes on in waves through its list builds, rather than in
+// single steps until each build (980 of 1000 steps here in waves).
 TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
     const double dt = 1e-4;
     Scene s;

@@ -1,4 +1,4 @@
-// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of SPEC.md 1-2 as the
+// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of Theory/Chutes.md eq. (2)-(4) as the
 // peer codes run it (shared/peers/README.md, scenes B and C), timed from a LAMMPS start file.
 //
 // A rough base of fixed spheres (type 1, d = 1) carries 1000 flowing spheres of d = 1 (type 2) and
@@ -106,9 +106,8 @@ public:
     void actionsAfterSolve() override {
         const ParticleStore& p = particles();
         // The peak of the memory the run allocated: the peak resident set less the pages of files
-        // and shared memory (code and libraries paged in as the run goes, MPI's segments: 0.6-1.2 MB
-        // at 3000 particles on the Zen 3 host of 2026-12-03, a fifth to a third of the whole
-        // resident growth there; they only grow, so the end's are their peak) and less the
+        // and shared memory (code and libraries paged in as the run goes, MPI's segments: a large
+        // part of the resident growth of a small scene; they only grow, so the end's are their peak) and less the
         // allocations before the set-up.
         const double allocated =
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;

@@ -1,12 +1,12 @@
-// A long bidisperse chute fed by a maser: the chapter-4 setup of SPEC.md 2 and 3.
+// A long bidisperse chute fed by a maser: the chapter-4 setup of Theory/Chutes.md eq. (5)-(6) and Theory/Maser.md.
 //
 // Methods. Spheres of mean diameter 1 and size ratio S = dL/dS (--size-ratio, default 1.5; dL =
 // 2S/(1+S), dS = 2/(1+S)), equal volumes of each size, density 6/pi, flow down a chute inclined
 // at 23 degrees, periodic across (width 6), with a disordered rough base of fixed spheres of
 // diameter 1 (--base-diameter). Contacts are linear spring-dashpots with e = 0.88 and tc = 0.005 for every pair
-// type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
+// type (Theory/ContactLaws.md eq. (10)-(12)), kt = 2/7 kn, gt = gn, friction 0.5 for large, 0.25 for small spheres and
 // 0.375 between them (a sphere on the base: its own). dt = 1e-4. With --contact-law table-3C1,
-// the law of the thesis's chapter-3 simulations instead (SPEC.md 1, seed Table 3.C.1): kn = 2e5
+// the law of the thesis's chapter-3 simulations instead (Theory/ContactLaws.md "Bidisperse mixtures", the thesis's table 3.C.1): kn = 2e5
 // and gamma_n = 25 for two large spheres in units of dL, mL and g (tc = 4.97e-3, e = 0.883), the
 // same e and tc/sqrt(d/g) for every pair type (d: dL, dS, their mean; a base pair the mean of
 // its two diameters), and the base behaving as large spheres (friction 0.375 for a small sphere
@@ -166,9 +166,9 @@ private:
                     "maser's %.0f spheres\n", name().c_str(), added, end, maserLength, maser.seeded());
     }
 
-    // The species and their pair laws. chapter-4 (SPEC.md 2): e and tc the same for every pair
+    // The species and their pair laws. chapter-4 (Theory/Chutes.md eq. (5)-(6)): e and tc the same for every pair
     // type, so each pair's stiffness and damping follow from its reduced mass (a fixed base sphere
-    // has infinite mass: the reduced mass is the other's). table-3C1 (SPEC.md 1, seed Table
+    // has infinite mass: the reduced mass is the other's). table-3C1 (Theory/ContactLaws.md "Bidisperse mixtures", the thesis's table
     // 3.C.1): tc and e of two large spheres from kn = 2e5 and gamma_n = 25 in the thesis's units
     // (dL = mL = g = 1, so m* = 1/2), tc/sqrt(d/g) and e the same for every pair type, and the
     // base, fixed large particles there, with the large spheres' friction towards both sizes.

@@ -1,5 +1,5 @@
 // Demo 2 (Documentation/Tutorials/TwoParticleCollision.md): a head-on collision of two spheres,
-// compared with the analytic restitution coefficient and collision time of SPEC.md 1.
+// compared with the analytic restitution coefficient and collision time of Theory/ContactLaws.md eq. (10)-(11).
 //
 // Two unit-mass spheres (d = 1, density 6/pi) approach each other at relative speed 1 with no
 // gravity. The linear spring-dashpot law is set from the wanted collision time tc and
@@ -62,7 +62,7 @@ public:
                     restitution, errorE);
         std::printf("collision time: measured %.6e, analytic %.6e, relative error %.2e\n", durationMeasured,
                     collisionTime, errorT);
-        std::printf("agrees with SPEC.md 1 to 1e-3: %s\n", separated_ && errorE < 1e-3 && errorT < 1e-3 ? "yes" : "no");
+        std::printf("agrees with the analytic tc and e to 1e-3: %s\n", separated_ && errorE < 1e-3 && errorT < 1e-3 ? "yes" : "no");
     }
 
 private:

@@ -1,4 +1,4 @@
-// The rotating drum of SPEC.md 5: what the driver does, in the order it happens (the methods are
+// The rotating drum of Theory/RotatingDrum.md: what the driver does, in the order it happens (the methods are
 // summarised in RotatingDrum.h and Documentation/Drums/RotatingDrum.md).
 #include "RotatingDrum.h"
 
@@ -16,11 +16,11 @@ namespace talus {
 namespace {
 // Loose packing fraction of the settled bed, to turn --fill into a particle count.
 constexpr double bedPackingFraction = 0.6;
-constexpr double particleVolume = pi / 6;  // d = 1 spheres and the ellipsoids of SPEC.md 5
+constexpr double particleVolume = pi / 6;  // d = 1 spheres and the ellipsoids of Theory/RotatingDrum.md eq. (1)
 }  // namespace
 
 RotatingDrum::RotatingDrum() {
-    addFlag("radius", "drum radius r (SPEC.md 5: 15)", radius);
+    addFlag("radius", "drum radius r (the thesis: 15)", radius);
     addFlag("length", "periodic length of the drum along its axis y", length);
     addFlag("aspect", "aspect ratio R of the ellipsoids (a = R^(2/3)/2, b = c = R^(-1/3)/2)", aspect);
     addFlag("fill", "fraction of the drum's cross-section the bed fills, in (0, 1)", fill);
@@ -74,7 +74,7 @@ void RotatingDrum::setupInitialConditions() {
     setGravity(Vec3(0, 0, -1));
     setDomain(Vec3(-radius - 1, 0, -radius - 1), Vec3(radius + 1, length, radius + 1));
     setPeriodic(false, true, false);
-    // SPEC.md 5: equal volumes pi/6, equal density, mass 1; tc and e for two particles (m_ij = 1/2).
+    // Theory/RotatingDrum.md eq. (1): equal volumes pi/6, equal density, mass 1; tc and e for two particles (m_ij = 1/2).
     const double density = 1 / particleVolume;
     const auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5).withFriction(friction);
     addSpecies("spheres", density, law);
@@ -106,7 +106,7 @@ void RotatingDrum::setupInitialConditions() {
     insertRemaining();
 }
 
-// SPEC.md 5: a flat rough base of length 2 pi r and width L (the chute's disordered layer of
+// Theory/RotatingDrum.md eq. (2): a flat rough base of length 2 pi r and width L (the chute's disordered layer of
 // d = 0.5, made in a scratch simulation) wrapped onto the cylinder.
 void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     Chute flat;
@@ -123,7 +123,7 @@ void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     }
 }
 
-// SPEC.md 5 "Filling": random places where the particle's bounding sphere overlaps no other
+// Theory/RotatingDrum.md "Filling": random places where the particle's bounding sphere overlaps no other
 // (nearest periodic image along y) and lies inside the drum; 1000 failures in a row end the round.
 int RotatingDrum::insertRemaining() {
     const ParticleStore& p = particles();
@@ -175,7 +175,7 @@ int RotatingDrum::insertRemaining() {
 
 void RotatingDrum::startRotation() {
     const double w = angularSpeed();
-    // SPEC.md 5: velocity (-w r sin th, 0, w r cos th) at angle th = atan2(Z, X) is the rotation
+    // Theory/RotatingDrum.md eq. (3)-(4): velocity (-w r sin th, 0, w r cos th) at angle th = atan2(Z, X) is the rotation
     // w x X with w = (0, -w, 0): the angle grows, the bottom moves towards +x.
     motions()[0].angularVelocity = Vec3(0, -w, 0);
     // The wall moves from now on (the time loop sets these velocities from the next step).

@@ -1,4 +1,4 @@
-// Checks of the rotating-drum driver (SPEC.md 5) on small drums: the wall turns as a rigid body
+// Checks of the rotating-drum driver (Theory/RotatingDrum.md eq. (3)-(4)) on small drums: the wall turns as a rigid body
 // at w, the bed is at rest when it starts, no particle is lost, a single sphere is carried as
 // the mechanics of rolling predicts, and bad flags are named.
 #include <gtest/gtest.h>
@@ -74,7 +74,7 @@ TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
             const Start& s = wall.at(p.id[i]);
             worstRadius = std::max(worstRadius, std::abs(rho - s.radius));
             ASSERT_EQ(x.y(), s.y);
-            // SPEC.md 5: speed w r along the circle, the angle advanced by w (t - t0).
+            // Theory/RotatingDrum.md eq. (3)-(4): speed w r along the circle, the angle advanced by w (t - t0).
             worstSpeed = std::max(worstSpeed, std::abs(p.velocity[i].norm() - w * rho));
             worstAngle = std::max(worstAngle, std::abs(std::remainder(angle - s.angle - turned, 2 * pi)));
         }

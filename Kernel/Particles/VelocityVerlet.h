@@ -1,5 +1,5 @@
 // The kicks and the drift of the velocity Verlet (kick-drift-kick) step of the mobile particles
-// (DESIGN.md "Data layout and the time step"): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v.
+// (Theory/Integration.md eq. (3)-(6)): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v.
 // Fixed particles are left alone (prescribed motions move them elsewhere).
 //
 // The loops run over the coordinates as plain arrays. Written over std::vector<Vec3>, the

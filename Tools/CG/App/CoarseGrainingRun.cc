@@ -254,7 +254,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             }
             if (options.mixingSpecies) {
                 std::vector<std::string> mixingComments = comments;
-                mixingComments.push_back("mixing index M and segregation index S (SPEC.md 5) of species " +
+                mixingComments.push_back("mixing index M and segregation index S (Theory/CoarseGraining.md eq. (13)-(16)) of species " +
                                          std::to_string(*options.mixingSpecies) +
                                          "; SpeciesAtCore 1 when its mean distance from the centre of mass is below the material's (Fields/MixingIndex.h)");
                 mixingWriter = std::make_unique<CsvWriter>(

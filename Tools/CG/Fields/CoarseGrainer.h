@@ -1,5 +1,5 @@
 // Evaluates the coarse-grained sums (FieldSums.h) of one frame at any list of points
-// (SPEC.md 6: evaluation needs no grid). One code path for every point set: a grid is just a
+// (Theory/CoarseGraining.md "Fields": evaluation needs no grid). One code path for every point set: a grid is just a
 // list of points, so identical points give bitwise identical values.
 //
 // Set up once with the kernel (shape, width matrix, coordinates); then per frame setFrame()
