@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "Parallel/DomainSplit.h"
+#include "Particles/RigidBodyRotation.h"
 #include "Simulation.h"
 
 namespace talus {

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "ContactTestScenes.h"
+#include "Integration/Integrator.h"
 
 using namespace talus;
 using namespace talus::test;
@@ -253,13 +254,13 @@ TEST(PairList, SweepFrameChangesNothing) {
 // through the periodic faces. (186 particles: blocks of eight in lanes and a tail of two.)
 TEST(PairList, DriftInOnePassChangesNothing) {
     Scene onePass, passByPass;
-    bool usedOnePass = false;
-    onePass.afterStep = [&usedOnePass](Scene& scene) { usedOnePass = scene.driftsInOnePass(); };
-    passByPass.setDriftInOnePass(false);
+    passByPass.settings().stepper.driftPass = false;
     runChuteWith(onePass, [](PairList&) {});
     runChuteWith(passByPass, [](PairList&) {});
-    EXPECT_TRUE(usedOnePass) << "the chute should drift in one pass";
-    EXPECT_FALSE(passByPass.driftsInOnePass());
+    const Integrator::Statistics one = onePass.integrator().statistics(), byPass = passByPass.integrator().statistics();
+    EXPECT_EQ(one.driftPassSteps, 30000u) << "the chute should drift in one pass at every step";
+    EXPECT_EQ(byPass.driftPassSteps, 0u);
+    EXPECT_EQ(byPass.plainSteps, 30000u);
     EXPECT_GT(onePass.pairList().builds, 5u) << "the test needs builds (and reorders) during the run";
     EXPECT_EQ(onePass.pairList().builds, passByPass.pairList().builds);
     EXPECT_EQ(particlesThatDiffer(onePass.particles(), passByPass.particles()), 0u)

@@ -19,6 +19,7 @@
 
 #include "Contacts/PairSweep.h"
 #include "IO/LammpsDataFile.h"
+#include "Integration/Integrator.h"
 #include "Parallel/DomainSplit.h"
 #include "Simulation.h"
 
@@ -134,7 +135,7 @@ public:
                     100 * sums[6] / ranks() / std::max(run.wallSeconds, 1e-300), sums[7],
                     100 * sums[8] / ranks() / std::max(run.wallSeconds, 1e-300),
                     100 * sums[9] / ranks() / std::max(run.wallSeconds, 1e-300),
-                    sweepFormName(sweepForm()), static_cast<unsigned long long>(stepsInWaves()));
+                    sweepFormName(sweepForm()), static_cast<unsigned long long>(integrator().statistics().waves.stepsInWaves));
     }
 
 private:
