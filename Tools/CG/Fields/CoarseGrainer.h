@@ -58,6 +58,7 @@ private:
     std::unique_ptr<CylindricalCoarseGrainer> cylindrical_;  // set for RZ and R only
     FieldSums layout_;
     Vec3 halfExtent_{};  // support half-extent per lab axis (zero on averaged axes)
+    std::array<long, 3> imagesEachSide_{};  // of the current frame per lab axis (0: no images)
     double scale_ = 1;   // c_d det(A) / (lengths of the averaged directions) of the current frame
 
     // Particle sources of the current frame (images included), structure of arrays.

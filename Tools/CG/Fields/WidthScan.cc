@@ -23,7 +23,7 @@ long particlesInSupport(const ParticleFrame& frame, const std::vector<bool>& exc
         shifts[k] = {0.0};
         const double length = frame.box.length(k);
         if (w[k] > 0 && periodic[k] && length > 0) {
-            const long reach = static_cast<long>(std::ceil(cutoff * w[k] / length)) + 1;
+            const long reach = periodicImagesEachSide(cutoff * w[k], cutoff, length, k, "width scan");
             for (long n = 1; n <= reach; ++n) {
                 shifts[k].push_back(double(n) * length);
                 shifts[k].push_back(-double(n) * length);
