@@ -113,8 +113,9 @@ public:
         const double allocated =
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;
         // What each process counts for itself (its memory, contacts, listed pairs), and the particles.
-        const std::vector<double> sums = sumOverScene(*this, {allocated, double(particles().owned()),
-            double(contactSummary().contacts), double(pairList().pairs.size()), double(pairList().interiorPairs)});
+        const std::vector<double> sums = sumOverScene(*this, {allocated, double(contactSummary().contacts),
+            double(pairList().pairs.size()), double(pairList().interiorPairs)});
+        const double particleCount = totalsOver(*this, allParticles()).count;
         const std::vector<double> flowing = sumsOver(*this, mobileParticles(), {
             [](const ParticleStore& p, std::size_t i) { return p.velocity[i].x(); },
             [](const ParticleStore&, std::size_t) { return 1.0; }});
@@ -124,7 +125,7 @@ public:
             "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f (%.0f interior)  rebuilds %llu  "
             "%s  sweep %s  in-waves %llu\n",
             flowing[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
-            sums[0] / sums[1], flowing[0] / flowing[1], sums[2], sums[3], sums[4],
+            sums[0] / particleCount, flowing[0] / flowing[1], sums[1], sums[2], sums[3],
             static_cast<unsigned long long>(pairList().builds), ranks.c_str(), sweepFormName(sweepForm()),
             static_cast<unsigned long long>(stepsInWaves()));
     }
