@@ -132,9 +132,9 @@ public:
     void sumOverRanks(std::vector<double>& values) const;
     // The domain split of the run (after solve has set it up; one rank without mpirun).
     const DomainSplit* domainSplit() const { return split_.get(); }
-    // A driver whose hooks are rank-aware (they loop over owned() particles, sum over ranks and
-    // write files on rank 0 only) says so; any other refuses to start on more than one rank
-    // rather than measure only the particles of one rank.
+    // Drivers run on ranks by default: their measurements go through Kernel/Sampling (whole-scene
+    // sums, files and messages written once). A driver whose hooks read particles() directly for
+    // whole-scene numbers says setRunsOnRanks(false) and then refuses to start on more ranks.
     void setRunsOnRanks(bool on) { runsOnRanks_ = on; }
     // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
     // done at the start and after every save anyway.
@@ -241,7 +241,7 @@ private:
     // request, and every rebalanceInterval_ of simulated time.
     double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
     std::array<int, 3> rankGrid_{0, 0, 0};  // --rank-grid; zeros: all ranks along x
-    bool runsOnRanks_ = false;
+    bool runsOnRanks_ = true;
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     RunStatistics lastRun_;

@@ -26,7 +26,6 @@ public:
     int spheres = 0;  // 1: spheres of the same volume instead (for the cost comparison)
 
     SettlingEllipsoids() {
-        setRunsOnRanks(true);  // nothing of its own to sum: it runs under mpirun as it is
         addFlag("particles", "number of particles", particleCount);
         addFlag("width", "width of the square box", width);
         addFlag("aspect", "ratio of the long semi-axis to the two short ones", aspect);

@@ -22,9 +22,12 @@
 // dynamic angle of repose.
 #pragma once
 
+#include <cmath>
 #include <string>
 
+#include "DrumAnalysis.h"
 #include "IO/SeriesFile.h"
+#include "Sampling/SamplingClock.h"
 #include "Simulation.h"
 
 namespace talus {
@@ -39,15 +42,17 @@ public:
 
     static constexpr double collisionTime = 0.05, restitution = 0.1, friction = 0.5;
     static constexpr double wallDiameter = 0.5;
+    static constexpr double particleVolume = pi / 6;  // d = 1 spheres and the ellipsoids of Theory/RotatingDrum.md eq. (1)
+    static constexpr double bedPackingFraction = 0.6;  // of the settled bed, to turn --fill into a count
 
     RotatingDrum();
 
     // Angular speed of the drum from the Froude number, w = sqrt(F g / r).
-    double angularSpeed() const;
+    double angularSpeed() const { return std::sqrt(froude * gravity().norm() / radius); }
     bool rotating() const { return rotationStart_ >= 0; }
     double rotationStartTime() const { return rotationStart_; }
     // Drum turns since the rotation started.
-    double rotations() const;
+    double rotations() const { return rotating() ? angularSpeed() * (time() - rotationStart_) / (2 * pi) : 0.0; }
     int particlesToInsert() const { return targetCount_; }
     int particlesInserted() const { return insertedSpheres_ + insertedEllipsoids_; }
     // Distance from the axis within which the bed's bounding spheres must lie.
@@ -67,15 +72,18 @@ private:
     void startRotation();
     void checkBed() const;
     void writeSample();
+    drum::MixingIndices mixingOf(const ParticleStore& bed) const;
+    double bedEnergy() const;
 
     std::size_t shape_ = 0;
     // The run's progress, kept in the restart file.
     int targetCount_ = 0, insertedSpheres_ = 0, insertedEllipsoids_ = 0, rounds_ = 0;
     double lastInsertion_ = 0, rotationStart_ = -1, innerRadius_ = 0, angleSum_ = 0;
     int angleSamples_ = 0;
+    SamplingClock clock_{*this, "samples"};
     SeriesFile series_{*this, "series",
-                       "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
-                       " (energy: translational + rotational of the bed; angle nan while filling)\n"};
+                       {"t", "rotations", "kineticEnergy", "mixingIndex", "segregationIndex", "reposeAngleDegrees"},
+                       "(energy: translational + rotational of the bed; angle nan while filling)"};
 };
 
 }  // namespace talus

@@ -56,6 +56,18 @@ public:
     std::size_t addBase(ChuteBase type, double diameter, std::size_t species, std::uint64_t seed = 1,
                         double roughness = 0.5);
 
+    // The base continued downstream: copies of the fixed particles of species `from`, shifted along
+    // x by whole multiples of `period`, whose centres fall in [xFrom, xTo), added as fixed
+    // particles of species `to` (a maser's base laid along the chute it feeds). Each rank copies
+    // the particles it owns. Returns the number of copies in the whole scene.
+    // A start configuration: `count` spheres of the species and radius, at rest at random places
+    // in the box [lo, hi] (Boundaries/InsertionBoundary.h, random numbers from random()); prints
+    // the insertion's report once and stops with an error naming `what` unless all were placed.
+    void insertAtRest(std::size_t count, std::size_t species, double radius, const Vec3& lo, const Vec3& hi,
+                      const std::string& what);
+
+    double continueBase(std::size_t from, std::size_t to, double period, double xFrom, double xTo);
+
 private:
     ChuteGeometry geometry_;
     double gravityMagnitude_ = 1;
