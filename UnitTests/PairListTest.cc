@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 
+#include "Contacts/ContactForces.h"
 #include "ContactTestScenes.h"
 #include "Integration/Integrator.h"
 

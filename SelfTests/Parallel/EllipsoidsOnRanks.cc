@@ -84,8 +84,8 @@ public:
         for (std::size_t i = 0; i < p.owned(); ++i) massesKept &= p.mass[i] == initialMass_.at(p.id[i]);
         const Vec3 centre = Vec3::Constant(10);
         // count, id sums (2), masses changed, momentum (3), angular momentum (3), their scales (2), contacts,
-        // contacts in EllipsoidContactBatch's lanes
-        std::vector<double> t(14, 0.0);
+        // contacts in EllipsoidContactBatch's lanes, kinetic energy, mass
+        std::vector<double> t(16, 0.0);
         for (std::size_t i = 0; i < p.owned(); ++i) {
             const double id = static_cast<double>(p.id[i]);
             const Vec3 momentum = p.mass[i] * p.velocity[i];
@@ -94,6 +94,8 @@ public:
             for (int a = 0; a < 3; ++a) t[4 + a] += momentum[a], t[7 + a] += orbital[a] + p.angularMomentum[i][a];
             t[10] += momentum.norm();
             t[11] += orbital.norm() + p.angularMomentum[i].norm();
+            t[14] += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
+            t[15] += p.mass[i];
         }
         t[3] = massesKept ? 0 : 1;
         t[12] = static_cast<double>(contactSummary().contacts);
@@ -106,14 +108,20 @@ public:
         const double dl = (Vec3(t[7], t[8], t[9]) - Vec3(initial_[7], initial_[8], initial_[9])).norm() / t[11];
         worstMomentum_ = std::max(worstMomentum_, dp);
         worstAngularMomentum_ = std::max(worstAngularMomentum_, dl);
-        const bool ok = t[0] == initial_[0] && t[1] == initial_[1] && t[2] == initial_[2] && t[3] == 0 &&
+        // Simulation::energies() over the whole scene: the owned particles of every rank, no ghost
+        // counted twice (the same sums in the same order as t's, so to round-off of the order of
+        // the ranks' sum at most).
+        const Energies e = energies();
+        const bool energiesOfTheScene =
+            std::abs(e.kinetic - t[14]) <= 1e-12 * t[14] && std::abs(e.mass - t[15]) <= 1e-12 * t[15];
+        const bool ok = energiesOfTheScene && t[0] == initial_[0] && t[1] == initial_[1] && t[2] == initial_[2] && t[3] == 0 &&
                         dp <= momentumTolerance && dl <= angularMomentumTolerance(step());
         if (!ok) {
-            char m[300];
+            char m[500];
             std::snprintf(m, sizeof m,
-                          "conservation broken at step %llu: count %.0f (was %.0f), id sums %.0f %.0f (were %.0f %.0f), "
+                          "conservation broken at step %llu: energies() kinetic %.17g, mass %.17g against %.17g, %.17g; count %.0f (was %.0f), id sums %.0f %.0f (were %.0f %.0f), "
                           "%s, momentum change %.3g and angular momentum change %.3g of their scales (tolerances %.0g, %.2g)",
-                          static_cast<unsigned long long>(step()), t[0], initial_[0], t[1], t[2], initial_[1],
+                          static_cast<unsigned long long>(step()), e.kinetic, e.mass, t[14], t[15], t[0], initial_[0], t[1], t[2], initial_[1],
                           initial_[2], t[3] == 0 ? "masses kept" : "a mass changed", dp, dl, momentumTolerance,
                           angularMomentumTolerance(step()));
             throw CollectiveError(m, rank() != 0);
