@@ -8,7 +8,8 @@
 #   targets: lammps-data talus-restart cg-data cg-fstat cg-restart command-line (default: all)
 # Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default: the folder
 # 'shared' next to the repository, which holds the peers' start files), FUZZ_JOBS (targets
-# fuzzed at once, default 1; each uses one core).
+# fuzzed at once, default 1; each uses one core), FUZZ_PROGRESS (seconds between progress lines,
+# default 60).
 # Each finding (a crash, a hang, running out of memory, or a reader that accepted garbage) is a
 # file in $FUZZ_BUILD/findings/TARGET/: reproduce it with $FUZZ_BUILD/SelfTests/Fuzz/fuzz-TARGET
 # FILE, fix the reader, and commit the file to SelfTests/Fuzz/Regressions/TARGET/ under a name
@@ -99,16 +100,37 @@ fuzz_target() {
     "$(ls "$corpus" | wc -l)" "$((after - before))" >"$build/$t.summary"
 }
 
-running=0
+# Every FUZZ_PROGRESS seconds, the latest progress line of each target still running: its
+# executions, coverage and corpus so far, and the seconds it has run.
+progress=${FUZZ_PROGRESS:-60}
+[[ "$progress" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: FUZZ_PROGRESS must be a positive integer, got '$progress'"; exit 2; }
+report_progress() {
+  while sleep "$progress"; do
+    for t in "${targets[@]}"; do
+      [ -f "$build/$t.log" ] && [ ! -f "$build/$t.summary" ] || continue
+      line=$( (grep -E '^#[0-9]+' "$build/$t.log" || true) | tail -1)
+      [ -n "$line" ] && echo "fuzz: $t ${line%% oom/*} (of ${seconds} s)"
+    done
+  done
+}
+for t in "${targets[@]}"; do rm -f "$build/$t.summary" "$build/$t.log"; done
+report_progress &
+reporter=$!
+trap 'kill "$reporter" 2>/dev/null || true' EXIT
+
+pids=()
 for t in "${targets[@]}"; do
-  if [ "$running" -ge "$jobs" ]; then
-    wait -n || true
-    running=$((running - 1))
+  if [ "${#pids[@]}" -ge "$jobs" ]; then
+    wait -n "${pids[@]}" || true
+    alive=()
+    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && alive+=("$p"); done
+    pids=("${alive[@]}")
   fi
   fuzz_target "$t" &
-  running=$((running + 1))
+  pids+=($!)
 done
-wait
+wait "${pids[@]}" || true
+kill "$reporter" 2>/dev/null || true
 status=0
 for t in "${targets[@]}"; do
   cat "$build/$t.summary" >>"$summary"
