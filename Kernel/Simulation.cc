@@ -37,107 +37,6 @@ Simulation::~Simulation() = default;
 
 const ContactSummary& Simulation::contactSummary() const { return work_->summary; }
 
-// --- settings ---
-
-void Simulation::setName(const std::string& name) {
-    requireWord(name, "name");
-    state_.settings.name = name;
-}
-void Simulation::setTimeStep(double dt) {
-    require(std::isfinite(dt) && dt > 0, "time step (--dt) must be positive, got " + str(dt));
-    state_.settings.timeStep = dt;
-}
-void Simulation::setEndTime(double endTime) {
-    require(std::isfinite(endTime) && endTime >= 0, "end time (--end-time) must not be negative, got " + str(endTime));
-    state_.settings.endTime = endTime;
-}
-void Simulation::setOutputInterval(double interval) {
-    require(std::isfinite(interval) && interval >= 0,
-            "output interval (--output-interval) must not be negative, got " + str(interval));
-    state_.settings.outputInterval = interval;
-}
-void Simulation::setSkin(double skin) {
-    require(std::isfinite(skin) && skin >= 0, "skin (--skin) must not be negative, got " + str(skin));
-    state_.settings.skin = skin;
-}
-void Simulation::setCellSizeRatio(double ratio) {
-    require(std::isfinite(ratio) && ratio > 1, "HGrid cell size ratio must be greater than 1, got " + str(ratio));
-    state_.settings.cellSizeRatio = ratio;
-}
-void Simulation::setFileOutput(bool on) {
-    RunSettings& c = state_.settings;
-    c.writeData = c.writeFstat = c.writeEne = c.writeVtu = c.writeRestart = on;
-}
-
-void Simulation::addFlag(const std::string& name, const std::string& help, double& value) {
-    commandLine_->add(name, "X", help + " (default " + str(value) + ")",
-                      [&value, name](const std::string& v) { value = CommandLine::toDouble(name, v); });
-    keepInRestart("flag." + name, value);
-}
-void Simulation::addFlag(const std::string& name, const std::string& help, int& value) {
-    commandLine_->add(name, "N", help + " (default " + std::to_string(value) + ")",
-                      [&value, name](const std::string& v) { value = CommandLine::toInt(name, v); });
-    keepInRestart("flag." + name, value);
-}
-
-void Simulation::keepInRestart(const std::string& name, double& value) { addKept({name, &value, nullptr, {}, {}}); }
-void Simulation::keepInRestart(const std::string& name, int& value) { addKept({name, nullptr, &value, {}, {}}); }
-void Simulation::keepInRestart(const std::string& name, std::function<std::vector<double>()> save,
-                               std::function<void(const std::vector<double>&)> restore) {
-    require(save && restore, "keepInRestart: '" + name + "' needs both a save and a restore function");
-    addKept({name, nullptr, nullptr, std::move(save), std::move(restore)});
-}
-
-void Simulation::addKept(KeptValue value) {
-    require(!value.name.empty() && value.name.find_first_of(" \t\n") == std::string::npos,
-            "keepInRestart: the name must be one word, got '" + value.name + "'");
-    for (const KeptValue& k : kept_)
-        require(k.name != value.name, "keepInRestart: the name '" + value.name + "' is taken");
-    kept_.push_back(std::move(value));
-}
-
-void Simulation::saveKeptValues() {
-    state_.keptValues.clear();
-    for (const KeptValue& k : kept_) {
-        if (!k.saveList) {
-            state_.keptValues.emplace_back(k.name, k.real ? *k.real : *k.integer);
-            continue;
-        }
-        const std::vector<double> values = k.saveList();
-        state_.keptValues.emplace_back(k.name + ".size", static_cast<double>(values.size()));
-        for (std::size_t i = 0; i < values.size(); ++i) state_.keptValues.emplace_back(k.name + "." + std::to_string(i), values[i]);
-    }
-}
-
-// Every kept value must be in the file: a restart file of another driver (or of an older build
-// of this one) would otherwise continue with values that were never saved.
-void Simulation::restoreKeptValues(const std::string& restartFile) {
-    const std::unordered_map<std::string, double> values(state_.keptValues.begin(), state_.keptValues.end());
-    auto saved = [&](const std::string& name) {
-        const auto it = values.find(name);
-        require(it != values.end(), restartFile + ": no value '" + name + "' (a restart file of another driver?)");
-        return it->second;
-    };
-    for (const KeptValue& k : kept_) {
-        if (k.real)
-            *k.real = saved(k.name);
-        else if (k.integer)
-            *k.integer = static_cast<int>(saved(k.name));
-        else {
-            const double size = saved(k.name + ".size");
-            require(size >= 0 && size == std::floor(size) && size <= static_cast<double>(state_.keptValues.size()),
-                    restartFile + ": '" + k.name + ".size' is not a list length");
-            std::vector<double> list(static_cast<std::size_t>(size));
-            for (std::size_t i = 0; i < list.size(); ++i) list[i] = saved(k.name + "." + std::to_string(i));
-            k.restoreList(list);
-        }
-    }
-}
-
-void Simulation::addTextFlag(const std::string& name, const std::string& help, std::string& value) {
-    commandLine_->add(name, "TEXT", help + " (default " + value + ")", [&value](const std::string& v) { value = v; });
-}
-
 Energies Simulation::energies() const {
     Energies e = particleEnergies(state_.particles, state_.gravity);
     e.elastic = work_->elasticEnergy;
@@ -188,22 +87,24 @@ int Simulation::solve(int argc, char** argv) {
 }
 
 void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
-    restartFile_.clear();
-    if (!commandLine_->parse(flags)) {
-        std::cout << commandLine_->help(name());
+    run_->restartFile_.clear();
+    if (!run_->commandLine().parse(flags)) {
+        std::cout << run_->commandLine().help(state_.settings.name);
         return;
     }
-    const std::string restartFile = restartFile_;
+    state_.settings.validate(/*started*/ false);
+    const std::string restartFile = run_->restartFile();
     if (!restartFile.empty()) {
         readRestartFile(restartFile, state_);
-        restoreKeptValues(restartFile);
+        run_->restoreKeptValues(state_);
     } else
         setupInitialConditions();
     // The command line has the last word: over the settings of the restart file, and over run
     // settings that setupInitialConditions may have made; a restarted run's time step and
     // summation mode excepted.
     const RunSettings saved = state_.settings;
-    commandLine_->parse(flags);
+    run_->commandLine().parse(flags);
+    state_.settings.validate();
     if (!restartFile.empty()) refuseContradictions(saved, restartFile);
     initialise(!restartFile.empty());
 
@@ -214,14 +115,14 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     std::ostringstream quiet;  // ranks other than 0 print nothing
     std::ostream& out = rank() == 0 ? std::cout : quiet;
     Progress progress(out, state_.settings.progressInterval);
-    progress.start(name(), state_.time, state_.settings.endTime, steps, mobile);
+    progress.start(state_.settings.name, state_.time, state_.settings.endTime, steps, mobile);
     const std::uint64_t every = saveEvery();
     std::size_t counted = state_.particles.size();
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
     integrator_->startRun();
-    if (steps > 0) integrator_->describeChoice(*host_, out, name());
+    if (steps > 0) integrator_->describeChoice(*host_, out, state_.settings.name);
     for (std::uint64_t k = 1; k <= steps; ++k) {
         // A step, or a wave of several (Integration/Integrator.h); output after its last step.
         const std::uint64_t advance = integrator_->stepsNext(*host_, steps - k + 1, every);
@@ -250,7 +151,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         // Rebuilds cost a full neighbour search; boundaries that delete particles force one,
         // those that add or move a few have their pairs relisted.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
-        out << name() << ": neighbour list built " << builds << " times, every "
+        out << state_.settings.name << ": neighbour list built " << builds << " times, every "
                   << (builds ? static_cast<double>(steps) / static_cast<double>(builds) : 0.0) << " steps on average";
         if (const std::uint64_t near = state_.pairList.near.makes - nearMakesAtStart; near > 0)
             out << "; its near list (the pairs within " << state_.pairList.nearSkinFraction << " x the skin) made "
@@ -262,7 +163,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
             out << "; particles moved between steps (by hand) found at " << positionsChanged
                 << (positionsChanged == 1 ? " step" : " steps") << ": the near list made anew";
         out << std::endl;
-        integrator_->report(*host_, out, name(), steps);
+        integrator_->report(*host_, out, state_.settings.name, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
@@ -299,19 +200,15 @@ std::uint64_t Simulation::saveEvery() const {
 
 void Simulation::initialise(bool restarted) {
     RunSettings& c = state_.settings;
-    require(c.timeStep > 0, "no time step: call setTimeStep or pass --dt");
     // Half a step of slack: the time is a sum of steps, so a run that reached its end time may sit
     // a few ulps past it.
     require(c.endTime >= state_.time - 0.5 * c.timeStep,
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
-    state_.species.validate();
+    scene_->validate(c.timeStep);
     if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
         work_->laws = state_.species.table<LinearSpringDashpot>();
     else
         work_->laws = state_.species.table<HertzMindlin>();
-    for (const Wall& w : state_.walls)
-        require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
-    checkTimeStep();
     split_ = std::make_unique<DomainSplit>(worldCommunicator());
     if (rankGrid_[0] > 0) split_->setGrid(rankGrid_);
     work_->grid = HGrid(c.cellSizeRatio);
@@ -404,16 +301,6 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
         checkOverlaps(state_.settings.maxOverlapFraction, /*initial*/ false, check == OverlapCheck::now);
 }
 
-std::size_t Simulation::slotOf(std::uint64_t id) const { return slotOf(id, false); }
-
-std::size_t Simulation::slotOf(std::uint64_t id, bool ghosts) const {
-    const std::vector<std::uint64_t>& ids = state_.particles.id;
-    const auto end = ids.begin() + static_cast<std::ptrdiff_t>(ghosts ? ids.size() : state_.particles.owned());
-    const auto it = std::find(ids.begin(), end, id);
-    require(it != end, "no particle has id " + std::to_string(id) + (onRanks() ? " on rank " + std::to_string(rank()) : ""));
-    return static_cast<std::size_t>(it - ids.begin());
-}
-
 // Cells of the largest diameter: the particles of one cell and its neighbours, which make up most
 // listed pairs, end up close in memory.
 void Simulation::reorderParticles(bool withPreviousForces) {
@@ -449,7 +336,7 @@ void Simulation::writeOutput() {
     // run that goes on and, through the restart file, in the one that restarts from here.
     state_.pairList.relist(state_.particles, state_.domain, state_.walls);
     files_->writeFrame(state_, work_->records.each(), work_->recordedContacts, work_->elasticEnergy);
-    saveKeptValues();
+    run_->saveKeptValues(state_);
     files_->writeRestart(state_);
 }
 

@@ -1,7 +1,9 @@
 // talus::Simulation, the base class of every driver (Documentation/Architecture.md "The driver contract").
 //
-// A driver sets species, particles, walls and boundaries in setupInitialConditions() and may
-// override the hooks; main() sets the name, time step and end time and calls solve(argc, argv).
+// A driver builds its scene (scene(): species, particles, walls, boundaries; Scene/Scene.h) in
+// setupInitialConditions() and may override the hooks; main() writes the settings (settings():
+// name, time step, end time, ...; Run/RunSettings.h) and calls solve(argc, argv). The driver's
+// own flags and the values a restart keeps go through run() (Run/Run.h).
 // The time loop is velocity Verlet (Theory/Integration.md eq. (3)-(6)): half kick, drift, prescribed motions, periodic
 // wrap, boundaries (addBoundary), neighbour-list update when needed, forces, half kick.
 #pragma once
@@ -15,16 +17,16 @@
 #include <variant>
 #include <vector>
 
-#include "Boundaries/Boundary.h"
 #include "Contacts/ContactReport.h"
 #include "Error.h"
 #include "Integration/StepHost.h"
 #include "Particles/Energies.h"
+#include "Run/Run.h"
+#include "Scene/Scene.h"
 #include "SimulationState.h"
 
 namespace talus {
 
-class CommandLine;
 class DomainSplit;
 class Integrator;
 class OutputFiles;
@@ -41,89 +43,15 @@ public:
     // The same, with the flags as strings, throwing talus::Error instead of returning 1.
     void solveOrThrow(const std::vector<std::string>& flags = {});
 
-    // --- run settings (command-line flags override them) ---
-    void setName(const std::string& name);
-    void setTimeStep(double dt);
-    void setEndTime(double endTime);
-    void setOutputInterval(double interval);
-    void setSkin(double skin);
-    void setCellSizeRatio(double ratio);  // of successive HGrid levels (Contacts/HGrid.h)
-    // Renew the particle order along a space-filling curve at neighbour-list rebuilds (default on;
-    // Particles/SpaceFillingCurve.h). Slots then change during a run: find a particle by its id.
-    void setParticleReordering(bool on) { state_.settings.reorderParticles = on; }
-    void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
-    void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
-    // The run settings, with settings().stepper the steppers' tuning (Integration/StepperTuning.h:
-    // waves of several steps per pass, Documentation/TimeSkewing.md; the drift pass). With waves,
-    // actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
+    // The run settings (Run/RunSettings.h), which command-line flags override; validated at solve().
     RunSettings& settings() { return state_.settings; }
+    const RunSettings& settings() const { return state_.settings; }
+    // The driver's own flags and the values a restart file keeps (Run/Run.h).
+    Run& run() { return *run_; }
+    // The scene: gravity, box, species, particles, walls, motions, boundaries (Scene/Scene.h).
+    Scene& scene() { return *scene_; }
+    const Scene& scene() const { return *scene_; }
 
-    // A driver's own flag --name VALUE, listed by --help, parsed before setupInitialConditions.
-    void addFlag(const std::string& name, const std::string& help, double& value);
-    void addFlag(const std::string& name, const std::string& help, int& value);
-    void addTextFlag(const std::string& name, const std::string& help, std::string& value);
-    // A number of the driver's (or of a boundary it owns) that the restart file keeps: saved with
-    // every restart file and put back when the run restarts, before the command line is read
-    // again. Number flags (addFlag) are kept this way too, as "flag.NAME". Names are one word
-    // and unique.
-    void keepInRestart(const std::string& name, double& value);
-    void keepInRestart(const std::string& name, int& value);
-    // A list of numbers kept the same way (a detector's recent samples, running sums): `save`
-    // gives it at every save (on every rank at once, so it may sum over ranks), `restore` takes
-    // it back when the run restarts (on every rank: what is summed over ranks must be put back
-    // on one of them only). Saved as NAME.size and NAME.0, NAME.1, ...
-    void keepInRestart(const std::string& name, std::function<std::vector<double>()> save,
-                       std::function<void(const std::vector<double>&)> restore);
-
-    // --- the scene ---
-    void setGravity(const Vec3& g) { state_.gravity = g; }
-    const Vec3& gravity() const { return state_.gravity; }
-    void setDomain(const Vec3& lo, const Vec3& hi);
-    void setPeriodic(bool x, bool y, bool z);
-    const Domain& domain() const { return state_.domain; }
-
-    std::size_t addSpecies(const std::string& name, double density, const ContactLaw& law);
-    SpeciesTable& species() { return state_.species; }
-
-    // Adds a sphere; returns its slot. Radius must be positive and the species must exist.
-    std::size_t addParticle(const Vec3& position, double radius, std::size_t species,
-                            const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
-    // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
-    std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
-    // Superquadric particles (Theory/Superquadrics.md): a shape added once, then particles of it. The particle's
-    // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
-    // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
-    std::size_t addShape(const Superquadric& shape);
-    std::size_t addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
-                                const Quat& orientation = Quat::Identity(), const Vec3& velocity = Vec3::Zero(),
-                                const Vec3& angularVelocity = Vec3::Zero());
-    // A fixed superquadric: never integrated, still collides; follows motion if motion >= 0 (its
-    // orientation turns with the motion).
-    std::size_t addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
-                                     const Quat& orientation = Quat::Identity(), int motion = -1);
-    const std::vector<Superquadric>& shapes() const { return state_.shapes; }
-    void removeParticle(std::size_t slot);
-    // Moves a particle by a jump (a boundary's wrap, like the maser's): the neighbour list then
-    // relists its pairs rather than being built anew.
-    void moveParticleBy(std::size_t slot, const Vec3& jump);
-
-    // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
-    // boundaries register themselves, in their constructors. Not owned: it must outlive the run.
-    void addBoundary(Boundary& boundary) { boundaries_.push_back(&boundary); }
-
-    std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
-    // The inside of a cylinder (a drum's mantle, Walls/Wall.h) of the given radius about the axis
-    // through axisPoint along axisDirection; a drum turns with a motion whose centre is on the
-    // axis and whose angular velocity is along it (addMotion).
-    std::size_t addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius, std::size_t species,
-                                int motion = -1);
-    std::size_t addMotion(const PrescribedMotion& motion);
-
-    // Under MPI (Parallel/DomainSplit.h, Documentation/Parallel.md) the store holds this rank's
-    // particles (slots below particles().owned()) and then ghosts: loop to owned() and sum over
-    // ranks (sumOverRanks) for anything about the whole scene. Without MPI owned() == size().
-    ParticleStore& particles() { return state_.particles; }
-    const ParticleStore& particles() const { return state_.particles; }
     // The ranks of the run (1 without mpirun) and this one; rank 0 writes the files.
     int rank() const;
     int ranks() const;
@@ -143,20 +71,8 @@ public:
     // Whether the scene is split over more than one rank (false during setupInitialConditions,
     // which every rank runs on the whole scene).
     bool onRanks() const;
-    // Mobile (not fixed) particles in the whole scene.
-    std::size_t mobileParticleCount() const;
-    // The current slot of the particle with global id `id` (ids count from 0 in the order of
-    // addParticle/addFixedParticle). A linear search: for drivers and tests, not inner loops.
-    std::size_t slotOf(std::uint64_t id) const;  // of an owned particle
-    std::vector<Wall>& walls() { return state_.walls; }
-    std::vector<PrescribedMotion>& motions() { return state_.motions; }
-    std::mt19937_64& random() { return state_.random; }
-
     double time() const { return state_.time; }
     std::uint64_t step() const { return state_.step; }
-    double timeStep() const { return state_.settings.timeStep; }
-    double endTime() const { return state_.settings.endTime; }
-    const std::string& name() const { return state_.settings.name; }
 
     // What the last solve's time loop did: steps, mobile particles, wall seconds (the loop only).
     struct RunStatistics {
@@ -170,12 +86,10 @@ public:
     // Energies of the mobile particles; elastic energy of the last force evaluation.
     Energies energies() const;
     const ContactSummary& contactSummary() const;
-    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is.
-    double shortestCollisionTime(std::string* which = nullptr) const;
 
-    SimulationState& state() { return state_; }
+    // Everything the run is (SimulationState.h), to read; a driver changes it through settings()
+    // and scene() only.
     const SimulationState& state() const { return state_; }
-    const PairList& pairList() const { return state_.pairList; }
     // The steppers (Integration/Integrator.h): which took the steps of the last solve, and their
     // statistics (integrator().statistics()).
     const Integrator& integrator() const { return *integrator_; }
@@ -190,16 +104,14 @@ protected:
     virtual void actionsAfterSolve() {}
 
 private:
-    class Host;  // the StepHost the steppers advance (Simulation.cc)
+    class Host;  // the StepHost the steppers advance and the SceneRanks the scene asks (SimulationHost.h)
+    friend struct SimulationInternals;  // (SimulationInternals.h: the state, mutable, for tests)
     void initialise(bool restarted);
     void refuseContradictions(const RunSettings& saved, const std::string& restartFile) const;
-    void checkTimeStep() const;
     // The forces at the positions now, the neighbour list updated first (StepHost::computeForces).
     void computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted = nullptr);
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);
-    std::size_t slotOf(std::uint64_t id, bool ghosts) const;
-    void requireMotion(int motion, const std::string& what) const;
-    std::size_t fixParticle(std::size_t slot, int motion);
+    std::size_t mobileParticleCount() const;  // mobile (not fixed) particles in the whole scene
     void reorderParticles(bool withPreviousForces);
     std::uint64_t saveEvery() const;
 
@@ -219,19 +131,8 @@ private:
     std::unique_ptr<StepWorkspace> work_;
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<Host> host_;
-    std::unique_ptr<CommandLine> commandLine_;
-    struct KeptValue {
-        std::string name;
-        double* real = nullptr;
-        int* integer = nullptr;
-        std::function<std::vector<double>()> saveList;  // a list, when set
-        std::function<void(const std::vector<double>&)> restoreList;
-    };
-    std::vector<KeptValue> kept_;
-    void addKept(KeptValue value);
-    void saveKeptValues();
-    void restoreKeptValues(const std::string& restartFile);
-    std::vector<Boundary*> boundaries_;
+    std::unique_ptr<Run> run_;
+    std::unique_ptr<Scene> scene_;
     std::unique_ptr<OutputFiles> files_;
     std::unique_ptr<DomainSplit> split_;
     std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
@@ -245,7 +146,6 @@ private:
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     RunStatistics lastRun_;
-    std::string restartFile_;
 };
 
 }  // namespace talus

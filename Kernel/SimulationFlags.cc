@@ -1,6 +1,6 @@
 // The command-line flags every driver has (Documentation/UserGuide/WritingADriver.md lists them):
 // registered when a Simulation is made, parsed by solve() after the driver's own set-up, so the
-// command line has the last word.
+// command line has the last word. solve() validates the settings after it (RunSettings::validate).
 #include "Simulation.h"
 
 #include "IO/CommandLine.h"
@@ -16,23 +16,24 @@ Simulation::Simulation()
     : work_(std::make_unique<StepWorkspace>()),
       integrator_(std::make_unique<Integrator>()),
       host_(std::make_unique<Host>(*this)),
-      commandLine_(std::make_unique<CommandLine>()) {
+      run_(std::make_unique<Run>()),
+      scene_(std::make_unique<Scene>(state_, *host_)) {
     RunSettings& c = state_.settings;
-    CommandLine& cl = *commandLine_;
+    CommandLine& cl = run_->commandLine();
     cl.add("end-time", "T", "simulated time at which the run stops",
-           [this](const std::string& v) { setEndTime(CommandLine::toDouble("end-time", v)); });
+           [&c](const std::string& v) { c.endTime = CommandLine::toDouble("end-time", v); });
     cl.add("dt", "DT", "time step",
-           [this](const std::string& v) { setTimeStep(CommandLine::toDouble("dt", v)); });
+           [&c](const std::string& v) { c.timeStep = CommandLine::toDouble("dt", v); });
     cl.add("output-interval", "T", "simulated time between saved frames (0: first and last)",
-           [this](const std::string& v) { setOutputInterval(CommandLine::toDouble("output-interval", v)); });
+           [&c](const std::string& v) { c.outputInterval = CommandLine::toDouble("output-interval", v); });
     cl.add("name", "NAME", "output file name (NAME.data, NAME.fstat, ...)",
-           [this](const std::string& v) { setName(v); });
+           [&c](const std::string& v) { c.name = v; });
     cl.add("restart", "FILE", "continue the run saved in FILE (a .restart file)",
-           [this](const std::string& v) { restartFile_ = v; });
+           [this](const std::string& v) { run_->restartFile_ = v; });
     cl.add("skin", "S", "neighbour-list skin distance",
-           [this](const std::string& v) { setSkin(CommandLine::toDouble("skin", v)); });
+           [&c](const std::string& v) { c.skin = CommandLine::toDouble("skin", v); });
     cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
-           [this](const std::string& v) { setCellSizeRatio(CommandLine::toDouble("cell-size-ratio", v)); });
+           [&c](const std::string& v) { c.cellSizeRatio = CommandLine::toDouble("cell-size-ratio", v); });
     cl.add("relist", "on|off",
            "list only the pairs of particles that boundaries add or move (on), or build the whole neighbour "
            "list anew (off)",
@@ -56,7 +57,7 @@ Simulation::Simulation()
            "energy for .ene, not 120 bytes per contact)",
            [&c](const std::string& v) { c.writeFstat = CommandLine::toBool("fstat", v); });
     cl.add("files", "on|off", "write any output files at all",
-           [this](const std::string& v) { setFileOutput(CommandLine::toBool("files", v)); });
+           [&c](const std::string& v) { c.setFileOutput(CommandLine::toBool("files", v)); });
     cl.add("id-ordered-sums", "on|off",
            "sum each particle's contact forces in the order of its partners' ids: the same result to the bit on "
            "any number of ranks, for a second pass over the pairs (no maser; kept by a restart)",
@@ -75,14 +76,9 @@ Simulation::Simulation()
     cl.add("max-overlap", "F",
            "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
            "blow-up (default 0.25)",
-           [&c](const std::string& v) {
-               c.maxOverlapFraction = CommandLine::toDouble("max-overlap", v);
-               require(c.maxOverlapFraction > 0, "flag --max-overlap must be positive");
-           });
-    cl.add("progress-interval", "S", "wall seconds between progress lines", [&c](const std::string& v) {
-        c.progressInterval = CommandLine::toDouble("progress-interval", v);
-        require(c.progressInterval > 0, "flag --progress-interval must be positive");
-    });
+           [&c](const std::string& v) { c.maxOverlapFraction = CommandLine::toDouble("max-overlap", v); });
+    cl.add("progress-interval", "S", "wall seconds between progress lines",
+           [&c](const std::string& v) { c.progressInterval = CommandLine::toDouble("progress-interval", v); });
 }
 
 }  // namespace talus

@@ -24,16 +24,16 @@ const double nan = std::numeric_limits<double>::quiet_NaN();
 
 // Unit-mass spheres of radius 1/2 (density 6/pi), collision time 0.01 between two of them.
 std::size_t addSand(Simulation& s) {
-    return s.addSpecies("sand", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.8, 0.5).withFriction(0.4));
+    return s.scene().addSpecies("sand", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.8, 0.5).withFriction(0.4));
 }
 
 // A small scene: a floor and a leaning column of six spheres, near enough to be listed as pairs
 // but not touching; dt is a safe tc/50.
 void smallScene(SceneSimulation& s) {
-    s.setTimeStep(collisionTime / 50);
+    s.settings().timeStep = collisionTime / 50;
     const auto sand = addSand(s);
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), sand);
-    for (int k = 0; k < 6; ++k) s.addParticle(Vec3(0.1 * k, 0, 0.5 + 1.05 * k), 0.5, sand, Vec3(0.3, 0, 0));
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), sand);
+    for (int k = 0; k < 6; ++k) s.scene().addParticle(Vec3(0.1 * k, 0, 0.5 + 1.05 * k), 0.5, sand, Vec3(0.3, 0, 0));
 }
 
 // --- particles and species ---
@@ -42,15 +42,15 @@ TEST(BadInput, NonPositiveRadius) {
     for (double radius : {0.0, -0.5, nan}) {
         SceneSimulation s;
         const auto sand = addSand(s);
-        expectError([&] { s.addParticle(Vec3::Zero(), radius, sand); }, {"radius must be positive", "particle 0"});
-        EXPECT_EQ(s.particles().size(), 0u) << "a rejected particle must not be half added";
+        expectError([&] { s.scene().addParticle(Vec3::Zero(), radius, sand); }, {"radius must be positive", "particle 0"});
+        EXPECT_EQ(s.scene().particles().size(), 0u) << "a rejected particle must not be half added";
     }
 }
 
 TEST(BadInput, NonPositiveDensity) {
     for (double density : {0.0, -2.0}) {
         SceneSimulation s;
-        expectError([&] { s.addSpecies("basalt", density, LinearSpringDashpot{100, 1, 20, 1, 0.5}); },
+        expectError([&] { s.scene().addSpecies("basalt", density, LinearSpringDashpot{100, 1, 20, 1, 0.5}); },
                     {"basalt", "density must be positive"});
     }
 }
@@ -58,18 +58,60 @@ TEST(BadInput, NonPositiveDensity) {
 TEST(BadInput, NonFinitePosition) {
     SceneSimulation s;
     const auto sand = addSand(s);
-    expectError([&] { s.addParticle(Vec3(0, nan, 0), 0.5, sand); }, {"particle 0", "position is not finite"});
-    expectError([&] { s.addParticle(Vec3(0, 0, INFINITY), 0.5, sand); }, {"position is not finite"});
-    EXPECT_EQ(s.particles().size(), 0u);
+    expectError([&] { s.scene().addParticle(Vec3(0, nan, 0), 0.5, sand); }, {"particle 0", "position is not finite"});
+    expectError([&] { s.scene().addParticle(Vec3(0, 0, INFINITY), 0.5, sand); }, {"position is not finite"});
+    EXPECT_EQ(s.scene().particles().size(), 0u);
 }
 
 // --- the run ---
+
+// Settings written by a driver are checked when solve starts, each error naming the setting and
+// its flag; settings set in setupInitialConditions are checked before the run as well.
+TEST(BadInput, SettingsOutOfRange) {
+    struct Case {
+        std::function<void(RunSettings&)> set;
+        std::vector<std::string> parts;
+    };
+    const std::vector<Case> cases = {
+        {[](RunSettings& c) { c.timeStep = -1e-4; }, {"settings().timeStep (--dt)", "must be positive", "-0.0001"}},
+        {[](RunSettings& c) { c.timeStep = nan; }, {"settings().timeStep (--dt)", "must be positive"}},
+        {[](RunSettings& c) { c.endTime = -1; }, {"settings().endTime (--end-time)", "must not be negative"}},
+        {[](RunSettings& c) { c.outputInterval = -0.5; }, {"settings().outputInterval (--output-interval)"}},
+        {[](RunSettings& c) { c.skin = -0.5; }, {"settings().skin (--skin)", "must not be negative"}},
+        {[](RunSettings& c) { c.cellSizeRatio = 1; }, {"settings().cellSizeRatio (--cell-size-ratio)", "greater than 1"}},
+        {[](RunSettings& c) { c.name = "two words"; }, {"settings().name (--name)", "one word"}},
+        {[](RunSettings& c) { c.progressInterval = 0; }, {"settings().progressInterval (--progress-interval)"}},
+        {[](RunSettings& c) { c.maxOverlapFraction = -1; }, {"settings().maxOverlapFraction (--max-overlap)"}},
+        {[](RunSettings& c) { c.maxInitialOverlapFraction = 0; }, {"settings().maxInitialOverlapFraction"}},
+        {[](RunSettings& c) { c.stepper.waveSteps = 0; }, {"settings().stepper.waveSteps (--wave-steps)", "1 to 255"}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.parts.front());
+        for (bool inSetup : {false, true}) {
+            SceneSimulation s;
+            s.setup = [&](SceneSimulation& sim) {
+                smallScene(sim);
+                if (inSetup) c.set(sim.settings());
+            };
+            if (!inSetup) c.set(s.settings());
+            expectError([&] { s.solveOrThrow({"--files", "off"}); }, c.parts);  // (no flag that overrides them)
+        }
+    }
+    // The defaults pass, the automatic skin among them; no time step at all is named as such.
+    SceneSimulation fine;
+    fine.setup = smallScene;
+    EXPECT_NO_THROW(fine.solveOrThrow(test::stepsWithoutFiles(collisionTime / 50, 1)));
+    EXPECT_GT(fine.settings().skin, 0) << "the automatic skin is set at the start";
+    SceneSimulation noStep;
+    noStep.setup = [](SceneSimulation& sim) { addSand(sim); };
+    expectError([&] { noStep.solveOrThrow({"--end-time", "1", "--files", "off"}); }, {"no time step", "settings().timeStep", "--dt"});
+}
 
 TEST(BadInput, TimeStepAboveATenthOfTheCollisionTime) {
     SceneSimulation s;
     s.setup = [](SceneSimulation& sim) {
         smallScene(sim);
-        sim.setTimeStep(collisionTime / 5);
+        sim.settings().timeStep = collisionTime / 5;
     };
     const std::string message = expectError([&] { s.solveOrThrow(test::stepsWithoutFiles(collisionTime / 5, 1)); },
                                              {"time step", "shortest collision time", "sand"});
@@ -84,8 +126,8 @@ TEST(BadInput, InitialOverlapNamesBothParticles) {
     s.setup = [](SceneSimulation& sim) {
         smallScene(sim);  // ids 0 to 5, not touching each other
         const std::size_t sand = 0;  // smallScene's only species
-        sim.addParticle(Vec3(5, 5, 5), 0.5, sand);                // id 6
-        sim.addParticle(Vec3(5, 5, 5 + 2 * 0.5 * 0.9), 0.5, sand);  // id 7, overlapping by 10% of r
+        sim.scene().addParticle(Vec3(5, 5, 5), 0.5, sand);                // id 6
+        sim.scene().addParticle(Vec3(5, 5, 5 + 2 * 0.5 * 0.9), 0.5, sand);  // id 7, overlapping by 10% of r
     };
     expectError([&] { s.solveOrThrow(test::stepsWithoutFiles(collisionTime / 50, 1)); },
                 {"initial conditions", "particle id 6", "particle id 7", "overlap"});
@@ -97,8 +139,8 @@ TEST(BadInput, VelocityBecomingNaNIsABlowUpNamingTheParticle) {
     const std::uint64_t poisonedId = 4;
     s.afterStep = [&](SceneSimulation& sim) {
         if (sim.step() != 3) return;
-        for (std::size_t i = 0; i < sim.particles().size(); ++i)
-            if (sim.particles().id[i] == poisonedId) sim.particles().velocity[i].x() = nan;
+        for (std::size_t i = 0; i < sim.scene().particles().size(); ++i)
+            if (sim.scene().particles().id[i] == poisonedId) sim.scene().particles().velocity[i].x() = nan;
     };
     expectError([&] { s.solveOrThrow(test::stepsWithoutFiles(collisionTime / 50, 10)); },
                 {"blow-up", "particle id " + std::to_string(poisonedId), "non-finite"});
@@ -136,7 +178,7 @@ TEST(BadInput, CommandLineFlags) {
         SCOPED_TRACE(c.flags.front());
         SceneSimulation s;
         int layers = 3;
-        s.addFlag("layers", "number of layers", layers);
+        s.run().addFlag("layers", "number of layers", layers);
         bool setUp = false;
         s.setup = [&](SceneSimulation& sim) {
             setUp = true;
@@ -160,7 +202,7 @@ TEST(BadInput, RankGridMustMatchTheRanks) {
 TEST(BadInput, UnusualButValidFlagsAreAccepted) {
     SceneSimulation s;
     int layers = 3;
-    s.addFlag("layers", "number of layers", layers);
+    s.run().addFlag("layers", "number of layers", layers);
     s.setup = [](SceneSimulation& sim) { smallScene(sim); };
     s.solveOrThrow({"--dt=2e-4", "--end-time", "+4E-4", "--skin", "4.9406564584124654e-324", "--layers", "-7",
                     "--files=off", "--progress-interval", "0x1p-3"});
@@ -176,11 +218,11 @@ TEST(BadInput, UnusualButValidFlagsAreAccepted) {
 std::string writeValidRestart(const std::string& name) {
     SceneSimulation s;
     s.setup = [](SceneSimulation& sim) { smallScene(sim); };
-    s.setName(name);
-    s.setVtuOutput(false);
+    s.settings().name = name;
+    s.settings().writeVtu = false;
     const double dt = collisionTime / 50;
     s.solveOrThrow({"--end-time", std::to_string(20 * dt), "--output-interval", std::to_string(10 * dt)});
-    EXPECT_GT(s.pairList().pairs.size(), 0u) << "the corruption cases need a listed pair";
+    EXPECT_GT(s.state().pairList.pairs.size(), 0u) << "the corruption cases need a listed pair";
     return name + ".restart";
 }
 

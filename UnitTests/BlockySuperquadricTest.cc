@@ -36,11 +36,11 @@ BounceResult bounce(double timeStep) {
     bool inContact = false;
     Vec3 spinBefore = Vec3::Zero();
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -1));
-        sim.setDomain(Vec3(-5, -5, 0), Vec3(5, 5, 5));
-        const auto species = sim.addSpecies("blocks", density, LinearSpringDashpot::fromCollision(collisionTime, 1, blockyMass()));
-        sim.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        sim.addSuperquadric(Vec3(0, 0, 0.9), sim.addShape(blockyShape), species,
+        sim.scene().setGravity(Vec3(0, 0, -1));
+        sim.scene().setDomain(Vec3(-5, -5, 0), Vec3(5, 5, 5));
+        const auto species = sim.scene().addSpecies("blocks", density, LinearSpringDashpot::fromCollision(collisionTime, 1, blockyMass()));
+        sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        sim.scene().addSuperquadric(Vec3(0, 0, 0.9), sim.scene().addShape(blockyShape), species,
                             Quat(Eigen::AngleAxisd(0.5, Vec3(0.4, 1, 0.3).normalized())), Vec3(0.1, 0, 0),
                             Vec3(0.5, -1, 2));
     };
@@ -49,17 +49,17 @@ BounceResult bounce(double timeStep) {
         const double total = e.kinetic + e.rotational + e.gravitational;
         if (std::isnan(startEnergy)) startEnergy = total;
         const bool touching = sim.contactSummary().contacts > 0;
-        if (touching && !inContact) spinBefore = sim.particles().angularVelocity[0];
+        if (touching && !inContact) spinBefore = sim.scene().particles().angularVelocity[0];
         if (!touching && inContact) {
             ++result.bounces;
             result.largestSpinChange =
-                std::max(result.largestSpinChange, (sim.particles().angularVelocity[0] - spinBefore).norm());
+                std::max(result.largestSpinChange, (sim.scene().particles().angularVelocity[0] - spinBefore).norm());
         }
         inContact = touching;
         if (!touching) result.worstEnergyError = std::max(result.worstEnergyError, std::abs(total - startEnergy));
         result.contactSteps += touching;
     };
-    s.run(timeStep, 3.2);
+    s.runFor(timeStep, 3.2);
     result.worstEnergyError /= std::abs(startEnergy);
     return result;
 }
@@ -90,13 +90,13 @@ namespace {
 constexpr double restartTimeStep = collisionTime / 50;
 
 void twoBlocks(SceneSimulation& sim) {
-    sim.setTimeStep(restartTimeStep);
-    sim.setGravity(Vec3(0, 0, -1));
-    sim.setDomain(Vec3(-3, -3, 0), Vec3(3, 3, 3));
-    const auto species = sim.addSpecies("blocks", density, LinearSpringDashpot::fromCollision(collisionTime, 1, blockyMass()));
-    sim.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-    const std::size_t shape = sim.addShape(blockyShape);
-    sim.addSuperquadric(Vec3(0, 0, 0.3 + 10.4 * 0.3 * restartTimeStep), shape, species, Quat::Identity(),
+    sim.settings().timeStep = restartTimeStep;
+    sim.scene().setGravity(Vec3(0, 0, -1));
+    sim.scene().setDomain(Vec3(-3, -3, 0), Vec3(3, 3, 3));
+    const auto species = sim.scene().addSpecies("blocks", density, LinearSpringDashpot::fromCollision(collisionTime, 1, blockyMass()));
+    sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    const std::size_t shape = sim.scene().addShape(blockyShape);
+    sim.scene().addSuperquadric(Vec3(0, 0, 0.3 + 10.4 * 0.3 * restartTimeStep), shape, species, Quat::Identity(),
                         Vec3(0, 0, -0.3));
     // Block 1 touches block 0 (as placed) at the distance found by bisection on the contact
     // detection, and starts 20.7 steps of its approach further out.
@@ -110,7 +110,7 @@ void twoBlocks(SceneSimulation& sim) {
                                   .touching;
         (touching ? near : far) = middle;
     }
-    sim.addSuperquadric(Vec3(far + 20.7 * 0.5 * restartTimeStep, 0, 0.3) + offset, shape, species, turned,
+    sim.scene().addSuperquadric(Vec3(far + 20.7 * 0.5 * restartTimeStep, 0, 0.3) + offset, shape, species, turned,
                         Vec3(-0.5, 0, 0), Vec3(0.3, 0.2, -1));
 }
 
@@ -122,23 +122,23 @@ void twoBlocks(SceneSimulation& sim) {
 TEST(BlockySuperquadric, RestartInTheMiddleOfACollisionContinuesBitwise) {
     SceneSimulation first;
     first.setup = twoBlocks;
-    first.setName("blocky_restart");
-    first.setParticleReordering(false);
+    first.settings().name = "blocky_restart";
+    first.settings().reorderParticles = false;
     first.solveOrThrow({"--end-time", std::to_string(40 * restartTimeStep), "--output-interval", "1"});
     ASSERT_EQ(first.contactSummary().contacts, 2u) << "the restart must fall inside both contacts";
 
     SceneSimulation restarted;
-    restarted.setParticleReordering(false);
+    restarted.settings().reorderParticles = false;
     restarted.solveOrThrow({"--restart", "blocky_restart.restart", "--end-time", std::to_string(100 * restartTimeStep),
                             "--files", "off"});
     SceneSimulation uninterrupted;
     uninterrupted.setup = twoBlocks;
-    uninterrupted.setParticleReordering(false);
+    uninterrupted.settings().reorderParticles = false;
     uninterrupted.solveOrThrow(stepsWithoutFiles(restartTimeStep, 100));
 
     ASSERT_EQ(restarted.step(), 100u);
     expectSameContinuation(restarted, uninterrupted);
     // And the run moved: the blocks turned and bounced.
-    EXPECT_GT((uninterrupted.particles().angularVelocity[0]).norm(), 0.01);
-    EXPECT_GT(uninterrupted.particles().velocity[0].z(), 0);
+    EXPECT_GT((uninterrupted.scene().particles().angularVelocity[0]).norm(), 0.01);
+    EXPECT_GT(uninterrupted.scene().particles().velocity[0].z(), 0);
 }

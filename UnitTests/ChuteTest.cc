@@ -18,7 +18,7 @@ namespace {
 struct TestChute : Chute {
     std::size_t build(ChuteBase base, std::uint64_t seed, double length = 20, double width = 10) {
         setChuteGeometry({.length = length, .width = width, .height = 20, .periodicEnds = true});
-        const auto glass = addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5));
+        const auto glass = scene().addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5));
         return addBase(base, 1.0, glass, seed);
     }
 };
@@ -29,10 +29,10 @@ TEST(Chute, AngleSetsGravityOfSpecMd2) {
     TestChute chute;
     chute.setChuteAngle(24);
     const double t = 24 * pi / 180;
-    EXPECT_NEAR((chute.gravity() - Vec3(std::sin(t), 0, -std::cos(t))).norm(), 0, 1e-15);
+    EXPECT_NEAR((chute.scene().gravity() - Vec3(std::sin(t), 0, -std::cos(t))).norm(), 0, 1e-15);
     EXPECT_NEAR(chute.chuteAngle(), 24, 1e-12);
     chute.setGravityMagnitude(9.81);
-    EXPECT_NEAR(chute.gravity().norm(), 9.81, 1e-12);
+    EXPECT_NEAR(chute.scene().gravity().norm(), 9.81, 1e-12);
     EXPECT_NEAR(chute.chuteAngle(), 24, 1e-12);
     chute.setChuteAngle(-30);
     EXPECT_NEAR(chute.chuteAngle(), -30, 1e-12);
@@ -49,7 +49,7 @@ TEST(Chute, DisorderedBaseIsJammedReproducibleAndOverlapFree) {
     const std::size_t n = a.build(ChuteBase::disordered, 7);
     EXPECT_EQ(b.build(ChuteBase::disordered, 7), n);
     c.build(ChuteBase::disordered, 8);
-    const ParticleStore &p = a.particles(), &q = b.particles(), &r = c.particles();
+    const ParticleStore &p = a.scene().particles(), &q = b.scene().particles(), &r = c.scene().particles();
     ASSERT_EQ(p.size(), n);
     bool sameAsOtherSeed = r.size() == n;
     for (std::size_t i = 0; i < n; ++i) {
@@ -59,7 +59,7 @@ TEST(Chute, DisorderedBaseIsJammedReproducibleAndOverlapFree) {
         EXPECT_LE(std::abs(p.position[i].z()), 0.25);
     }
     EXPECT_FALSE(sameAsOtherSeed);
-    const PeriodicImage image(a.domain());
+    const PeriodicImage image(a.scene().domain());
     double closest = INFINITY;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j)
@@ -71,15 +71,15 @@ TEST(Chute, DisorderedBaseIsJammedReproducibleAndOverlapFree) {
     EXPECT_GT(coverage, 0.547);
     EXPECT_LT(coverage, pi / (2 * std::sqrt(3.0)));  // below hexagonal close packing of disks
     // The safety floor lies below every base sphere.
-    ASSERT_EQ(a.walls().size(), 1u);
-    EXPECT_LE(a.walls()[0].point.z(), -0.75 + 1e-15);
+    ASSERT_EQ(a.scene().walls().size(), 1u);
+    EXPECT_LE(a.scene().walls()[0].point.z(), -0.75 + 1e-15);
 }
 
 TEST(Chute, OrderedBaseIsASquareLatticeNoCloserThanADiameter) {
     TestChute chute;
     EXPECT_EQ(chute.build(ChuteBase::ordered, 1, 10.5, 5), 10u * 5u);
-    const ParticleStore& p = chute.particles();
-    const PeriodicImage image(chute.domain());
+    const ParticleStore& p = chute.scene().particles();
+    const PeriodicImage image(chute.scene().domain());
     for (std::size_t i = 0; i < p.size(); ++i) {
         EXPECT_EQ(p.position[i].z(), 0);
         for (std::size_t j = i + 1; j < p.size(); ++j)
@@ -90,9 +90,9 @@ TEST(Chute, OrderedBaseIsASquareLatticeNoCloserThanADiameter) {
 TEST(Chute, FlatBaseIsAWall) {
     TestChute chute;
     EXPECT_EQ(chute.build(ChuteBase::flat, 1), 0u);
-    EXPECT_EQ(chute.particles().size(), 0u);
-    ASSERT_EQ(chute.walls().size(), 1u);
-    EXPECT_EQ(chute.walls()[0].normal, Vec3::UnitZ());
+    EXPECT_EQ(chute.scene().particles().size(), 0u);
+    ASSERT_EQ(chute.scene().walls().size(), 1u);
+    EXPECT_EQ(chute.scene().walls()[0].normal, Vec3::UnitZ());
 }
 
 TEST(Chute, BadGeometryAndBaseAreClearErrors) {

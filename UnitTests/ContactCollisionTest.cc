@@ -166,19 +166,19 @@ TEST(HeadOnCollision, PlainVerletIsThePeersScheme) {
 // record until the next list rebuild, for a later touch to mistake as last step's force.)
 TEST(HeadOnCollision, SeparationImpulseIsForgottenTheStepAfter) {
     const double mass = sphereMass(0.5);
-    Scene s;
-    s.setup = [&](Scene& scene) {
-        const auto species = scene.addSpecies("solid", unitMassDensity,
+    TestScene s;
+    s.setup = [&](TestScene& scene) {
+        const auto species = scene.scene().addSpecies("solid", unitMassDensity,
                                               LinearSpringDashpot::fromCollision(0.005, 0.5, mass / 2));
-        scene.addParticle(Vec3::Zero(), 0.5, species, Vec3(1, 0, 0));
-        scene.addParticle(Vec3(1.01, 0, 0), 0.5, species, Vec3(-1, 0, 0));
+        scene.scene().addParticle(Vec3::Zero(), 0.5, species, Vec3(1, 0, 0));
+        scene.scene().addParticle(Vec3(1.01, 0, 0), 0.5, species, Vec3(-1, 0, 0));
     };
     int separatedAt = -1, step = 0;
     double impulse = 0;
     bool touchedBefore = false;
-    s.afterStep = [&](Scene& scene) {
+    s.afterStep = [&](TestScene& scene) {
         ++step;
-        const PairList& list = scene.pairList();
+        const PairList& list = scene.state().pairList;
         ASSERT_EQ(list.pairs.size(), 1u);
         const ContactHistory h = list.history.get(0);
         if (separatedAt < 0 && touchedBefore && !h.isTouching()) {
@@ -191,8 +191,8 @@ TEST(HeadOnCollision, SeparationImpulseIsForgottenTheStepAfter) {
         }
         touchedBefore = h.isTouching();
     };
-    s.run(1e-4, 0.03);
+    s.runFor(1e-4, 0.03);
     ASSERT_GT(separatedAt, 0) << "the spheres never separated";
     EXPECT_NE(impulse, 0);
-    EXPECT_LT(s.particles().velocity[0].x(), 0);  // they rebounded
+    EXPECT_LT(s.scene().particles().velocity[0].x(), 0);  // they rebounded
 }

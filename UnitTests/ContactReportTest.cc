@@ -23,20 +23,20 @@ namespace {
 void settleInBox(SceneSimulation& s, const std::string& name, bool fstat) {
     s.setup = [](SceneSimulation& scene) {
         const double side = 3.6;
-        scene.setGravity(Vec3(0, 0, -1));
-        scene.setDomain(Vec3::Zero(), Vec3(side, side, 8.4));
-        const auto species = scene.addSpecies("glass", unitMassDensity, LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5).withFriction(0.4));
+        scene.scene().setGravity(Vec3(0, 0, -1));
+        scene.scene().setDomain(Vec3::Zero(), Vec3(side, side, 8.4));
+        const auto species = scene.scene().addSpecies("glass", unitMassDensity, LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5).withFriction(0.4));
         addOpenBox(scene, side, species);
         std::mt19937_64 random(11);
         std::uniform_real_distribution<double> radiusOf(0.4, 0.5), velocityOf(-0.5, 0.5);
         for (int k = 0; k < 5; ++k)
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i)
-                    scene.addParticle(1.2 * Vec3(i + 0.5, j + 0.5, k + 0.5), radiusOf(random), species,
+                    scene.scene().addParticle(1.2 * Vec3(i + 0.5, j + 0.5, k + 0.5), radiusOf(random), species,
                                       Vec3(velocityOf(random), velocityOf(random), velocityOf(random)));
     };
-    s.setName(name);
-    s.setTimeStep(1e-3);
+    s.settings().name = name;
+    s.settings().timeStep = 1e-3;
     s.settings().progressInterval = 1e9;
     s.solveOrThrow({"--end-time", "4", "--output-interval", "0.2", "--vtu", "off", "--fstat", fstat ? "on" : "off"});
 }

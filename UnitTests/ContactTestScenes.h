@@ -18,16 +18,16 @@ inline double sphereMass(double radius, double density = unitMassDensity) {
     return density * 4.0 / 3.0 * pi * radius * radius * radius;
 }
 
-using Scene = SceneSimulation;
+using TestScene = SceneSimulation;
 
 // A square box of side `side` open at the top: a floor at z = 0 and four side walls, all of
 // `species` (SettlingEnergyTest.cc, ContactReportTest.cc).
 inline void addOpenBox(Simulation& s, double side, std::size_t species) {
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-    s.addWall(Vec3::UnitX(), Vec3::Zero(), species);
-    s.addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
-    s.addWall(Vec3::UnitY(), Vec3::Zero(), species);
-    s.addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    s.scene().addWall(Vec3::UnitX(), Vec3::Zero(), species);
+    s.scene().addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
+    s.scene().addWall(Vec3::UnitY(), Vec3::Zero(), species);
+    s.scene().addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
 }
 
 // What a head-on collision measured.
@@ -72,24 +72,24 @@ struct HeadOnCollision {
         const double entryTime = (stepsBeforeContact + entryPhase) * timeStep;
         const double gap = approachSpeed() * entryTime;
         const double partnerX = radius + (withWall() ? 0 : partnerRadius) + gap;
-        Scene scene;
-        scene.setup = [&](Scene& s) {
-            s.setGravity(Vec3::Zero());
-            s.setDomain(Vec3(-1, -1, -1), Vec3(partnerX + 1, 1, 1));
-            const auto species = s.addSpecies("solid", unitMassDensity, law);
-            s.addParticle(Vec3::Zero(), radius, species, Vec3(speed, 0, 0));
+        TestScene scene;
+        scene.setup = [&](TestScene& s) {
+            s.scene().setGravity(Vec3::Zero());
+            s.scene().setDomain(Vec3(-1, -1, -1), Vec3(partnerX + 1, 1, 1));
+            const auto species = s.scene().addSpecies("solid", unitMassDensity, law);
+            s.scene().addParticle(Vec3::Zero(), radius, species, Vec3(speed, 0, 0));
             if (withWall())
-                s.addWall(-Vec3::UnitX(), Vec3(partnerX, 0, 0), species);
+                s.scene().addWall(-Vec3::UnitX(), Vec3(partnerX, 0, 0), species);
             else
-                s.addParticle(Vec3(partnerX, 0, 0), partnerRadius, species, Vec3(-partnerSpeed, 0, 0));
+                s.scene().addParticle(Vec3(partnerX, 0, 0), partnerRadius, species, Vec3(-partnerSpeed, 0, 0));
         };
         double kineticBefore = 0;
-        scene.afterStep = [&](Scene& s) {
+        scene.afterStep = [&](TestScene& s) {
             if (s.step() == 1) kineticBefore = kineticEnergy(s);  // still in free flight
         };
-        scene.run(timeStep, entryTime + 1.5 * longestDuration + 5 * timeStep);
+        scene.runFor(timeStep, entryTime + 1.5 * longestDuration + 5 * timeStep);
 
-        const ParticleStore& p = scene.particles();
+        const ParticleStore& p = scene.scene().particles();
         // Separation along x (x of the partner minus x of the sphere) and its rate.
         const double partnerPosition = withWall() ? partnerX : p.position[1].x();
         const double partnerVelocity = withWall() ? 0 : p.velocity[1].x();

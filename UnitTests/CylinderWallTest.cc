@@ -34,21 +34,21 @@ double restingHeight(bool ellipsoid, double& expected) {
     const double r = 0.3, mass = ellipsoid ? 6 / pi * shape.volume() : 6 / pi * 4.0 / 3.0 * pi * r * r * r;
     const LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.5);
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -1));
-        sim.setDomain(Vec3(-3, -2, -3), Vec3(3, 2, 3));
-        sim.setPeriodic(false, true, false);
-        const auto species = sim.addSpecies("grains", 6 / pi, law);
-        sim.addCylinderWall(Vec3::Zero(), Vec3::UnitY(), 2, species);
+        sim.scene().setGravity(Vec3(0, 0, -1));
+        sim.scene().setDomain(Vec3(-3, -2, -3), Vec3(3, 2, 3));
+        sim.scene().setPeriodic(false, true, false);
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, law);
+        sim.scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), 2, species);
         if (ellipsoid)
-            sim.addSuperquadric(Vec3(0, 0, -1.6), sim.addShape(shape), species);
+            sim.scene().addSuperquadric(Vec3(0, 0, -1.6), sim.scene().addShape(shape), species);
         else
-            sim.addParticle(Vec3(0, 0, -1.6), r, species);
+            sim.scene().addParticle(Vec3(0, 0, -1.6), r, species);
     };
-    s.run(1e-4, 4);
+    s.runFor(1e-4, 4);
     expected = -(2 - 0.3) - mass / law.normalStiffness;  // both are 0.3 high below the centre
-    EXPECT_LT(s.particles().velocity[0].norm(), 1e-6);
-    EXPECT_LT(std::abs(s.particles().position[0].x()), 1e-9);
-    return s.particles().position[0].z();
+    EXPECT_LT(s.scene().particles().velocity[0].norm(), 1e-6);
+    EXPECT_LT(std::abs(s.scene().particles().position[0].x()), 1e-9);
+    return s.scene().particles().position[0].z();
 }
 
 }  // namespace
@@ -86,43 +86,43 @@ TEST(CylinderWall, ARotatingDrumCarriesASphereAtTwoSeventhsOfItsSpeed) {
     const double r = 0.3, mass = 6 / pi * 4.0 / 3.0 * pi * r * r * r, drumRadius = 2, w = 0.2, g = 1;
     const double wallSpeed = w * drumRadius;
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -g));
-        sim.setDomain(Vec3(-3, -2, -3), Vec3(3, 2, 3));
-        sim.setPeriodic(false, true, false);
+        sim.scene().setGravity(Vec3(0, 0, -g));
+        sim.scene().setDomain(Vec3(-3, -2, -3), Vec3(3, 2, 3));
+        sim.scene().setPeriodic(false, true, false);
         const auto species =
-            sim.addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.8));
+            sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.8));
         PrescribedMotion turning;
         turning.angularVelocity = Vec3(0, w, 0);
-        sim.addCylinderWall(Vec3::Zero(), Vec3::UnitY(), drumRadius, species, static_cast<int>(sim.addMotion(turning)));
-        sim.addParticle(Vec3(0, 0, -(drumRadius - r)), r, species);
+        sim.scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), drumRadius, species, static_cast<int>(sim.scene().addMotion(turning)));
+        sim.scene().addParticle(Vec3(0, 0, -(drumRadius - r)), r, species);
     };
     // The wall at the bottom, (0, 0, -Rd), moves at (0, w, 0) x (0, 0, -Rd) = (-w Rd, 0, 0): phi
     // grows from the bottom towards -x, and e = (-cos(phi), 0, sin(phi)).
     double G = 0, lastSine = 0, worst = 0, carried = 0;
     s.afterStep = [&](SceneSimulation& sim) {
-        const Vec3& x = sim.particles().position[0];
+        const Vec3& x = sim.scene().particles().position[0];
         const double phi = std::atan2(-x.x(), -x.z());
-        G += 0.5 * g * (lastSine + std::sin(phi)) * sim.timeStep();
+        G += 0.5 * g * (lastSine + std::sin(phi)) * sim.settings().timeStep;
         lastSine = std::sin(phi);
-        const double u = sim.particles().velocity[0].dot(Vec3(-std::cos(phi), 0, std::sin(phi)));
+        const double u = sim.scene().particles().velocity[0].dot(Vec3(-std::cos(phi), 0, std::sin(phi)));
         if (sim.time() >= 0.5) worst = std::max(worst, std::abs(u + 5.0 / 7.0 * G - 2.0 / 7.0 * wallSpeed));
         carried = phi;
     };
-    s.run(1e-4, 1);
+    s.runFor(1e-4, 1);
     std::printf("[ measured ] sphere in a turning drum: carried to phi = %.4f, |u + 5G/7 - 2V/7| / (2V/7) up to %.2e "
                 "(5G/7 = %.4f of 2V/7 = %.4f)\n",
                 carried, worst / (2.0 / 7.0 * wallSpeed), 5.0 / 7.0 * G, 2.0 / 7.0 * wallSpeed);
     EXPECT_GT(carried, 0.01);  // carried up the side the wall moves to
     EXPECT_LT(worst, 1e-4 * 2.0 / 7.0 * wallSpeed);
-    EXPECT_NEAR(s.walls()[0].point.norm(), 0, 1e-12);   // the axis stays put
-    EXPECT_NEAR(std::abs(s.walls()[0].normal.y()), 1, 1e-12);
+    EXPECT_NEAR(s.scene().walls()[0].point.norm(), 0, 1e-12);   // the axis stays put
+    EXPECT_NEAR(std::abs(s.scene().walls()[0].normal.y()), 1, 1e-12);
 }
 
 TEST(CylinderWall, BadRadiusIsNamed) {
     SceneSimulation s;
     s.setup = [](SceneSimulation& sim) {
-        const auto species = sim.addSpecies("grains", 1, LinearSpringDashpot::fromCollision(0.005, 0.5, 1));
-        sim.addCylinderWall(Vec3::Zero(), Vec3::UnitY(), -1, species);
+        const auto species = sim.scene().addSpecies("grains", 1, LinearSpringDashpot::fromCollision(0.005, 0.5, 1));
+        sim.scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), -1, species);
     };
-    expectError([&] { s.run(1e-4, 1e-3); }, {"cylinder wall", "radius must be positive"});
+    expectError([&] { s.runFor(1e-4, 1e-3); }, {"cylinder wall", "radius must be positive"});
 }

@@ -21,13 +21,13 @@ struct Outflow : test::SceneSimulation {
     DeletionBoundary outlet{*this, Vec3::UnitX(), Vec3(10.5, 0, 0), 2, "outlet"};
     Outflow() {
         setup = [](SceneSimulation& s) {
-            s.setTimeStep(outflowStep);
-            s.setGravity(Vec3::Zero());
+            s.settings().timeStep = outflowStep;
+            s.scene().setGravity(Vec3::Zero());
             const auto law = LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5);
-            s.addSpecies("light", 1, law);
-            s.addSpecies("heavy", 2, law);
-            for (int k = 0; k < 10; ++k) s.addParticle(Vec3(k, 0, 0), 0.2 + 0.01 * k, k % 2, Vec3(1, 0, 0));
-            s.addFixedParticle(Vec3(12, 0, 0), 0.2, 0);  // fixed particles stay, even past the plane
+            s.scene().addSpecies("light", 1, law);
+            s.scene().addSpecies("heavy", 2, law);
+            for (int k = 0; k < 10; ++k) s.scene().addParticle(Vec3(k, 0, 0), 0.2 + 0.01 * k, k % 2, Vec3(1, 0, 0));
+            s.scene().addFixedParticle(Vec3(12, 0, 0), 0.2, 0);  // fixed particles stay, even past the plane
         };
         afterStep = [this](SceneSimulation& s) { outlet.apply(s); };
     }
@@ -41,7 +41,7 @@ TEST(DeletionBoundary, RemovesExactlyWhatPassedAndRecordsIt) {
     Outflow run;
     run.solveOrThrow(test::stepsWithoutFiles(outflowStep, 5000));  // t = 5: spheres 6..9 have left
     EXPECT_EQ(run.outlet.count(), 4);
-    EXPECT_EQ(run.particles().size(), 7u);  // six mobile spheres and the fixed one
+    EXPECT_EQ(run.scene().particles().size(), 7u);  // six mobile spheres and the fixed one
     double mass[2] = {0, 0}, volume[2] = {0, 0};
     for (int k = 6; k < 10; ++k) {
         const double v = sphereVolume(0.2 + 0.01 * k);
@@ -56,13 +56,13 @@ TEST(DeletionBoundary, RemovesExactlyWhatPassedAndRecordsIt) {
     EXPECT_NEAR(run.outlet.volume(), volume[0] + volume[1], 1e-15);
     // Conservation: what is left plus what left is what there was.
     double left = 0, total = 0;
-    for (std::size_t i = 0; i < run.particles().size(); ++i)
-        if (!run.particles().fixed[i]) left += run.particles().mass[i];
+    for (std::size_t i = 0; i < run.scene().particles().size(); ++i)
+        if (!run.scene().particles().fixed[i]) left += run.scene().particles().mass[i];
     for (int k = 0; k < 10; ++k) total += (k % 2 ? 2 : 1) * sphereVolume(0.2 + 0.01 * k);
     EXPECT_NEAR(left + run.outlet.mass(), total, 1e-14);
-    for (std::size_t i = 0; i < run.particles().size(); ++i) {
-        if (!run.particles().fixed[i]) {
-            EXPECT_LE(run.particles().position[i].x(), 10.5);
+    for (std::size_t i = 0; i < run.scene().particles().size(); ++i) {
+        if (!run.scene().particles().fixed[i]) {
+            EXPECT_LE(run.scene().particles().position[i].x(), 10.5);
         }
     }
 }

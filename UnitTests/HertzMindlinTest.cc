@@ -137,18 +137,18 @@ struct Rebound {
 };
 
 Rebound simulatedRebound(double tangentialSpeed, double timeStep, double duration) {
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        s.setGravity(Vec3::Zero());
-        s.setDomain(Vec3(-1, -1, -1), Vec3(2, 1, 1));
-        const auto species = s.addSpecies("solid", unitMassDensity, obliqueLaw());
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        s.scene().setGravity(Vec3::Zero());
+        s.scene().setDomain(Vec3(-1, -1, -1), Vec3(2, 1, 1));
+        const auto species = s.scene().addSpecies("solid", unitMassDensity, obliqueLaw());
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
         // The touch falls 0.37 of a step after the fifth step.
-        s.addParticle(Vec3(0, 0, sphereRadius + 5.37 * impactSpeed * timeStep), sphereRadius, species,
+        s.scene().addParticle(Vec3(0, 0, sphereRadius + 5.37 * impactSpeed * timeStep), sphereRadius, species,
                       Vec3(tangentialSpeed, 0, -impactSpeed));
     };
-    scene.run(timeStep, 5.37 * timeStep + 1.5 * duration);
-    const ParticleStore& p = scene.particles();
+    scene.runFor(timeStep, 5.37 * timeStep + 1.5 * duration);
+    const ParticleStore& p = scene.scene().particles();
     return {p.velocity[0].x(), p.angularVelocity[0].y(), p.velocity[0].z()};
 }
 

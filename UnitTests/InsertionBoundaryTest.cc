@@ -27,7 +27,7 @@ const double smallRadius = 0.5 * std::cbrt(0.5);
 
 // Two unit masses (reduced mass 1/2) collide in collisionTime.
 std::size_t addGrains(Simulation& s, const std::string& name = "grains", double collisionTime = 0.05) {
-    return s.addSpecies(name, 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.8, 0.5));
+    return s.scene().addSpecies(name, 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.8, 0.5));
 }
 
 // Equal volumes of large and small particles: twice as many small ones by number.
@@ -39,11 +39,11 @@ SizeDistribution seedMixture(std::size_t large, std::size_t small) {
 // of slot >= firstNew, as a fraction of the smaller diameter of the pair: brute force over all
 // pairs, independent of the insertion's cell grid. Negative: the smallest gap.
 double largestRelativeOverlap(const Simulation& s, std::size_t firstNew = 0) {
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     double worst = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < p.size(); ++i)
         for (std::size_t j = std::max(i + 1, firstNew); j < p.size(); ++j) {
-            const double distance = s.domain().nearestImage(p.position[i] - p.position[j]).norm();
+            const double distance = s.scene().domain().nearestImage(p.position[i] - p.position[j]).norm();
             const double overlap = p.radius[i] + p.radius[j] - distance;
             worst = std::max(worst, overlap / (2 * std::min(p.radius[i], p.radius[j])));
         }
@@ -52,7 +52,7 @@ double largestRelativeOverlap(const Simulation& s, std::size_t firstNew = 0) {
 
 // Volume of the particles whose centres lie in [lo, hi], divided by the box volume.
 double packingFractionOf(const Simulation& s, const Vec3& lo, const Vec3& hi) {
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     double volume = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Vec3& x = p.position[i];
@@ -63,14 +63,14 @@ double packingFractionOf(const Simulation& s, const Vec3& lo, const Vec3& hi) {
 
 double totalMass(const Simulation& s) {
     double m = 0;
-    for (double mi : s.particles().mass) m += mi;
+    for (double mi : s.scene().particles().mass) m += mi;
     return m;
 }
 
 // A periodic box in all three directions: no walls, so only the particles limit the filling.
 void periodicBox(Simulation& s, const Vec3& hi) {
-    s.setDomain(Vec3::Zero(), hi);
-    s.setPeriodic(true, true, true);
+    s.scene().setDomain(Vec3::Zero(), hi);
+    s.scene().setPeriodic(true, true, true);
 }
 
 // --- no overlaps ---
@@ -80,13 +80,13 @@ void periodicBox(Simulation& s, const Vec3& hi) {
 // particles end up packed as close as random sequential addition gets.
 TEST(InsertionBoundary, NoOverlapAcrossPeriodicFacesFloorAndFixedBase) {
     Simulation s;
-    s.setDomain(Vec3::Zero(), Vec3(8, 6, 10));
-    s.setPeriodic(true, true, false);
+    s.scene().setDomain(Vec3::Zero(), Vec3(8, 6, 10));
+    s.scene().setPeriodic(true, true, false);
     const auto large = addGrains(s, "large"), small = addGrains(s, "small");
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), large);
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), large);
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 3; ++j) s.addFixedParticle(Vec3(2 * i, 2 * j, 0.5), 0.5, large);
-    const std::size_t firstNew = s.particles().size();
+        for (int j = 0; j < 3; ++j) s.scene().addFixedParticle(Vec3(2 * i, 2 * j, 0.5), 0.5, large);
+    const std::size_t firstNew = s.scene().particles().size();
     InsertionBoundary boundary(Vec3::Zero(), Vec3(8, 6, 4), seedMixture(large, small), 3000);
     const InsertionReport report = boundary.insertCount(s, 100000);
     ASSERT_FALSE(report.complete) << "the region cannot hold 100000 particles";
@@ -96,7 +96,7 @@ TEST(InsertionBoundary, NoOverlapAcrossPeriodicFacesFloorAndFixedBase) {
     EXPECT_LE(overlap, 1e-10) << report.describe();
     RecordProperty("largestRelativeOverlap", std::to_string(overlap));
     RecordProperty("packingFraction", std::to_string(report.packingFraction));
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     std::size_t onFloor = 0, onFixed = 0, acrossX = 0, acrossY = 0;
     for (std::size_t i = firstNew; i < p.size(); ++i) {
         const Vec3& x = p.position[i];
@@ -108,7 +108,7 @@ TEST(InsertionBoundary, NoOverlapAcrossPeriodicFacesFloorAndFixedBase) {
         acrossX += x.x() < r || x.x() > 8 - r;
         acrossY += x.y() < r || x.y() > 6 - r;
         for (std::size_t k = 0; k < firstNew; ++k)
-            onFixed += s.domain().nearestImage(x - p.position[k]).norm() < r + 0.5 + 0.05;
+            onFixed += s.scene().domain().nearestImage(x - p.position[k]).norm() < r + 0.5 + 0.05;
     }
     // The checks above had something to check: particles near the floor, the fixed spheres and
     // across both periodic faces.
@@ -126,12 +126,12 @@ TEST(InsertionBoundary, StaysInsideTheBoxAndClearOfWalls) {
     Simulation s;
     const auto grains = addGrains(s);
     const Vec3 normal = Vec3(1, 0, 1).normalized(), point(3, 0, 1);
-    s.addWall(normal, point, grains);
+    s.scene().addWall(normal, point, grains);
     const Vec3 lo(0, 0, 0), hi(6, 4, 5);
     InsertionBoundary boundary(lo, hi, SizeDistribution::byNumber().addRange(grains, 0.2, 0.5), 200);
     const InsertionReport report = boundary.insertCount(s, 100000);
     ASSERT_GT(report.inserted, 50u) << report.describe();
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     std::size_t nearWall = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.radius[i];
@@ -169,18 +169,18 @@ TEST(InsertionBoundary, TouchingIsAllowedAndTheSmallestOverlapIsNot) {
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.what) + (c.fits ? ", touching" : ", overlapping by 1e-12"));
         Simulation s;
-        s.setDomain(Vec3::Zero(), Vec3(4, 4, 4));
-        s.setPeriodic(false, false, true);
+        s.scene().setDomain(Vec3::Zero(), Vec3(4, 4, 4));
+        s.scene().setPeriodic(false, false, true);
         const auto grains = addGrains(s);
-        if (c.neighbour) s.addFixedParticle(*c.neighbour, 0.5, grains);
-        if (c.floor) s.addWall(Vec3::UnitZ(), Vec3(0, 0, *c.floor), grains);
-        const std::size_t before = s.particles().size();
+        if (c.neighbour) s.scene().addFixedParticle(*c.neighbour, 0.5, grains);
+        if (c.floor) s.scene().addWall(Vec3::UnitZ(), Vec3(0, 0, *c.floor), grains);
+        const std::size_t before = s.scene().particles().size();
         InsertionBoundary boundary(Vec3::Zero(), Vec3::Ones(), SizeDistribution::byNumber().add(grains, 0.5), 3);
         const InsertionReport report = boundary.insertCount(s, 1);
         EXPECT_EQ(report.complete, c.fits) << report.describe();
-        EXPECT_EQ(s.particles().size(), before + (c.fits ? 1 : 0));
+        EXPECT_EQ(s.scene().particles().size(), before + (c.fits ? 1 : 0));
         if (c.fits) {
-            EXPECT_TRUE(test::sameBits(s.particles().position.back(), Vec3(0.5, 0.5, 0.5)));
+            EXPECT_TRUE(test::sameBits(s.scene().particles().position.back(), Vec3(0.5, 0.5, 0.5)));
         } else {
             EXPECT_EQ(report.attempts, 3u);
         }
@@ -194,8 +194,8 @@ TEST(InsertionBoundary, TouchingIsAllowedAndTheSmallestOverlapIsNot) {
 // easily (with 1000 attempts per particle it stalls at 0.24-0.28, Documentation/UserGuide/Insertion.md).
 TEST(InsertionBoundary, CountIsMetExactlyWhenFeasible) {
     Simulation s;
-    s.setDomain(Vec3::Zero(), Vec3(20, 10, 40));
-    s.setPeriodic(true, true, false);
+    s.scene().setDomain(Vec3::Zero(), Vec3(20, 10, 40));
+    s.scene().setPeriodic(true, true, false);
     const auto large = addGrains(s, "large"), small = addGrains(s, "small");
     InsertionBoundary boundary(Vec3::Zero(), Vec3(20, 10, 30),
                                SizeDistribution::byNumber().add(large, largeRadius, 1).add(small, smallRadius, 2));
@@ -203,10 +203,10 @@ TEST(InsertionBoundary, CountIsMetExactlyWhenFeasible) {
     EXPECT_TRUE(report.complete) << report.describe();
     EXPECT_EQ(report.inserted, 3000u);
     EXPECT_EQ(report.reached, 3000);
-    EXPECT_EQ(s.particles().size(), 3000u);
+    EXPECT_EQ(s.scene().particles().size(), 3000u);
     // Mass from the counts by size: m = 8 r^3 is 1 for large and 1/2 for small particles.
     std::size_t nLarge = 0;
-    for (double r : s.particles().radius) nLarge += r == largeRadius;
+    for (double r : s.scene().particles().radius) nLarge += r == largeRadius;
     EXPECT_NEAR(report.mass, nLarge + 0.5 * (3000 - nLarge), 1e-9);
     EXPECT_GT(report.attempts, 3000u - 1);
     EXPECT_NE(report.describe().find("inserted 3000 of 3000 particles"), std::string::npos) << report.describe();
@@ -214,7 +214,7 @@ TEST(InsertionBoundary, CountIsMetExactlyWhenFeasible) {
     // A second call adds to the first and avoids its particles.
     report = boundary.insertCount(s, 250);
     EXPECT_TRUE(report.complete);
-    EXPECT_EQ(s.particles().size(), 3250u);
+    EXPECT_EQ(s.scene().particles().size(), 3250u);
     EXPECT_LE(largestRelativeOverlap(s), 1e-10);
 }
 
@@ -227,7 +227,7 @@ TEST(InsertionBoundary, InfeasibleCountIsReported) {
     EXPECT_FALSE(report.complete);
     EXPECT_GE(report.inserted, 1u);
     EXPECT_LE(report.inserted, 8u);
-    EXPECT_EQ(s.particles().size(), report.inserted);
+    EXPECT_EQ(s.scene().particles().size(), report.inserted);
     EXPECT_EQ(report.failedRadius, 0.5);
     const std::string text = report.describe();
     const std::string expected = "inserted " + std::to_string(report.inserted) + " of 100 particles";
@@ -253,13 +253,13 @@ TEST(InsertionBoundary, MassIsReachedWithinOneParticle) {
 
 TEST(InsertionBoundary, FeasiblePackingFractionIsReachedWithinOneParticle) {
     Simulation s;
-    s.setDomain(Vec3::Zero(), Vec3(10, 10, 20));
-    s.setPeriodic(true, true, false);
+    s.scene().setDomain(Vec3::Zero(), Vec3(10, 10, 20));
+    s.scene().setPeriodic(true, true, false);
     const auto large = addGrains(s, "large"), small = addGrains(s, "small");
     // Particles already there, half of them inside the region z < 10: those count, the others not.
     InsertionBoundary(Vec3(0, 0, 5), Vec3(10, 10, 15), seedMixture(large, small)).insertCount(s, 200);
     std::size_t above = 0;
-    for (const Vec3& x : s.particles().position) above += x.z() > 10;
+    for (const Vec3& x : s.scene().particles().position) above += x.z() > 10;
     ASSERT_GT(above, 50u);
     ASSERT_LT(above, 150u);
     const double before = packingFractionOf(s, Vec3::Zero(), Vec3(10, 10, 10));
@@ -288,7 +288,7 @@ TEST(InsertionBoundary, InfeasiblePackingFractionReportsHowFarItGot) {
     const InsertionReport report = boundary.fillToVolumeFraction(s, 0.7);
     EXPECT_FALSE(report.complete);
     EXPECT_LT(report.inserted, 0.7 * 512 / (pi / 6));  // fewer than 0.7 of the box would need
-    EXPECT_EQ(s.particles().size(), report.inserted);
+    EXPECT_EQ(s.scene().particles().size(), report.inserted);
     const double fraction = packingFractionOf(s, Vec3::Zero(), Vec3(8, 8, 8));
     EXPECT_NEAR(report.packingFraction, fraction, 1e-12);
     EXPECT_EQ(report.reached, report.packingFraction);
@@ -315,7 +315,7 @@ TEST(InsertionBoundary, HundredThousandParticlesInsert) {
     InsertionBoundary boundary(Vec3::Zero(), Vec3::Constant(side), seedMixture(large, small));
     const InsertionReport report = boundary.insertCount(s, n);
     EXPECT_TRUE(report.complete) << report.describe();
-    EXPECT_EQ(s.particles().size(), n);
+    EXPECT_EQ(s.scene().particles().size(), n);
     EXPECT_NEAR(report.packingFraction, 0.2, 0.005);
 }
 
@@ -367,12 +367,12 @@ TEST(InsertionBoundary, RadiusRangeByVolume) {
 
 std::vector<Vec3> insertedPositions(std::uint64_t seed) {
     Simulation s;
-    s.random().seed(seed);
+    s.scene().random().seed(seed);
     periodicBox(s, Vec3(6, 6, 6));
     const auto large = addGrains(s, "large"), small = addGrains(s, "small");
     InsertionBoundary boundary(Vec3::Zero(), Vec3(6, 6, 6), seedMixture(large, small));
     boundary.insertCount(s, 120);  // packing fraction 0.19
-    return s.particles().position;
+    return s.scene().particles().position;
 }
 
 TEST(InsertionBoundary, SameSeedGivesSamePositions) {
@@ -398,7 +398,7 @@ TEST(InsertionBoundary, RateInsertionGivesFloorOfRateTimesTime) {
         std::size_t reported = 0;
         s.setup = [&](SceneSimulation& sim) {
             periodicBox(sim, Vec3(10, 10, 10));
-            sim.setGravity(Vec3::Zero());
+            sim.scene().setGravity(Vec3::Zero());
             addGrains(sim, "grains", 50 * c.dt);
         };
         s.afterStep = [&](SceneSimulation& sim) {
@@ -406,9 +406,9 @@ TEST(InsertionBoundary, RateInsertionGivesFloorOfRateTimesTime) {
             EXPECT_TRUE(report.complete) << report.describe();
             reported += report.inserted;
         };
-        s.run(c.dt, c.steps * c.dt);
+        s.runFor(c.dt, c.steps * c.dt);
         EXPECT_EQ(s.step(), static_cast<std::uint64_t>(c.steps));
-        EXPECT_EQ(s.particles().size(), c.expected);
+        EXPECT_EQ(s.scene().particles().size(), c.expected);
         EXPECT_EQ(reported, c.expected);
     }
 }
@@ -445,7 +445,7 @@ TEST(InsertionBoundary, BadInputNamesTheParameter) {
                 {"size class 0", "species 3 does not exist"});
     expectError([&] { InsertionBoundary(lo, Vec3(4, 4, 0.8), one).insertCount(s, 1); },
                 {"insertion region", "along z", "largest particle diameter"});
-    EXPECT_EQ(s.particles().size(), 0u) << "a rejected call must not insert anything";
+    EXPECT_EQ(s.scene().particles().size(), 0u) << "a rejected call must not insert anything";
 }
 
 }  // namespace

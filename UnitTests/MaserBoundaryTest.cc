@@ -22,12 +22,12 @@ struct MaserScene : test::SceneSimulation {
     std::function<void(MaserScene&)> arrange;
     MaserScene() {
         setup = [this](SceneSimulation&) {
-            setTimeStep(1e-3);
-            setGravity(Vec3::Zero());
-            setDomain(Vec3(-10, 0, -2), Vec3(0, 4, 2));
-            setPeriodic(true, true, false);
+            settings().timeStep = 1e-3;
+            scene().setGravity(Vec3::Zero());
+            scene().setDomain(Vec3(-10, 0, -2), Vec3(0, 4, 2));
+            scene().setPeriodic(true, true, false);
             settings().maxInitialOverlapFraction = 0.5;  // the one-way test starts with overlaps
-            addSpecies("grain", 1, grainLaw);
+            scene().addSpecies("grain", 1, grainLaw);
             maser.maserSpecies(*this, 0);
             arrange(*this);
         };
@@ -49,30 +49,30 @@ TEST(MaserBoundary, ForcesAcrossTheDownstreamFaceAreOneWay) {
     const Vec3 a(-0.48, 2, 0), b(-9.5, 2, 0), c(0.4, 2, 0);
     MaserScene periodic;
     periodic.arrange = [&](MaserScene& s) {
-        s.addParticle(a, 0.5, 1);
-        s.addParticle(b, 0.5, 1);
+        s.scene().addParticle(a, 0.5, 1);
+        s.scene().addParticle(b, 0.5, 1);
     };
     computeInitialForces(periodic);
-    const Vec3 onB = periodic.particles().force[periodic.slotOf(1)];
+    const Vec3 onB = periodic.scene().particles().force[periodic.scene().slotOf(1)];
     EXPECT_GT(onB.x(), 0);
     EXPECT_NEAR(onB.y(), 0, 1e-12);
-    EXPECT_NEAR((periodic.particles().force[periodic.slotOf(0)] + onB).norm(), 0, 1e-12);
+    EXPECT_NEAR((periodic.scene().particles().force[periodic.scene().slotOf(0)] + onB).norm(), 0, 1e-12);
 
     MaserScene active;
     active.arrange = [&](MaserScene& s) {
-        s.addParticle(a, 0.5, 1);
-        s.addParticle(b, 0.5, 1);
-        s.addParticle(c, 0.5, 0);  // a chute particle just downstream of the face
+        s.scene().addParticle(a, 0.5, 1);
+        s.scene().addParticle(b, 0.5, 1);
+        s.scene().addParticle(c, 0.5, 0);  // a chute particle just downstream of the face
         s.maser.activate(s, 10, /*seedChute*/ false);
     };
     computeInitialForces(active);
-    const ParticleStore& p = active.particles();
-    const Vec3 onA = p.force[active.slotOf(0)], onC = p.force[active.slotOf(2)];
-    EXPECT_EQ(p.force[active.slotOf(1)], onB) << "B feels A's image as in the periodic box";
+    const ParticleStore& p = active.scene().particles();
+    const Vec3 onA = p.force[active.scene().slotOf(0)], onC = p.force[active.scene().slotOf(2)];
+    EXPECT_EQ(p.force[active.scene().slotOf(1)], onB) << "B feels A's image as in the periodic box";
     EXPECT_GT(onC.x(), 0);
     EXPECT_LT(onA.x(), 0);
     EXPECT_EQ(onA, -onC) << "A feels C and nothing from B";
-    EXPECT_EQ(active.pairList().oneWayPairs.size(), 1u);
+    EXPECT_EQ(active.state().pairList.oneWayPairs.size(), 1u);
 }
 
 // Past a tenth of the radius the pair stops being purely one way: at an overlap of 0.15 (30% of
@@ -80,12 +80,12 @@ TEST(MaserBoundary, ForcesAcrossTheDownstreamFaceAreOneWay) {
 TEST(MaserBoundary, DeepOverlapsAcrossTheFacePushBack) {
     MaserScene active;
     active.arrange = [](MaserScene& s) {
-        s.addParticle(Vec3(-0.4, 2, 0), 0.5, 1);
-        s.addParticle(Vec3(-9.55, 2, 0), 0.5, 1);
+        s.scene().addParticle(Vec3(-0.4, 2, 0), 0.5, 1);
+        s.scene().addParticle(Vec3(-9.55, 2, 0), 0.5, 1);
         s.maser.activate(s, 10, /*seedChute*/ false);
     };
     computeInitialForces(active);
-    const Vec3 onA = active.particles().force[active.slotOf(0)], onB = active.particles().force[active.slotOf(1)];
+    const Vec3 onA = active.scene().particles().force[active.scene().slotOf(0)], onB = active.scene().particles().force[active.scene().slotOf(1)];
     EXPECT_GT(onB.x(), 0);
     EXPECT_NEAR(onA.x(), -onB.x() * (0.15 - 0.05) / 0.15, 1e-9 * onB.x());
     EXPECT_EQ(active.contactSummary().oneWayReactions, 1u);
@@ -99,9 +99,9 @@ TEST(MaserBoundary, CopiesEveryCrossingExactlyOnce) {
     const double x0[3] = {-9.5, -5.2, -1.3}, v[3] = {1.0, 1.7, 2.3}, radius[3] = {0.3, 0.4, 0.5};
     MaserScene run;
     run.arrange = [&](MaserScene& s) {
-        s.addSpecies("other", 2, grainLaw);  // chute species 2, a second outflow class
+        s.scene().addSpecies("other", 2, grainLaw);  // chute species 2, a second outflow class
         s.maser.maserSpecies(s, 2);          // maser species 3
-        for (int k = 0; k < 3; ++k) s.addParticle(Vec3(x0[k], 0.5 + 1.3 * k, 0), radius[k], k == 2 ? 3 : 1, Vec3(v[k], 0, 0));
+        for (int k = 0; k < 3; ++k) s.scene().addParticle(Vec3(x0[k], 0.5 + 1.3 * k, 0), radius[k], k == 2 ? 3 : 1, Vec3(v[k], 0, 0));
         s.maser.activate(s, 200, /*seedChute*/ false);
     };
     const double t = 23.45;
@@ -112,7 +112,7 @@ TEST(MaserBoundary, CopiesEveryCrossingExactlyOnce) {
     EXPECT_EQ(run.maser.crossings(), total);
     EXPECT_EQ(run.maser.crossings(0), expected[0] + expected[1]);
     EXPECT_EQ(run.maser.crossings(2), expected[2]);
-    const ParticleStore& p = run.particles();
+    const ParticleStore& p = run.scene().particles();
     int copies[3] = {0, 0, 0}, maserParticles = 0;
     double copiedMass = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -143,21 +143,21 @@ TEST(MaserBoundary, CopiesEveryCrossingExactlyOnce) {
 // break this.)
 TEST(MaserBoundary, FirstPhaseIsAPlainPeriodicBoxBitForBit) {
     auto scene = [](test::SceneSimulation& s, MaserBoundary* maser) {
-        s.setTimeStep(1e-4);
+        s.settings().timeStep = 1e-4;
         const double angle = 24 * pi / 180;
-        s.setGravity(Vec3(std::sin(angle), 0, -std::cos(angle)));
-        s.setDomain(Vec3(-8, 0, -1), Vec3(0, 4, 12));
-        s.setPeriodic(true, true, false);
+        s.scene().setGravity(Vec3(std::sin(angle), 0, -std::cos(angle)));
+        s.scene().setDomain(Vec3(-8, 0, -1), Vec3(0, 4, 12));
+        s.scene().setPeriodic(true, true, false);
         const LinearSpringDashpot law{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
-        std::size_t large = s.addSpecies("large", 6 / pi, law);
-        std::size_t small = s.addSpecies("small", 6 / pi, LinearSpringDashpot(law).withFriction(0.25));
-        s.species().setPair(large, small, LinearSpringDashpot(law).withFriction(0.375));
+        std::size_t large = s.scene().addSpecies("large", 6 / pi, law);
+        std::size_t small = s.scene().addSpecies("small", 6 / pi, LinearSpringDashpot(law).withFriction(0.25));
+        s.scene().species().setPair(large, small, LinearSpringDashpot(law).withFriction(0.375));
         if (maser) {
             large = maser->maserSpecies(s, large);
             small = maser->maserSpecies(s, small);
         }
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), large);
-        s.random().seed(7);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), large);
+        s.scene().random().seed(7);
         InsertionBoundary box(Vec3(-8, 0, 0.5), Vec3(0, 4, 8),
                               SizeDistribution::byNumber().add(large, 0.5).add(small, 0.4, 2));
         ASSERT_TRUE(box.insertCount(s, 120).complete);
@@ -171,17 +171,17 @@ TEST(MaserBoundary, FirstPhaseIsAPlainPeriodicBoxBitForBit) {
     plain.solveOrThrow(flags);
     withMaser.solveOrThrow(flags);
     EXPECT_GT(plain.energies().kinetic, 0);
-    EXPECT_TRUE(test::sameBits(plain.particles().position, withMaser.particles().position));
-    EXPECT_TRUE(test::sameBits(plain.particles().velocity, withMaser.particles().velocity));
-    EXPECT_TRUE(test::sameBits(plain.particles().angularVelocity, withMaser.particles().angularVelocity));
+    EXPECT_TRUE(test::sameBits(plain.scene().particles().position, withMaser.scene().particles().position));
+    EXPECT_TRUE(test::sameBits(plain.scene().particles().velocity, withMaser.scene().particles().velocity));
+    EXPECT_TRUE(test::sameBits(plain.scene().particles().angularVelocity, withMaser.scene().particles().angularVelocity));
 }
 
 // An active maser saved and restarted goes on exactly: the one-way box, its pairs and its totals
 // are in the restart file.
 TEST(MaserBoundary, RestartContinuesExactly) {
     auto arrange = [](MaserScene& s) {
-        for (int k = 0; k < 3; ++k) s.addParticle(Vec3(-8 + 3 * k, 0.5 + 1.3 * k, 0), 0.4, 1, Vec3(1 + 0.5 * k, 0, 0));
-        s.addParticle(Vec3(-9.6, 3.1, 0), 0.4, 1, Vec3(1, 0, 0));  // the fastest one catches up with it
+        for (int k = 0; k < 3; ++k) s.scene().addParticle(Vec3(-8 + 3 * k, 0.5 + 1.3 * k, 0), 0.4, 1, Vec3(1 + 0.5 * k, 0, 0));
+        s.scene().addParticle(Vec3(-9.6, 3.1, 0), 0.4, 1, Vec3(1, 0, 0));  // the fastest one catches up with it
         s.maser.activate(s, 100);  // seeded: the copies move on in the chute
     };
     MaserScene first;
@@ -196,8 +196,8 @@ TEST(MaserBoundary, RestartContinuesExactly) {
     EXPECT_GT(whole.maser.crossings(), first.maser.crossings());
     EXPECT_EQ(restarted.maser.crossings(), whole.maser.crossings());
     EXPECT_EQ(restarted.maser.createdMass(0), whole.maser.createdMass(0));
-    EXPECT_TRUE(test::sameBits(restarted.particles().position, whole.particles().position));
-    EXPECT_TRUE(test::sameBits(restarted.particles().velocity, whole.particles().velocity));
+    EXPECT_TRUE(test::sameBits(restarted.scene().particles().position, whole.scene().particles().position));
+    EXPECT_TRUE(test::sameBits(restarted.scene().particles().velocity, whole.scene().particles().velocity));
 }
 
 TEST(MaserBoundary, BadSetupsAreClearErrors) {
@@ -205,25 +205,25 @@ TEST(MaserBoundary, BadSetupsAreClearErrors) {
     test::expectError([&] { MaserBoundary(s, 0, -1, 1); }, {"maser box", "downstream end"});
     MaserScene empty;
     empty.arrange = [](MaserScene& s) {
-        s.addParticle(Vec3(1, 1, 0), 0.5, 0);  // a chute particle only
+        s.scene().addParticle(Vec3(1, 1, 0), 0.5, 0);  // a chute particle only
         s.maser.activate(s, 10);
     };
     test::expectError([&] { computeInitialForces(empty); }, {"maser", "no particles"});
     MaserScene shortBox;
     shortBox.arrange = [](MaserScene& s) {
-        s.addParticle(Vec3(-5, 1, 0), 2.6, 1);  // diameter 5.2: the box of length 10 is under two
+        s.scene().addParticle(Vec3(-5, 1, 0), 2.6, 1);  // diameter 5.2: the box of length 10 is under two
         s.maser.activate(s, 10);
     };
     test::expectError([&] { computeInitialForces(shortBox); }, {"maser", "longer than two diameters"});
     MaserScene noSpecies;
     noSpecies.arrange = [](MaserScene& s) {
-        s.addParticle(Vec3(-5, 1, 0), 0.5, 1);
+        s.scene().addParticle(Vec3(-5, 1, 0), 0.5, 1);
         s.maser.activate(s, -3);
     };
     test::expectError([&] { computeInitialForces(noSpecies); }, {"maser", "chute must end downstream"});
     MaserScene shaped;
     shaped.arrange = [](MaserScene& s) {
-        s.addSuperquadric(Vec3(-5, 1, 0), s.addShape(Superquadric::ellipsoid(0.5, 0.25, 0.25)), 1);
+        s.scene().addSuperquadric(Vec3(-5, 1, 0), s.scene().addShape(Superquadric::ellipsoid(0.5, 0.25, 0.25)), 1);
         s.maser.activate(s, 10);
     };
     test::expectError([&] { computeInitialForces(shaped); }, {"maser", "superquadric particles", "not supported"});
@@ -235,18 +235,18 @@ TEST(MaserBoundary, BadSetupsAreClearErrors) {
 TEST(MaserBoundary, ActivationSeedsTheChuteWithTheBoxsFlow) {
     MaserScene run;
     run.arrange = [](MaserScene& s) {
-        s.addParticle(Vec3(-7, 1, 0), 0.4, 1, Vec3(0.5, 0, 0.1), Vec3(0, 2, 0));
-        s.addParticle(Vec3(-2, 3, 0), 0.3, 1, Vec3(0.2, 0, 0));
-        s.addFixedParticle(Vec3(-5, 2, -1), 0.5, 1);
+        s.scene().addParticle(Vec3(-7, 1, 0), 0.4, 1, Vec3(0.5, 0, 0.1), Vec3(0, 2, 0));
+        s.scene().addParticle(Vec3(-2, 3, 0), 0.3, 1, Vec3(0.2, 0, 0));
+        s.scene().addFixedParticle(Vec3(-5, 2, -1), 0.5, 1);
         s.maser.activate(s, 30);
     };
     computeInitialForces(run);
-    const ParticleStore& p = run.particles();
+    const ParticleStore& p = run.scene().particles();
     ASSERT_EQ(p.size(), 5u);
     EXPECT_EQ(run.maser.seeded(), 2);
-    EXPECT_DOUBLE_EQ(run.maser.seededMass(), p.mass[run.slotOf(0)] + p.mass[run.slotOf(1)]);
+    EXPECT_DOUBLE_EQ(run.maser.seededMass(), p.mass[run.scene().slotOf(0)] + p.mass[run.scene().slotOf(1)]);
     for (std::size_t k = 0; k < 2; ++k) {
-        const std::size_t copy = run.slotOf(3 + k), original = run.slotOf(k);
+        const std::size_t copy = run.scene().slotOf(3 + k), original = run.scene().slotOf(k);
         EXPECT_EQ(p.species[copy], 0u);
         EXPECT_EQ(p.position[copy], p.position[original] + Vec3(10, 0, 0));
         EXPECT_EQ(p.velocity[copy], p.velocity[original]);

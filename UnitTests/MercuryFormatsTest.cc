@@ -49,24 +49,24 @@ std::size_t fields(const std::string& line) {
 // A scene with every kind of contact: two mobile spheres pressed together, one pressed on the
 // floor, and one pressed on a fixed sphere; gravity off so the frame at t = 0 is the set-up.
 void writeScene(const std::string& name) {
-    Scene scene;
-    scene.setup = [](Scene& s) {
-        s.setGravity(Vec3::Zero());
-        s.setDomain(Vec3(-5, -5, -1), Vec3(5, 5, 5));
-        const auto a = s.addSpecies("a", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5).withFriction(0.5));
-        const auto b = s.addSpecies("b", 2 * unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5));
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), a);
-        s.addParticle(Vec3(0, 0, 2), 0.5, a, Vec3(0.1, 0, 0));
-        s.addParticle(Vec3(0.99, 0, 2), 0.5, b, Vec3(0, 0.2, 0), Vec3(0, 0, 1));
-        s.addParticle(Vec3(3, 0, 0.49), 0.5, a, Vec3(0, 0, -0.1));
-        s.addFixedParticle(Vec3(-3, 0, 2), 0.5, a);
-        s.addParticle(Vec3(-3, 0.98, 2), 0.5, b);
+    TestScene scene;
+    scene.setup = [](TestScene& s) {
+        s.scene().setGravity(Vec3::Zero());
+        s.scene().setDomain(Vec3(-5, -5, -1), Vec3(5, 5, 5));
+        const auto a = s.scene().addSpecies("a", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5).withFriction(0.5));
+        const auto b = s.scene().addSpecies("b", 2 * unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5));
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), a);
+        s.scene().addParticle(Vec3(0, 0, 2), 0.5, a, Vec3(0.1, 0, 0));
+        s.scene().addParticle(Vec3(0.99, 0, 2), 0.5, b, Vec3(0, 0.2, 0), Vec3(0, 0, 1));
+        s.scene().addParticle(Vec3(3, 0, 0.49), 0.5, a, Vec3(0, 0, -0.1));
+        s.scene().addFixedParticle(Vec3(-3, 0, 2), 0.5, a);
+        s.scene().addParticle(Vec3(-3, 0.98, 2), 0.5, b);
     };
-    scene.setName(name);
-    scene.setTimeStep(1e-4);
-    scene.setEndTime(1e-3);
+    scene.settings().name = name;
+    scene.settings().timeStep = 1e-4;
+    scene.settings().endTime = 1e-3;
     scene.settings().progressInterval = 1e9;
-    scene.setVtuOutput(false);
+    scene.settings().writeVtu = false;
     scene.solveOrThrow({});
 }
 

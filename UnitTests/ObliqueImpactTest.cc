@@ -57,23 +57,23 @@ ObliqueResult impact(double tangentialToNormalRatio) {
     law.tangentialDamping = 0;  // fromCollision with e = 1 gives gt = gn = 0 already; stated for clarity
     const double gap = 5.37 * normalSpeed * timeStep;
 
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        s.setGravity(Vec3::Zero());
-        s.setDomain(Vec3(-1, -1, -1), Vec3(2, 1, 1));
-        const auto species = s.addSpecies("solid", unitMassDensity, law);
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        s.addParticle(Vec3(0, 0, radius + gap), radius, species,
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        s.scene().setGravity(Vec3::Zero());
+        s.scene().setDomain(Vec3(-1, -1, -1), Vec3(2, 1, 1));
+        const auto species = s.scene().addSpecies("solid", unitMassDensity, law);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        s.scene().addParticle(Vec3(0, 0, radius + gap), radius, species,
                       Vec3(tangentialToNormalRatio * normalSpeed, 0, -normalSpeed));
     };
     ObliqueResult result{};
     // With gt = 0 the tangential force is -kt xi; it sits at the Coulomb limit when
     // kt |xi| = mu kn dn (up to round-off), and below it while the contact sticks.
-    scene.afterStep = [&](Scene& s) {
-        const PairList& list = s.pairList();
+    scene.afterStep = [&](TestScene& s) {
+        const PairList& list = s.state().pairList;
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) {
-            const double overlap = radius - s.walls()[list.wallPairs[k].wall].signedDistance(
-                                                s.particles().position[list.wallPairs[k].particle]);
+            const double overlap = radius - s.scene().walls()[list.wallPairs[k].wall].signedDistance(
+                                                s.scene().particles().position[list.wallPairs[k].particle]);
             if (overlap <= 0) continue;
             const double tangential = law.tangentialStiffness * list.wallHistory.get(k).spring.norm();
             const double limit = friction * law.normalStiffness * overlap;
@@ -81,9 +81,9 @@ ObliqueResult impact(double tangentialToNormalRatio) {
             else ++result.slidingSteps;
         }
     };
-    scene.run(timeStep, 2 * collisionTime);
-    result.vx = scene.particles().velocity[0].x();
-    result.wy = scene.particles().angularVelocity[0].y();
+    scene.runFor(timeStep, 2 * collisionTime);
+    result.vx = scene.scene().particles().velocity[0].x();
+    result.wy = scene.scene().particles().angularVelocity[0].y();
     return result;
 }
 

@@ -24,13 +24,13 @@ struct FedChute : test::SceneSimulation {
     std::size_t grain = 0;
     FedChute() {
         setup = [this](SceneSimulation&) {
-            setGravity(Vec3(std::sin(24 * pi / 180), 0, -std::cos(24 * pi / 180)));
-            setDomain(Vec3(-10, 0, 0), Vec3(0, 4, 10));
-            setPeriodic(true, true, false);
-            grain = addSpecies("grain", 1, LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5).withFriction(0.5));
+            scene().setGravity(Vec3(std::sin(24 * pi / 180), 0, -std::cos(24 * pi / 180)));
+            scene().setDomain(Vec3(-10, 0, 0), Vec3(0, 4, 10));
+            scene().setPeriodic(true, true, false);
+            grain = scene().addSpecies("grain", 1, LinearSpringDashpot::fromCollision(0.05, 0.5, 0.5).withFriction(0.5));
             const std::size_t boxGrain = maser.maserSpecies(*this, grain);
-            addWall(Vec3::UnitZ(), Vec3::Zero(), grain);
-            random().seed(3);
+            scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grain);
+            scene().random().seed(3);
             InsertionBoundary box(Vec3(-10, 0, 0.5), Vec3(0, 4, 6),
                                   SizeDistribution::byNumber().add(boxGrain, 0.5).add(boxGrain, 0.4));
             ASSERT_TRUE(box.insertCount(*this, 100).complete);
@@ -72,11 +72,11 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
     std::size_t moved = 0, carriedSprings = 0, copyPairs = 0, insertedFelt = 0;
     s.afterStep = [&](test::SceneSimulation&) {
         if (s.step() < 1500 || moved > 0) return;
-        ParticleStore& p = s.particles();
-        PairList& list = s.state().pairList;
+        ParticleStore& p = s.scene().particles();
+        PairList& list = SimulationInternals::state(s).pairList;
         // Spheres of the box within a diameter of its downstream face touching another such
         // sphere: moved back, they will feel it through the face.
-        auto nearFace = [&](std::size_t i) { return s.domain().oneWay.isMember(p.species[i]) && p.position[i].x() > -1; };
+        auto nearFace = [&](std::size_t i) { return s.scene().domain().oneWay.isMember(p.species[i]) && p.position[i].x() > -1; };
         std::vector<std::uint32_t> touching(p.size(), 0);
         for (std::size_t k = 0; k < list.pairs.size(); ++k) {
             const auto [i, j] = list.pairs[k];
@@ -87,15 +87,15 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
         for (std::size_t i = 0; i < p.size(); ++i) any |= candidate(i);
         if (!any) return;  // none at the face at this step: the next one
         HGrid grid;
-        list.rebuild(p, s.domain(), s.walls(), grid, s.timeStep());  // reference positions = positions now
+        list.rebuild(p, s.scene().domain(), s.scene().walls(), grid, s.settings().timeStep);  // reference positions = positions now
         const std::uint64_t relistedBefore = list.relistedParticles;
         std::vector<std::uint64_t> movedIds, copyIds;
         const std::size_t n = p.size();
         for (std::size_t i = 0; i < n && moved < 3; ++i) {
             if (!candidate(i)) continue;
-            const std::size_t copy = s.addParticle(p.position[i], p.radius[i], s.grain, p.velocity[i], p.angularVelocity[i]);
+            const std::size_t copy = s.scene().addParticle(p.position[i], p.radius[i], s.grain, p.velocity[i], p.angularVelocity[i]);
             copyIds.push_back(p.id[copy]);
-            s.moveParticleBy(i, Vec3(-10, 0, 0));
+            s.scene().moveParticleBy(i, Vec3(-10, 0, 0));
             movedIds.push_back(p.id[i]);
             ++moved;
             for (const ParticlePair& pair : list.pairs)  // its partners stay, to be felt through the face
@@ -105,8 +105,8 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
         // the face (as an insertion into the box would add it): felt by that one, one way.
         std::uint64_t insertedId = ~std::uint64_t{0};
         for (std::size_t u = 0; u < n; ++u) {
-            if (!s.domain().oneWay.isMember(p.species[u]) || p.fixed[u] || p.position[u].x() > -9.5) continue;
-            const std::size_t slot = s.addParticle(p.position[u] + Vec3(10 - 0.8, 0, 0), 0.4, p.species[u]);
+            if (!s.scene().domain().oneWay.isMember(p.species[u]) || p.fixed[u] || p.position[u].x() > -9.5) continue;
+            const std::size_t slot = s.scene().addParticle(p.position[u] + Vec3(10 - 0.8, 0, 0), 0.4, p.species[u]);
             insertedId = p.id[slot];
             break;
         }
@@ -114,8 +114,8 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
             return std::find(ids.begin(), ids.end(), id) != ids.end();
         };
         PairList relisted = list, rebuilt = list;
-        relisted.relist(p, s.domain(), s.walls());
-        rebuilt.rebuild(p, s.domain(), s.walls(), grid, s.timeStep());
+        relisted.relist(p, s.scene().domain(), s.scene().walls());
+        rebuilt.rebuild(p, s.scene().domain(), s.scene().walls(), grid, s.settings().timeStep);
         ASSERT_TRUE(relisted.valid);
         EXPECT_EQ(relisted.relistedParticles - relistedBefore, 2 * moved + 1);
         EXPECT_EQ(relisted.reach, rebuilt.reach);
@@ -131,9 +131,9 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
             copyPairs += listed == 0 && (among(copyIds, a) || among(copyIds, b));
             insertedFelt += listed == 1 && b == insertedId;
         }
-        s.removeParticle(s.slotOf(insertedId));  // it may overlap others: not part of the flow
+        s.scene().removeParticle(s.scene().slotOf(insertedId));  // it may overlap others: not part of the flow
     };
-    s.run(1e-3, 3000 * 1e-3);
+    s.runFor(1e-3, 3000 * 1e-3);
     EXPECT_GT(moved, 0u);
     EXPECT_GT(carriedSprings, 0u);  // not vacuous: contacts went through the face with their springs
     EXPECT_GT(copyPairs, 0u);
@@ -147,8 +147,8 @@ TEST(PairListRelist, ListsWhatABuildListsWithTheSameHistories) {
 TEST(PairListRelist, ChangesNoPhysics) {
     FedChute relisting, rebuilding;
     rebuilding.settings().relist = false;
-    relisting.run(1e-3, 4000 * 1e-3);
-    rebuilding.run(1e-3, 4000 * 1e-3);
+    relisting.runFor(1e-3, 4000 * 1e-3);
+    rebuilding.runFor(1e-3, 4000 * 1e-3);
     const PairList &a = relisting.state().pairList, &b = rebuilding.state().pairList;
     std::printf("[ measured ] 4000 steps: %.0f crossings; builds %lu relisting (%lu particles relisted), %lu rebuilding\n",
                 relisting.maser.crossings(), static_cast<unsigned long>(a.builds),
@@ -158,11 +158,11 @@ TEST(PairListRelist, ChangesNoPhysics) {
     EXPECT_EQ(b.relistedParticles, 0u);
     EXPECT_GE(a.relistedParticles, static_cast<std::uint64_t>(2 * relisting.maser.crossings()));
     EXPECT_LT(a.builds, b.builds);
-    const ParticleStore &p = relisting.particles(), &q = rebuilding.particles();
+    const ParticleStore &p = relisting.scene().particles(), &q = rebuilding.scene().particles();
     ASSERT_EQ(p.size(), q.size());
     double position = 0, velocity = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {  // the slots differ (particles reordered at builds)
-        const std::size_t j = rebuilding.slotOf(p.id[i]);
+        const std::size_t j = rebuilding.scene().slotOf(p.id[i]);
         position = std::max(position, (p.position[i] - q.position[j]).norm());
         velocity = std::max(velocity, (p.velocity[i] - q.velocity[j]).norm());
     }

@@ -21,30 +21,30 @@ namespace {
 // of two sizes dropped on it with random velocities, inclined at 24 degrees.
 LinearSpringDashpot chuteLaw() { return LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25).withFriction(0.5); }
 
-void chuteScene(Scene& s) {
-    s.setDomain(Vec3::Zero(), Vec3(6, 6, 12));
-    s.setPeriodic(true, true, false);
-    s.setGravity(Vec3(std::sin(degrees(24)), 0, -std::cos(degrees(24))));
-    const auto grain = s.addSpecies("grain", unitMassDensity, chuteLaw());
+void chuteScene(TestScene& s) {
+    s.scene().setDomain(Vec3::Zero(), Vec3(6, 6, 12));
+    s.scene().setPeriodic(true, true, false);
+    s.scene().setGravity(Vec3(std::sin(degrees(24)), 0, -std::cos(degrees(24))));
+    const auto grain = s.scene().addSpecies("grain", unitMassDensity, chuteLaw());
     std::mt19937_64 random(11);
     std::uniform_real_distribution<double> jitter(-0.1, 0.1), speed(-0.5, 0.5);
     for (int ix = 0; ix < 6; ++ix)
-        for (int iy = 0; iy < 6; ++iy) s.addFixedParticle(Vec3(ix + 0.5 + jitter(random), iy + 0.5 + jitter(random), 0.5), 0.5, grain);
+        for (int iy = 0; iy < 6; ++iy) s.scene().addFixedParticle(Vec3(ix + 0.5 + jitter(random), iy + 0.5 + jitter(random), 0.5), 0.5, grain);
     for (int k = 0; k < 150; ++k) {
         const Vec3 x(k % 6 + 0.5, (k / 6) % 6 + 0.5, 1.6 + 1.05 * (k / 36));
-        s.addParticle(x, k % 2 ? 0.5 : 0.4, grain, Vec3(speed(random), speed(random), speed(random)));
+        s.scene().addParticle(x, k % 2 ? 0.5 : 0.4, grain, Vec3(speed(random), speed(random), speed(random)));
     }
 }
 
 // The chute scene with a setting of its pair list, skin 0.2, run for 3 time units: the bed flows
 // down the slope and through the periodic faces.
-void runChuteWith(Scene& s, const std::function<void(PairList&)>& set) {
-    s.setup = [set](Scene& scene) {
+void runChuteWith(TestScene& s, const std::function<void(PairList&)>& set) {
+    s.setup = [set](TestScene& scene) {
         chuteScene(scene);
-        set(scene.state().pairList);
+        set(SimulationInternals::state(scene).pairList);
     };
-    s.setSkin(0.2);
-    s.run(1e-4, 3);
+    s.settings().skin = 0.2;
+    s.runFor(1e-4, 3);
 }
 
 // The particles whose position, velocity or angular velocity differ in any bit.
@@ -61,19 +61,19 @@ std::size_t particlesThatDiffer(const ParticleStore& a, const ParticleStore& b) 
 
 TEST(PairList, SkinChangesNoPhysics) {
     const double dt = 1e-4;
-    Scene withSkin, everyStep;
+    TestScene withSkin, everyStep;
     withSkin.setup = everyStep.setup = chuteScene;
     std::size_t contactSteps = 0;
-    withSkin.afterStep = [&contactSteps](Scene& s) { contactSteps += s.contactSummary().contacts; };
-    withSkin.setSkin(0.2);
-    everyStep.setSkin(0);
-    withSkin.run(dt, 1000 * dt);
-    everyStep.run(dt, 1000 * dt);
-    EXPECT_LT(withSkin.pairList().builds, 100u);      // the skin saves rebuilds...
-    EXPECT_GE(everyStep.pairList().builds, 1000u);    // ...which skin 0 does every step
+    withSkin.afterStep = [&contactSteps](TestScene& s) { contactSteps += s.contactSummary().contacts; };
+    withSkin.settings().skin = 0.2;
+    everyStep.settings().skin = 0;
+    withSkin.runFor(dt, 1000 * dt);
+    everyStep.runFor(dt, 1000 * dt);
+    EXPECT_LT(withSkin.state().pairList.builds, 100u);      // the skin saves rebuilds...
+    EXPECT_GE(everyStep.state().pairList.builds, 1000u);    // ...which skin 0 does every step
     EXPECT_GT(contactSteps, 20000u);  // and the particles did collide, for many steps
     double position = 0, velocity = 0;
-    const auto &a = withSkin.particles(), &b = everyStep.particles();
+    const auto &a = withSkin.scene().particles(), &b = everyStep.scene().particles();
     for (std::size_t i = 0; i < a.size(); ++i) {
         position = std::max(position, (a.position[i] - b.position[i]).norm());
         velocity = std::max(velocity, (a.velocity[i] - b.velocity[i]).norm());
@@ -89,10 +89,10 @@ TEST(PairList, SkinChangesNoPhysics) {
 // stale slots and gave springs to the wrong pairs (or read past the end).
 TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
     using Key = std::pair<std::uint64_t, std::uint64_t>;
-    auto histories = [](const Scene& s) {
+    auto histories = [](const TestScene& s) {
         std::map<Key, ContactHistory> byIds;
-        const PairList& l = s.pairList();
-        const ParticleStore& p = s.particles();
+        const PairList& l = s.state().pairList;
+        const ParticleStore& p = s.scene().particles();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             const std::uint64_t a = p.id[l.pairs[k].i], b = p.id[l.pairs[k].j];
             ContactHistory h = l.history.get(k);
@@ -104,16 +104,16 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
     std::map<Key, ContactHistory> before;
     std::size_t kept = 0, touching = 0, carried = 0, sticking = 0, springsBeyondTheirBound = 0;
     const double dt = 1e-4;
-    Scene s;
+    TestScene s;
     s.setup = chuteScene;
-    s.afterStep = [&](Scene& s) {
+    s.afterStep = [&](TestScene& s) {
         if (s.step() == 300) {
             before = histories(s);
             // A mobile particle in a middle slot.
-            std::size_t slot = s.particles().size() / 2;
-            while (s.particles().fixed[slot]) ++slot;
-            const std::uint64_t removedId = s.particles().id[slot];
-            s.removeParticle(slot);
+            std::size_t slot = s.scene().particles().size() / 2;
+            while (s.scene().particles().fixed[slot]) ++slot;
+            const std::uint64_t removedId = s.scene().particles().id[slot];
+            s.scene().removeParticle(slot);
             const auto after = histories(s);
             for (const auto& [key, h] : before) {
                 if (key.first == removedId || key.second == removedId) {
@@ -142,8 +142,8 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
         // 39 pairs stick, their |s - s0| is 0.988 to 1.000 of g. The springs are 1.5e-5 to 1.1e-3
         // long: a check of |s - s0| < 1e-3 let them all be halved at the rebuild).
         if (s.step() == 301) {
-            const ParticleStore& p = s.particles();
-            const PeriodicImage image(s.domain());
+            const ParticleStore& p = s.scene().particles();
+            const PeriodicImage image(s.scene().domain());
             const LinearSpringDashpot law = chuteLaw();
             const double kt = law.tangentialStiffness;
             // The half-step velocities the force loop saw: v(n+1) - (dt/2) F(n+1)/m, w likewise.
@@ -153,7 +153,7 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
             };
             for (const auto& [key, h] : histories(s)) {
                 if (!h.isTouching() || !before.count(key) || !before.at(key).isTouching()) continue;
-                const std::size_t i = s.slotOf(key.first), j = s.slotOf(key.second);
+                const std::size_t i = s.scene().slotOf(key.first), j = s.scene().slotOf(key.second);
                 const auto [vi, wi] = halfStepVelocity(i);
                 const auto [vj, wj] = halfStepVelocity(j);
                 const Vec3 d = image.nearest(p.position[i] - p.position[j]);
@@ -176,7 +176,7 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
             }
         }
     };
-    s.run(dt, 302 * dt);
+    s.runFor(dt, 302 * dt);
     std::printf("[ measured ] %zu springs carried over the rebuild, %zu of them sticking, %zu longer than twice "
                 "their bound\n", carried, sticking, springsBeyondTheirBound);
     EXPECT_GT(touching, 20u);
@@ -188,15 +188,15 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
 // image (Contacts/PairSweep.h), so their direct difference xi - xj must stay their nearest image
 // for every step until the next build, while particles cross the periodic faces and wrap.
 TEST(PairList, InteriorPairsNeedNoPeriodicImageUntilTheNextBuild) {
-    Scene s;
+    TestScene s;
     s.setup = chuteScene;
-    s.setSkin(0.2);
+    s.settings().skin = 0.2;
     std::size_t checked = 0, interiorSteps = 0, imageSteps = 0, wraps = 0, violations = 0;
     std::vector<Vec3> before;
-    s.afterStep = [&](Scene& scene) {
-        const PairList& list = scene.pairList();
-        const PeriodicImage image(scene.domain());
-        const auto& x = scene.particles().position;
+    s.afterStep = [&](TestScene& scene) {
+        const PairList& list = scene.state().pairList;
+        const PeriodicImage image(scene.scene().domain());
+        const auto& x = scene.scene().particles().position;
         ASSERT_LE(list.interiorPairs, list.pairs.size());
         for (std::size_t k = 0; k < list.interiorPairs; ++k) {
             const Vec3 d = x[list.pairs[k].i] - x[list.pairs[k].j];
@@ -209,9 +209,9 @@ TEST(PairList, InteriorPairsNeedNoPeriodicImageUntilTheNextBuild) {
             wraps += (x[i] - before[i]).norm() > 3;  // a jump across the 6 x 6 box
         before = x;
     };
-    s.run(1e-4, 3);  // the bed flows down the slope and through the downstream face
+    s.runFor(1e-4, 3);  // the bed flows down the slope and through the downstream face
     std::printf("[ measured ] %zu interior pair-steps checked, %zu wraps through a face, %llu builds\n", checked,
-                wraps, static_cast<unsigned long long>(s.pairList().builds));
+                wraps, static_cast<unsigned long long>(s.state().pairList.builds));
     EXPECT_EQ(violations, 0u) << "an interior pair's direct difference was not its nearest image";
     EXPECT_GT(wraps, 20u) << "the test needs particles crossing the periodic faces";
     EXPECT_EQ(interiorSteps, 30000u) << "every step has interior pairs";
@@ -223,16 +223,16 @@ TEST(PairList, InteriorPairsNeedNoPeriodicImageUntilTheNextBuild) {
 // exactly the pairs the whole list's sweep picks, in the same order: the trajectory is the
 // same to the bit, through a flow that remakes the near list many times between builds.
 TEST(PairList, NearListChangesNothing) {
-    Scene nearList, wholeList;
+    TestScene nearList, wholeList;
     runChuteWith(nearList, [](PairList& list) { list.nearSkinFraction = 0.15; });
     runChuteWith(wholeList, [](PairList& list) { list.nearSkinFraction = 0; });
-    const std::uint64_t makes = nearList.pairList().near.makes, builds = nearList.pairList().builds;
+    const std::uint64_t makes = nearList.state().pairList.near.makes, builds = nearList.state().pairList.builds;
     std::printf("[ measured ] near list made %llu times in 30000 steps, the list built %llu times\n",
                 static_cast<unsigned long long>(makes), static_cast<unsigned long long>(builds));
-    EXPECT_EQ(wholeList.pairList().near.makes, 0u);
+    EXPECT_EQ(wholeList.state().pairList.near.makes, 0u);
     EXPECT_GT(makes, 2 * builds) << "the near list should be remade between builds";
     EXPECT_LT(makes, 30000u / 4) << "and used for several steps each time";
-    EXPECT_EQ(particlesThatDiffer(nearList.particles(), wholeList.particles()), 0u)
+    EXPECT_EQ(particlesThatDiffer(nearList.scene().particles(), wholeList.scene().particles()), 0u)
         << "particles whose state differs from the whole list's sweep";
 }
 
@@ -243,38 +243,38 @@ TEST(PairList, NearListChangesNothing) {
 // (Without that check the near list missed the pair: the spheres overlapped by 0.025 before it
 // was remade, against 0.002 with the whole list.)
 TEST(PairList, NearListFollowsParticlesMovedByHand) {
-    const auto run = [](Scene& s, double nearSkinFraction) {
-        s.setup = [nearSkinFraction](Scene& scene) {
-            scene.setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
+    const auto run = [](TestScene& s, double nearSkinFraction) {
+        s.setup = [nearSkinFraction](TestScene& scene) {
+            scene.scene().setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
             const auto grain =
-                scene.addSpecies("grain", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25));
-            scene.addParticle(Vec3(0, 0, 0), 0.5, grain);
-            scene.addParticle(Vec3(1.05, 0, 0), 0.5, grain);
-            scene.state().pairList.nearSkinFraction = nearSkinFraction;
+                scene.scene().addSpecies("grain", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25));
+            scene.scene().addParticle(Vec3(0, 0, 0), 0.5, grain);
+            scene.scene().addParticle(Vec3(1.05, 0, 0), 0.5, grain);
+            SimulationInternals::state(scene).pairList.nearSkinFraction = nearSkinFraction;
         };
-        s.setSkin(0.2);
+        s.settings().skin = 0.2;
         int step = 0;
         double closest = INFINITY;
-        s.afterStep = [&](Scene& scene) {
-            ParticleStore& p = scene.particles();
-            const std::size_t a = scene.slotOf(0), b = scene.slotOf(1);
+        s.afterStep = [&](TestScene& scene) {
+            ParticleStore& p = scene.scene().particles();
+            const std::size_t a = scene.scene().slotOf(0), b = scene.scene().slotOf(1);
             if (++step == 10) {
                 p.position[b].x() -= 0.045;
                 p.velocity[b].x() = -1;
             }
             closest = std::min(closest, (p.position[b] - p.position[a]).norm() - 1);
         };
-        s.run(1e-4, 400e-4);
+        s.runFor(1e-4, 400e-4);
         return closest;
     };
-    Scene nearList, wholeList;
+    TestScene nearList, wholeList;
     const double nearClosest = run(nearList, 0.15), wholeClosest = run(wholeList, 0);
-    EXPECT_GT(nearList.pairList().near.makes, 1u);
-    EXPECT_EQ(wholeList.pairList().near.makes, 0u);
+    EXPECT_GT(nearList.state().pairList.near.makes, 1u);
+    EXPECT_EQ(wholeList.state().pairList.near.makes, 0u);
     EXPECT_LT(wholeClosest, -1e-3) << "the spheres should collide";
     EXPECT_GT(wholeClosest, -5e-3);
     EXPECT_EQ(nearClosest, wholeClosest);
-    EXPECT_EQ(particlesThatDiffer(nearList.particles(), wholeList.particles()), 0u)
+    EXPECT_EQ(particlesThatDiffer(nearList.scene().particles(), wholeList.scene().particles()), 0u)
         << "particles whose state differs from the whole list's sweep";
 }
 
@@ -284,14 +284,14 @@ TEST(PairList, NearListFollowsParticlesMovedByHand) {
 // way: the trajectory is the same to the bit. In the flowing chute the frame's smaller growths
 // also let the near list last longer, which shows that the frame was used.
 TEST(PairList, SweepFrameChangesNothing) {
-    Scene inFlowFrame, withSpeeds;
+    TestScene inFlowFrame, withSpeeds;
     runChuteWith(inFlowFrame, [](PairList& list) { list.sweepInFlowFrame = true; });
     runChuteWith(withSpeeds, [](PairList& list) { list.sweepInFlowFrame = false; });
-    const std::uint64_t makesInFrame = inFlowFrame.pairList().near.makes, makes = withSpeeds.pairList().near.makes;
+    const std::uint64_t makesInFrame = inFlowFrame.state().pairList.near.makes, makes = withSpeeds.state().pairList.near.makes;
     std::printf("[ measured ] near list made %llu times in the flow's frame, %llu times with the speeds\n",
                 static_cast<unsigned long long>(makesInFrame), static_cast<unsigned long long>(makes));
     EXPECT_LT(makesInFrame, makes) << "the frame's growths should be smaller in the flow";
-    EXPECT_EQ(particlesThatDiffer(inFlowFrame.particles(), withSpeeds.particles()), 0u)
+    EXPECT_EQ(particlesThatDiffer(inFlowFrame.scene().particles(), withSpeeds.scene().particles()), 0u)
         << "particles whose state differs from the sweep with the speeds";
 }
 
@@ -300,7 +300,7 @@ TEST(PairList, SweepFrameChangesNothing) {
 // pass: the same trajectory to the bit, through builds that reorder the particles and wraps
 // through the periodic faces. (186 particles: blocks of eight in lanes and a tail of two.)
 TEST(PairList, DriftInOnePassChangesNothing) {
-    Scene onePass, passByPass;
+    TestScene onePass, passByPass;
     passByPass.settings().stepper.driftPass = false;
     runChuteWith(onePass, [](PairList&) {});
     runChuteWith(passByPass, [](PairList&) {});
@@ -308,9 +308,9 @@ TEST(PairList, DriftInOnePassChangesNothing) {
     EXPECT_EQ(one.driftPassSteps, 30000u) << "the chute should drift in one pass at every step";
     EXPECT_EQ(byPass.driftPassSteps, 0u);
     EXPECT_EQ(byPass.plainSteps, 30000u);
-    EXPECT_GT(onePass.pairList().builds, 5u) << "the test needs builds (and reorders) during the run";
-    EXPECT_EQ(onePass.pairList().builds, passByPass.pairList().builds);
-    EXPECT_EQ(particlesThatDiffer(onePass.particles(), passByPass.particles()), 0u)
+    EXPECT_GT(onePass.state().pairList.builds, 5u) << "the test needs builds (and reorders) during the run";
+    EXPECT_EQ(onePass.state().pairList.builds, passByPass.state().pairList.builds);
+    EXPECT_EQ(particlesThatDiffer(onePass.scene().particles(), passByPass.scene().particles()), 0u)
         << "particles whose state differs from the step done pass by pass";
 }
 

@@ -21,7 +21,7 @@ const Vec3 boxHi(6.0, 8.0, 10.5);
 // Unit-mass spheres of radius 1/2 with friction, so that normal, damping and tangential
 // forces and torques all act.
 std::size_t addGlass(Simulation& s, double collisionTime) {
-    return s.addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.7, 0.5).withFriction(0.5));
+    return s.scene().addSpecies("glass", 6 / pi, LinearSpringDashpot::fromCollision(collisionTime, 0.7, 0.5).withFriction(0.5));
 }
 
 struct PairState {
@@ -34,26 +34,26 @@ PairState touchingPairAfterOneStep(const Vec3& middle) {
     const double tc = 0.01, dt = tc / 50;
     SceneSimulation s;
     s.setup = [&](SceneSimulation& sim) {
-        sim.setDomain(boxLo, boxHi);
-        sim.setPeriodic(true, true, true);
-        sim.setGravity(Vec3::Zero());
-        sim.setTimeStep(dt);
+        sim.scene().setDomain(boxLo, boxHi);
+        sim.scene().setPeriodic(true, true, true);
+        sim.scene().setGravity(Vec3::Zero());
+        sim.settings().timeStep = dt;
         const auto glass = addGlass(sim, tc);
         const Vec3 separation = Vec3(0.8, 0.5, -0.33).normalized() * (1.0 - 0.01);
         Vec3 a = middle + 0.5 * separation, b = middle - 0.5 * separation;
-        sim.domain().wrap(a);
-        sim.domain().wrap(b);
-        sim.addParticle(a, 0.5, glass, Vec3(-0.1, 0.2, 0.05), Vec3(1, -2, 0.5));
-        sim.addParticle(b, 0.5, glass, Vec3(0.05, -0.1, 0.3), Vec3(0, 3, -1));
+        sim.scene().domain().wrap(a);
+        sim.scene().domain().wrap(b);
+        sim.scene().addParticle(a, 0.5, glass, Vec3(-0.1, 0.2, 0.05), Vec3(1, -2, 0.5));
+        sim.scene().addParticle(b, 0.5, glass, Vec3(0.05, -0.1, 0.3), Vec3(0, 3, -1));
     };
     s.solveOrThrow(test::stepsWithoutFiles(dt, 1));
     EXPECT_EQ(s.step(), 1u);
     PairState state;
     for (int k = 0; k < 2; ++k) {  // by id: the slots follow the space-filling curve
-        const std::size_t slot = s.slotOf(k);
-        state.force[k] = s.particles().force[slot];
-        state.torque[k] = s.particles().torque[slot];
-        state.position[k] = s.particles().position[slot];
+        const std::size_t slot = s.scene().slotOf(k);
+        state.force[k] = s.scene().particles().force[slot];
+        state.torque[k] = s.scene().particles().torque[slot];
+        state.position[k] = s.scene().particles().position[slot];
     }
     return state;
 }
@@ -122,24 +122,24 @@ TEST(PeriodicBoundary, WrappingKeepsPositionsInBox) {
         SceneSimulation s;
         std::size_t checks = 0;
         s.setup = [&](SceneSimulation& sim) {
-            sim.setDomain(boxLo, boxHi);
-            sim.setPeriodic(true, true, true);
-            sim.setGravity(Vec3::Zero());
-            sim.setTimeStep(dt);
-            sim.addParticle(centre, 0.5, addGlass(sim, tc), velocity);
+            sim.scene().setDomain(boxLo, boxHi);
+            sim.scene().setPeriodic(true, true, true);
+            sim.scene().setGravity(Vec3::Zero());
+            sim.settings().timeStep = dt;
+            sim.scene().addParticle(centre, 0.5, addGlass(sim, tc), velocity);
         };
         s.afterStep = [&](SceneSimulation& sim) {
-            expectInsideBox(sim.particles().position[0]);
+            expectInsideBox(sim.scene().particles().position[0]);
             ++checks;
         };
         s.solveOrThrow(test::stepsWithoutFiles(dt, 200));
         EXPECT_EQ(checks, 200u);
         // It went the whole way: 200 steps of dt at this velocity, modulo the box.
         Vec3 expected = centre + 200 * dt * velocity;
-        s.domain().wrap(expected);
+        s.scene().domain().wrap(expected);
         // Each of the 200 drifts and wraps rounds a coordinate of size ~10 (1.8e-15): at most
         // a few 1e-13 in all (measured: 5e-14).
-        const double error = (s.particles().position[0] - expected).norm();
+        const double error = (s.scene().particles().position[0] - expected).norm();
         std::printf("[ measured ] wrapped flight: %.2e from the expected point\n", error);
         EXPECT_LT(error, 1e-11);
     }

@@ -17,11 +17,11 @@ const LinearSpringDashpot grainLaw = LinearSpringDashpot::fromCollision(0.005, 0
 constexpr double grainRadius = 0.5;
 
 // A sphere of radius 0.5 resting at height z on a floor z = 0 that follows `motion`, under g = 1.
-void sphereOnMovingFloor(Scene& s, const PrescribedMotion& motion, const Vec3& position) {
-    s.setGravity(Vec3(0, 0, -1));
-    const auto species = s.addSpecies("grain", unitMassDensity, grainLaw);
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), species, static_cast<int>(s.addMotion(motion)));
-    s.addParticle(position, grainRadius, species);
+void sphereOnMovingFloor(TestScene& s, const PrescribedMotion& motion, const Vec3& position) {
+    s.scene().setGravity(Vec3(0, 0, -1));
+    const auto species = s.scene().addSpecies("grain", unitMassDensity, grainLaw);
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species, static_cast<int>(s.scene().addMotion(motion)));
+    s.scene().addParticle(position, grainRadius, species);
 }
 
 }  // namespace
@@ -32,18 +32,18 @@ void sphereOnMovingFloor(Scene& s, const PrescribedMotion& motion, const Vec3& p
 TEST(PrescribedMotion, FixedParticleTurnsExactlyOnItsCircle) {
     const double w = 2, endTime = 1, dt = 1e-4;
     const Vec3 centre(1, 0, 0), start(1.5, 0.2, 0.3);
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        const auto species = s.addSpecies("grain", unitMassDensity, grainLaw);
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        const auto species = s.scene().addSpecies("grain", unitMassDensity, grainLaw);
         PrescribedMotion turn;
         turn.angularVelocity = Vec3(0, 0, w);
         turn.centre = centre;
-        s.addFixedParticle(start, 0.1, species, static_cast<int>(s.addMotion(turn)));
+        s.scene().addFixedParticle(start, 0.1, species, static_cast<int>(s.scene().addMotion(turn)));
     };
-    scene.run(dt, endTime);
+    scene.runFor(dt, endTime);
     const double angle = w * scene.time();
     const Vec3 expected = centre + Eigen::AngleAxisd(angle, Vec3::UnitZ()) * (start - centre);
-    const auto& p = scene.particles();
+    const auto& p = scene.scene().particles();
     EXPECT_NEAR((p.position[0] - expected).norm(), 0, 1e-12);
     EXPECT_NEAR((p.velocity[0] - Vec3(0, 0, w).cross(expected - centre)).norm(), 0, 1e-12);
     EXPECT_EQ(p.angularVelocity[0], Vec3(0, 0, w));
@@ -59,13 +59,13 @@ TEST(PrescribedMotion, MovingFloorCarriesASphere) {
     const double staticOverlap = sphereMass(grainRadius) / grainLaw.normalStiffness;
     PrescribedMotion lift;
     lift.velocity = Vec3(0, 0, v);
-    Scene scene;
-    scene.setup = [&](Scene& s) { sphereOnMovingFloor(s, lift, Vec3(0, 0, grainRadius - staticOverlap)); };
-    scene.run(dt, endTime);
-    const auto& p = scene.particles();
+    TestScene scene;
+    scene.setup = [&](TestScene& s) { sphereOnMovingFloor(s, lift, Vec3(0, 0, grainRadius - staticOverlap)); };
+    scene.runFor(dt, endTime);
+    const auto& p = scene.scene().particles();
     EXPECT_NEAR(p.velocity[0].z(), v, 1e-6);
-    EXPECT_NEAR(scene.walls()[0].point.z(), v * scene.time(), 1e-12);
-    EXPECT_NEAR(p.position[0].z() - scene.walls()[0].point.z(), grainRadius - staticOverlap, 1e-3 * staticOverlap);
+    EXPECT_NEAR(scene.scene().walls()[0].point.z(), v * scene.time(), 1e-12);
+    EXPECT_NEAR(p.position[0].z() - scene.scene().walls()[0].point.z(), grainRadius - staticOverlap, 1e-3 * staticOverlap);
 }
 
 // A plane wall turning about its own normal (a turntable, w along n) drags a sphere that starts at
@@ -89,19 +89,19 @@ TEST(PrescribedMotion, TurntableCarriesARollingSphereAtTwoSeventhsOfItsSpeed) {
     const Vec3 tableSpin(0, 0, w);
     PrescribedMotion turn;
     turn.angularVelocity = tableSpin;
-    Scene scene;
-    scene.setup = [&](Scene& s) { sphereOnMovingFloor(s, turn, Vec3(2, 0, grainRadius)); };
+    TestScene scene;
+    scene.setup = [&](TestScene& s) { sphereOnMovingFloor(s, turn, Vec3(2, 0, grainRadius)); };
     double worst = 0;
-    scene.afterStep = [&](Scene& s) {
+    scene.afterStep = [&](TestScene& s) {
         if (s.time() < endTime - 1) return;
-        const auto& p = s.particles();
+        const auto& p = s.scene().particles();
         const Vec3 r(p.position[0].x(), p.position[0].y(), 0);
         const Vec3 rolling = 2.0 / 7.0 * tableSpin.cross(r);
         worst = std::max(worst, (p.velocity[0] - rolling).norm() / rolling.norm());
     };
-    scene.run(dt, endTime);
+    scene.runFor(dt, endTime);
     std::printf("[ measured ] sphere on a turntable: |v - (2/7) w x r| / |(2/7) w x r| up to %.2e in the last second\n",
                 worst);
     EXPECT_LT(worst, 1e-4);
-    EXPECT_NEAR((scene.walls()[0].normal - Vec3::UnitZ()).norm(), 0, 1e-12);  // turning about itself
+    EXPECT_NEAR((scene.scene().walls()[0].normal - Vec3::UnitZ()).norm(), 0, 1e-12);  // turning about itself
 }

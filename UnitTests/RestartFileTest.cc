@@ -21,37 +21,37 @@ namespace {
 
 const double collisionTime = 0.01;
 const double timeStep = collisionTime / 50;
-const double sceneTimeStep = timeStep;  // (for classes with a timeStep() of their own)
+const double sceneTimeStep = timeStep;  // (for classes with a settings().timeStep of their own)
 
 // A scene that uses every part of the state: three species with an explicit pair law and an
 // edited mixed pair, a static floor and a lid that moves and turns, fixed particles (one moving),
 // x and y periodic, tilted gravity, non-default run settings, and a block of mobile spheres
 // pressed 1% into each other with random velocities, so that springs build up at once.
 void richScene(SceneSimulation& s) {
-    s.setTimeStep(timeStep);
-    s.setDomain(Vec3(-4, -3.5, 0), Vec3(4, 3.5, 10));
-    s.setPeriodic(true, true, false);
-    s.setGravity(Vec3(0.05, -0.02, -1));
-    s.setSkin(0.07);
+    s.settings().timeStep = timeStep;
+    s.scene().setDomain(Vec3(-4, -3.5, 0), Vec3(4, 3.5, 10));
+    s.scene().setPeriodic(true, true, false);
+    s.scene().setGravity(Vec3(0.05, -0.02, -1));
+    s.settings().skin = 0.07;
     s.settings().progressInterval = 3.5;
     s.settings().maxOverlapFraction = 0.3;
     s.settings().maxInitialOverlapFraction = 0.04;
     const auto unitMass = [](double restitution) { return LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5); };
-    const auto sand = s.addSpecies("sand", 6 / pi, unitMass(0.8).withFriction(0.4));
-    const auto glass = s.addSpecies("glass", 1.3 * 6 / pi, unitMass(0.9).withFriction(0.2));
-    const auto steel = s.addSpecies("steel", 2 * 6 / pi, unitMass(0.7).withFriction(0.3));
-    s.species().setPair(sand, steel, unitMass(0.6).withFriction(0.55));
-    s.species().pair<LinearSpringDashpot>(glass, steel).friction = 0.25;
+    const auto sand = s.scene().addSpecies("sand", 6 / pi, unitMass(0.8).withFriction(0.4));
+    const auto glass = s.scene().addSpecies("glass", 1.3 * 6 / pi, unitMass(0.9).withFriction(0.2));
+    const auto steel = s.scene().addSpecies("steel", 2 * 6 / pi, unitMass(0.7).withFriction(0.3));
+    s.scene().species().setPair(sand, steel, unitMass(0.6).withFriction(0.55));
+    s.scene().species().pair<LinearSpringDashpot>(glass, steel).friction = 0.25;
 
-    const auto lidMotion = s.addMotion({Vec3(0, 0, -0.01), Vec3(0, 0, 0.2), Vec3(0.3, -0.1, 3.0)});
-    const auto conveyor = s.addMotion({Vec3(0.1, 0, 0), Vec3::Zero(), Vec3::Zero()});
+    const auto lidMotion = s.scene().addMotion({Vec3(0, 0, -0.01), Vec3(0, 0, 0.2), Vec3(0.3, -0.1, 3.0)});
+    const auto conveyor = s.scene().addMotion({Vec3(0.1, 0, 0), Vec3::Zero(), Vec3::Zero()});
     // Neighbours 0.99 apart overlap by 1% of the radius, as do the block and the floor and lid.
     const double spacing = 0.99, bottom = 0.495, top = bottom + 2 * spacing;
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
-    s.addWall(-Vec3::UnitZ(), Vec3(0, 0, top + 0.495), glass, lidMotion);
-    s.addCylinderWall(Vec3(0.5, 0, 0), Vec3(0.1, 0, 1), 40, steel);  // a drum around it all, out of reach
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
+    s.scene().addWall(-Vec3::UnitZ(), Vec3(0, 0, top + 0.495), glass, lidMotion);
+    s.scene().addCylinderWall(Vec3(0.5, 0, 0), Vec3(0.1, 0, 1), 40, steel);  // a drum around it all, out of reach
     for (int k = 0; k < 4; ++k)  // a row of fixed spheres along one side of the block
-        s.addFixedParticle(Vec3(-1 + spacing * (k - 1), 2 + spacing, bottom), 0.5, steel, k == 3 ? conveyor : -1);
+        s.scene().addFixedParticle(Vec3(-1 + spacing * (k - 1), 2 + spacing, bottom), 0.5, steel, k == 3 ? conveyor : -1);
 
     std::mt19937_64 random(5);
     std::uniform_real_distribution<double> speed(-0.2, 0.2);
@@ -61,7 +61,7 @@ void richScene(SceneSimulation& s) {
             for (int z = 0; z < 3; ++z) {
                 const Vec3 position(-1 + spacing * x, 2 - spacing * y, bottom + spacing * z);
                 const Vec3 velocity(speed(random), speed(random), speed(random));
-                s.addParticle(position, 0.5, species[(x + y + z) % 3], velocity, 10 * velocity);
+                s.scene().addParticle(position, 0.5, species[(x + y + z) % 3], velocity, 10 * velocity);
             }
 }
 
@@ -69,10 +69,10 @@ void richScene(SceneSimulation& s) {
 // driver inserting particles would, so that its state is not the seed's.
 void runRichScene(SceneSimulation& s, const std::string& name, int steps) {
     s.setup = richScene;
-    s.setName(name);
+    s.settings().name = name;
     s.solveOrThrow({"--end-time", std::to_string(steps * timeStep), "--output-interval", std::to_string(20 * timeStep)});
     std::uniform_real_distribution<double> unit;
-    for (int k = 0; k < 1001; ++k) unit(s.random());
+    for (int k = 0; k < 1001; ++k) unit(s.scene().random());
 }
 
 std::vector<double> lawParameters(const ContactLaw& law) {
@@ -224,7 +224,7 @@ TEST(RestartFile, ReadingReplacesThePreviousState) {
     writeRestartFile(path, empty);
     SceneSimulation s;
     runRichScene(s, "restartfile_replace", 5);
-    readRestartFile(path, s.state());
+    readRestartFile(path, SimulationInternals::state(s));
     expectSameState(empty, s.state());
 }
 
@@ -244,20 +244,20 @@ TEST(RestartFile, RestartedRunContinuesBitwise) {
     test::expectSameContinuation(restarted, uninterrupted);
 }
 
-// A driver's number flags and the values it keeps (Simulation::keepInRestart) come back on
+// A driver's number flags and the values it keeps (Run::keepInRestart) come back on
 // restart; a flag given again on the command line wins; a restart file that lacks one of them is
 // refused, and names must be unique words.
 struct KeepingDriver : SceneSimulation {
     double height = 1, counted = 0;
     int layers = 2;
     KeepingDriver() {
-        addFlag("height", "a number flag", height);
-        addFlag("layers", "an integer flag", layers);
-        keepInRestart("steps.counted", counted);
+        run().addFlag("height", "a number flag", height);
+        run().addFlag("layers", "an integer flag", layers);
+        run().keepInRestart("steps.counted", counted);
         setup = [](SceneSimulation& s) {
-            s.setTimeStep(sceneTimeStep);
-            s.addSpecies("glass", 1, LinearSpringDashpot::fromCollision(collisionTime, 0.5, 0.5));
-            s.addParticle(Vec3::Zero(), 0.5, 0);
+            s.settings().timeStep = sceneTimeStep;
+            s.scene().addSpecies("glass", 1, LinearSpringDashpot::fromCollision(collisionTime, 0.5, 0.5));
+            s.scene().addParticle(Vec3::Zero(), 0.5, 0);
         };
         afterStep = [this](SceneSimulation&) { counted += 1; };
     }
@@ -283,11 +283,11 @@ TEST(RestartFile, KeepsTheDriversFlagsAndValues) {
 
     SceneSimulation other;
     double unknown = 0;
-    other.keepInRestart("not.saved", unknown);
+    other.run().keepInRestart("not.saved", unknown);
     test::expectError([&] { other.solveOrThrow({"--restart", "restartfile_kept.restart", "--files", "off"}); },
                       {"restartfile_kept.restart", "no value 'not.saved'"});
-    test::expectError([&] { other.keepInRestart("not.saved", unknown); }, {"'not.saved' is taken"});
-    test::expectError([&] { other.keepInRestart("two words", unknown); }, {"one word"});
+    test::expectError([&] { other.run().keepInRestart("not.saved", unknown); }, {"'not.saved' is taken"});
+    test::expectError([&] { other.run().keepInRestart("two words", unknown); }, {"one word"});
 }
 
 }  // namespace

@@ -35,21 +35,21 @@ double downslopeAcceleration(double angle, double friction) {
     const auto law = LinearSpringDashpot::fromCollision(collisionTime, 0.5, mass).withFriction(friction);
     // Start at the static overlap m g cos a / kn, so that the normal spring does not bounce.
     const double overlap = mass * std::cos(angle) / law.normalStiffness;
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        s.setGravity(Vec3(std::sin(angle), 0, -std::cos(angle)));
-        s.setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 1));
-        const auto species = s.addSpecies("solid", unitMassDensity, law);
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        s.addParticle(Vec3(0, 0, radius - overlap), radius, species);
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        s.scene().setGravity(Vec3(std::sin(angle), 0, -std::cos(angle)));
+        s.scene().setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 1));
+        const auto species = s.scene().addSpecies("solid", unitMassDensity, law);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        s.scene().addParticle(Vec3(0, 0, radius - overlap), radius, species);
     };
     const double start = 1, end = 4;
     double startVelocity = NAN;
-    scene.afterStep = [&](Scene& s) {
-        if (std::abs(s.time() - start) < 0.5 * timeStep) startVelocity = s.particles().velocity[0].x();
+    scene.afterStep = [&](TestScene& s) {
+        if (std::abs(s.time() - start) < 0.5 * timeStep) startVelocity = s.scene().particles().velocity[0].x();
     };
-    scene.run(timeStep, end);
-    return (scene.particles().velocity[0].x() - startVelocity) / (scene.time() - start);
+    scene.runFor(timeStep, end);
+    return (scene.scene().particles().velocity[0].x() - startVelocity) / (scene.time() - start);
 }
 
 }  // namespace

@@ -23,12 +23,12 @@ using test::SceneSimulation;
 
 // Three spheres in free flight (no gravity, apart: no contacts), of density 6/pi: mass d^3.
 void threeSpheres(SceneSimulation& s) {
-    s.setDomain(Vec3(-10, -10, -10), Vec3(10, 10, 10));
-    s.setGravity(Vec3::Zero());
-    const std::size_t sp = s.addSpecies("a", 6 / pi, LinearSpringDashpot::fromCollision(0.5, 0.5, 0.5));
-    s.addParticle(Vec3(-2, 0, 0), 0.5, sp, Vec3(1, 0, 0));   // mass 1
-    s.addParticle(Vec3(2, 1, 0), 1.0, sp, Vec3(0, -1, 0));   // mass 8
-    s.addFixedParticle(Vec3(0, 5, 0), 0.5, sp);              // fixed, mass 1
+    s.scene().setDomain(Vec3(-10, -10, -10), Vec3(10, 10, 10));
+    s.scene().setGravity(Vec3::Zero());
+    const std::size_t sp = s.scene().addSpecies("a", 6 / pi, LinearSpringDashpot::fromCollision(0.5, 0.5, 0.5));
+    s.scene().addParticle(Vec3(-2, 0, 0), 0.5, sp, Vec3(1, 0, 0));   // mass 1
+    s.scene().addParticle(Vec3(2, 1, 0), 1.0, sp, Vec3(0, -1, 0));   // mass 8
+    s.scene().addFixedParticle(Vec3(0, 5, 0), 0.5, sp);              // fixed, mass 1
 }
 
 // Every 0.1 over (0, 1] with steps of 0.01: 10 samples, one at each multiple of 0.1 (to within
@@ -46,7 +46,7 @@ struct ClockDriver : SceneSimulation {
 
 TEST(SamplingClock, OncePerIntervalAtTheMultiples) {
     ClockDriver d;
-    d.run(0.01, 1.0);
+    d.runFor(0.01, 1.0);
     ASSERT_EQ(d.sampled.size(), 10u);
     for (std::size_t k = 0; k < 10; ++k) EXPECT_NEAR(d.sampled[k], 0.1 * (k + 1), 0.005) << k;
     EXPECT_THROW(d.clock.every(0), Error);
@@ -57,9 +57,9 @@ TEST(SamplingClock, OncePerIntervalAtTheMultiples) {
 TEST(SamplingClock, KeptAcrossARestart) {
     ClockDriver first;
     first.setup = threeSpheres;
-    first.setName("clock_restart");
-    first.setTimeStep(0.01);
-    first.setEndTime(0.55);
+    first.settings().name = "clock_restart";
+    first.settings().timeStep = 0.01;
+    first.settings().endTime = 0.55;
     first.settings().progressInterval = 1e9;
     first.solveOrThrow({"--vtu", "off"});
     ASSERT_EQ(first.sampled.size(), 5u);
@@ -75,7 +75,7 @@ TEST(SamplingClock, KeptAcrossARestart) {
 TEST(ParticleSums, TotalsAndExtremaOfKnownSpheres) {
     SceneSimulation s;
     s.setup = threeSpheres;
-    s.run(1e-3, 0);
+    s.runFor(1e-3, 0);
     const Totals t = totalsOver(s);
     EXPECT_EQ(t.count, 2);
     EXPECT_DOUBLE_EQ(t.mass, 9);
@@ -98,14 +98,14 @@ TEST(ParticleSums, TotalsAndExtremaOfKnownSpheres) {
 TEST(ParticleSums, GatherOnOneRankIsACopy) {
     SceneSimulation s;
     s.setup = threeSpheres;
-    s.run(1e-3, 0.1);
+    s.runFor(1e-3, 0.1);
     const ParticleStore g = gatherParticles(s);
     ASSERT_EQ(g.size(), 2u);
     std::size_t k = 0;
-    for (std::size_t i = 0; i < s.particles().size(); ++i) {
-        if (s.particles().fixed[i]) continue;
-        EXPECT_EQ(g.id[k], s.particles().id[i]);
-        EXPECT_TRUE(test::sameBits(g.position[k], s.particles().position[i]));
+    for (std::size_t i = 0; i < s.scene().particles().size(); ++i) {
+        if (s.scene().particles().fixed[i]) continue;
+        EXPECT_EQ(g.id[k], s.scene().particles().id[i]);
+        EXPECT_TRUE(test::sameBits(g.position[k], s.scene().particles().position[i]));
         ++k;
     }
 }
@@ -125,7 +125,7 @@ TEST(RunningSums, StepIntegralOfFreeFlight) {
             };
         }
     } d;
-    d.run(0.01, 0.5);
+    d.runFor(0.01, 0.5);
     EXPECT_NEAR(d.sums.totals()[0], 0.5, 1e-12);
     EXPECT_DOUBLE_EQ(d.sums.totals()[1], 100);
 }
@@ -144,9 +144,9 @@ struct EventDriver : SceneSimulation {
 
 TEST(TimedEvents, RunOnceAndNotAgainAfterARestart) {
     EventDriver first;
-    first.setName("events_restart");
-    first.setTimeStep(0.01);
-    first.setEndTime(0.5);
+    first.settings().name = "events_restart";
+    first.settings().timeStep = 0.01;
+    first.settings().endTime = 0.5;
     first.settings().progressInterval = 1e9;
     first.solveOrThrow({"--vtu", "off"});
     ASSERT_EQ(first.ranAt.size(), 1u);
@@ -170,9 +170,9 @@ TEST(SeriesFile, TableWithNamedColumns) {
             };
         }
     } d;
-    d.setName("series_table");
+    d.settings().name = "series_table";
     d.table.setPrecision(4);
-    d.run(0.01, 0.02);
+    d.runFor(0.01, 0.02);
     std::ifstream in("series_table.table");
     std::stringstream text;
     text << in.rdbuf();

@@ -23,11 +23,11 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     // store xi = -gt vt/kt and report 1/2 kt xi^2 as elastic energy although ft = 0.)
     law.tangentialStiffness = law.tangentialDamping = law.friction = 0;
 
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        s.setGravity(Vec3(0, 0, -1));
-        s.setDomain(Vec3::Zero(), Vec3(side, side, 7 * spacing));
-        const auto species = s.addSpecies("glass", unitMassDensity, law);
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        s.scene().setGravity(Vec3(0, 0, -1));
+        s.scene().setDomain(Vec3::Zero(), Vec3(side, side, 7 * spacing));
+        const auto species = s.scene().addSpecies("glass", unitMassDensity, law);
         addOpenBox(s, side, species);
         // 45 spheres on a loose lattice, polydisperse and with random velocities so that they
         // do not stack into a crystal.
@@ -36,12 +36,12 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
         for (int k = 0; k < 5; ++k)
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i)
-                    s.addParticle(spacing * Vec3(i + 0.5, j + 0.5, k + 0.5), radiusOf(random), species,
+                    s.scene().addParticle(spacing * Vec3(i + 0.5, j + 0.5, k + 0.5), radiusOf(random), species,
                                   Vec3(velocityOf(random), velocityOf(random), velocityOf(random)));
     };
     // The elastic energy is summed from the contact records, which the kernel makes only on
     // output steps: an output interval of one step (with files off) makes every step one.
-    scene.setOutputInterval(timeStep);
+    scene.settings().outputInterval = timeStep;
     // Check every 2 tc: each collision dissipates a fraction 1 - e^2 = 75% of its relative
     // kinetic energy within tc, far more than the O((dt/tc)^2) energy error of velocity Verlet
     // at contact onset and separation, which shorter intervals could catch alone.
@@ -52,13 +52,13 @@ TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     // counts only if it exceeds this bound (measured increases: below 1e-7 of it).
     const double fluctuation = std::pow(pi * timeStep / collisionTime, 2);
     std::vector<double> totals, allowed;
-    scene.afterStep = [&](Scene& s) {
+    scene.afterStep = [&](TestScene& s) {
         if (s.step() % checkEvery != 0) return;
         const Energies e = s.energies();
         totals.push_back(e.total());
         allowed.push_back(fluctuation * e.elastic);
     };
-    scene.run(timeStep, 20);
+    scene.runFor(timeStep, 20);
 
     int increases = 0;
     double worstIncrease = 0;

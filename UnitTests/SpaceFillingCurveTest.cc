@@ -66,13 +66,13 @@ TEST(SpaceFillingCurve, ReorderingChangesSlotsNotPhysics) {
         if (reorder) s->afterStep = [&contactSteps](test::SceneSimulation& sim) { contactSteps += sim.contactSummary().contacts; };
         s->setup = [reorder](test::SceneSimulation& sim) {
             const double tc = 0.01;
-            sim.setDomain(Vec3(0, 0, 0), Vec3(5, 5, 20));
-            sim.setPeriodic(true, true, false);
-            sim.setTimeStep(tc / 50);
-            sim.setParticleReordering(reorder);
-            sim.setGravity(Vec3(0, 0, -10));
-            const auto glass = sim.addSpecies("glass", 1, LinearSpringDashpot::fromCollision(tc, 0.5, 0.5).withFriction(0.5));
-            sim.addWall(Vec3::UnitZ(), Vec3::Zero(), glass);
+            sim.scene().setDomain(Vec3(0, 0, 0), Vec3(5, 5, 20));
+            sim.scene().setPeriodic(true, true, false);
+            sim.settings().timeStep = tc / 50;
+            sim.settings().reorderParticles = reorder;
+            sim.scene().setGravity(Vec3(0, 0, -10));
+            const auto glass = sim.scene().addSpecies("glass", 1, LinearSpringDashpot::fromCollision(tc, 0.5, 0.5).withFriction(0.5));
+            sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), glass);
             // A loose lattice (gaps 0.01 .. 0.15) that collapses at once, inserted in an order far
             // from the curve's.
             std::mt19937 random(7);
@@ -80,7 +80,7 @@ TEST(SpaceFillingCurve, ReorderingChangesSlotsNotPhysics) {
             for (int ix = 0; ix < 5; ++ix)
                 for (int iy = 0; iy < 5; ++iy)
                     for (int iz = 0; iz < 6; ++iz)
-                        sim.addParticle(Vec3(4.5 - ix + 0.02 * jitter(random), 0.5 + iy + 0.02 * jitter(random),
+                        sim.scene().addParticle(Vec3(4.5 - ix + 0.02 * jitter(random), 0.5 + iy + 0.02 * jitter(random),
                                              0.5 + iz + 0.02 * jitter(random)),
                                         0.46 + 0.015 * jitter(random), glass);
         };
@@ -90,19 +90,19 @@ TEST(SpaceFillingCurve, ReorderingChangesSlotsNotPhysics) {
     const auto plain = run(false), reordered = run(true);
     std::size_t moved = 0;
     double largestDifference = 0;
-    for (std::uint64_t id = 0; id < plain->particles().size(); ++id) {
-        const std::size_t a = plain->slotOf(id), b = reordered->slotOf(id);
+    for (std::uint64_t id = 0; id < plain->scene().particles().size(); ++id) {
+        const std::size_t a = plain->scene().slotOf(id), b = reordered->scene().slotOf(id);
         EXPECT_EQ(a, id);  // without reordering the slots stay
         moved += b != id;
-        largestDifference = std::max(largestDifference, (plain->particles().position[a] -
-                                                         reordered->particles().position[b]).norm());
+        largestDifference = std::max(largestDifference, (plain->scene().particles().position[a] -
+                                                         reordered->scene().particles().position[b]).norm());
     }
-    EXPECT_GT(moved, plain->particles().size() / 2);
-    EXPECT_GT(reordered->pairList().builds, 1u);
-    EXPECT_GT(contactSteps, 2000 * plain->particles().size() / 5);  // collisions all along, not a gas
+    EXPECT_GT(moved, plain->scene().particles().size() / 2);
+    EXPECT_GT(reordered->state().pairList.builds, 1u);
+    EXPECT_GT(contactSteps, 2000 * plain->scene().particles().size() / 5);  // collisions all along, not a gas
     EXPECT_LT(largestDifference, 1e-12);
     std::printf("reordering: %zu of %zu particles moved slots, %llu list builds, %zu contacts a step on average, "
-                "largest position difference %.2e\n", moved, plain->particles().size(),
-                static_cast<unsigned long long>(reordered->pairList().builds), contactSteps / 2000,
+                "largest position difference %.2e\n", moved, plain->scene().particles().size(),
+                static_cast<unsigned long long>(reordered->state().pairList.builds), contactSteps / 2000,
                 largestDifference);
 }

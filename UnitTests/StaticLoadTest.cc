@@ -15,16 +15,16 @@ TEST(StaticLoad, ColumnOfSpheresCarriesItsWeight) {
     const auto law = LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5);  // strong damping
     const double kn = law.normalStiffness, weight = 1.0;
     const double floorOverlap = 3 * weight / kn, middleOverlap = 2 * weight / kn, topOverlap = weight / kn;
-    Scene scene;
-    scene.setup = [&](Scene& s) {
-        s.setGravity(Vec3(0, 0, -1));
-        const auto species = s.addSpecies("grain", unitMassDensity, law);
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    TestScene scene;
+    scene.setup = [&](TestScene& s) {
+        s.scene().setGravity(Vec3(0, 0, -1));
+        const auto species = s.scene().addSpecies("grain", unitMassDensity, law);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
         const double z0 = 0.5 - floorOverlap, z1 = z0 + 1 - middleOverlap, z2 = z1 + 1 - topOverlap;
-        for (double z : {z0, z1, z2}) s.addParticle(Vec3(0, 0, z), 0.5, species);
+        for (double z : {z0, z1, z2}) s.scene().addParticle(Vec3(0, 0, z), 0.5, species);
     };
-    scene.run(1e-4, 1.0);
-    const auto& p = scene.particles();
+    scene.runFor(1e-4, 1.0);
+    const auto& p = scene.scene().particles();
     EXPECT_NEAR(0.5 - p.position[0].z(), floorOverlap, 1e-6 * floorOverlap);
     EXPECT_NEAR(1 - (p.position[1].z() - p.position[0].z()), middleOverlap, 1e-6 * middleOverlap);
     EXPECT_NEAR(1 - (p.position[2].z() - p.position[1].z()), topOverlap, 1e-6 * topOverlap);

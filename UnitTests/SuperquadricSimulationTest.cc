@@ -21,28 +21,28 @@ struct PairState {
 PairState obliqueContact(bool asSuperquadrics, int steps) {
     SceneSimulation s;
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3::Zero());
-        sim.setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
+        sim.scene().setGravity(Vec3::Zero());
+        sim.scene().setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
         LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.7, 0.25).withFriction(0.4);
         law.treatContactEnds = false;  // the superquadric path steps contacts plainly (ContactForces.h)
-        const auto species = sim.addSpecies("grains", 6 / pi, law);
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, law);
         const Vec3 x0(0, 0, 0), x1(0.98, 0.1, -0.05), v0(0.3, 0.05, 0), v1(-0.2, 0, 0.1);
         const Vec3 w0(1, -2, 0.5), w1(-0.3, 0.4, 2);
         if (asSuperquadrics) {
-            const std::size_t shape = sim.addShape(Superquadric::sphere(0.5));
-            sim.addSuperquadric(x0, shape, species, Quat::Identity(), v0, w0);
-            sim.addSuperquadric(x1, shape, species, Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())), v1, w1);
+            const std::size_t shape = sim.scene().addShape(Superquadric::sphere(0.5));
+            sim.scene().addSuperquadric(x0, shape, species, Quat::Identity(), v0, w0);
+            sim.scene().addSuperquadric(x1, shape, species, Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())), v1, w1);
         } else {
-            sim.addParticle(x0, 0.5, species, v0, w0);
-            sim.addParticle(x1, 0.5, species, v1, w1);
+            sim.scene().addParticle(x0, 0.5, species, v0, w0);
+            sim.scene().addParticle(x1, 0.5, species, v1, w1);
         }
     };
-    s.setParticleReordering(false);
-    s.run(1e-4, steps * 1e-4);
+    s.settings().reorderParticles = false;
+    s.runFor(1e-4, steps * 1e-4);
     PairState out;
     for (int k = 0; k < 2; ++k) {
-        const std::size_t i = s.slotOf(static_cast<std::uint64_t>(k));
-        out.x[k] = s.particles().position[i], out.v[k] = s.particles().velocity[i], out.w[k] = s.particles().angularVelocity[i];
+        const std::size_t i = s.scene().slotOf(static_cast<std::uint64_t>(k));
+        out.x[k] = s.scene().particles().position[i], out.v[k] = s.scene().particles().velocity[i], out.w[k] = s.scene().particles().angularVelocity[i];
     }
     return out;
 }
@@ -72,13 +72,13 @@ TEST(SuperquadricSimulation, ElasticEllipsoidBouncingOnAPlaneConservesEnergy) {
     int contactSteps = 0;
     double largestSpin = 0;
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -1));
-        sim.setDomain(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+        sim.scene().setGravity(Vec3(0, 0, -1));
+        sim.scene().setDomain(Vec3(-5, -5, 0), Vec3(5, 5, 10));
         const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.25);
         const double mass = 6 / pi * shape.volume();
-        const auto species = sim.addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 1, mass));
-        sim.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        sim.addSuperquadric(Vec3(0, 0, 1.5), sim.addShape(shape), species,
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 1, mass));
+        sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        sim.scene().addSuperquadric(Vec3(0, 0, 1.5), sim.scene().addShape(shape), species,
                             Quat(Eigen::AngleAxisd(0.6, Vec3(0.3, 1, 0.2).normalized())));
     };
     s.afterStep = [&](SceneSimulation& sim) {
@@ -87,9 +87,9 @@ TEST(SuperquadricSimulation, ElasticEllipsoidBouncingOnAPlaneConservesEnergy) {
         if (std::isnan(startEnergy)) startEnergy = total;
         if (sim.contactSummary().contacts == 0) worst = std::max(worst, std::abs(total - startEnergy));
         contactSteps += sim.contactSummary().contacts > 0;
-        largestSpin = std::max(largestSpin, sim.particles().angularVelocity[0].norm());
+        largestSpin = std::max(largestSpin, sim.scene().particles().angularVelocity[0].norm());
     };
-    s.run(2.5e-5, 6);  // tc/200: the error is second order in dt (4.8e-4 at tc/50, 1.9e-4 at tc/100)
+    s.runFor(2.5e-5, 6);  // tc/200: the error is second order in dt (4.8e-4 at tc/50, 1.9e-4 at tc/100)
     std::printf("[ measured ] elastic ellipsoid on a plane: largest energy error %.2e of %.4f (%d contact steps, "
                 "spin up to %.3f)\n", worst / std::abs(startEnergy), startEnergy, contactSteps, largestSpin);
     EXPECT_GT(contactSteps, 100);
@@ -105,39 +105,39 @@ TEST(SuperquadricSimulation, CentralEllipsoidCollisionAlongAPrincipalAxisHasTheL
         const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.2);
         const double mass = 6 / pi * shape.volume();
         s.setup = [&](SceneSimulation& sim) {
-            sim.setGravity(Vec3::Zero());
-            sim.setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
-            const auto species = sim.addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, e, mass / 2));
-            const std::size_t sq = sim.addShape(shape);
-            sim.addSuperquadric(Vec3(-0.52, 0, 0), sq, species, Quat::Identity(), Vec3(1, 0, 0));
-            sim.addSuperquadric(Vec3(0.52, 0, 0), sq, species, Quat::Identity(), Vec3(-1, 0, 0));
+            sim.scene().setGravity(Vec3::Zero());
+            sim.scene().setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
+            const auto species = sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, e, mass / 2));
+            const std::size_t sq = sim.scene().addShape(shape);
+            sim.scene().addSuperquadric(Vec3(-0.52, 0, 0), sq, species, Quat::Identity(), Vec3(1, 0, 0));
+            sim.scene().addSuperquadric(Vec3(0.52, 0, 0), sq, species, Quat::Identity(), Vec3(-1, 0, 0));
         };
-        s.setParticleReordering(false);
-        s.run(5e-6, 0.05);
-        const double vAfter = s.particles().velocity[s.slotOf(1)].x() - s.particles().velocity[s.slotOf(0)].x();
+        s.settings().reorderParticles = false;
+        s.runFor(5e-6, 0.05);
+        const double vAfter = s.scene().particles().velocity[s.scene().slotOf(1)].x() - s.scene().particles().velocity[s.scene().slotOf(0)].x();
         std::printf("[ measured ] central ellipsoid collision e = %.2f: restitution %.6f\n", e, vAfter / 2);
         EXPECT_NEAR(vAfter / 2, e, 1e-3 * e);
-        EXPECT_LT(s.particles().angularVelocity[0].norm(), 1e-12);
+        EXPECT_LT(s.scene().particles().angularVelocity[0].norm(), 1e-12);
     }
 }
 
 TEST(SuperquadricSimulation, UnnormalisedOrientationInARestartIsRefused) {
     SceneSimulation s;
     s.setup = [](SceneSimulation& sim) {
-        sim.setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
-        const auto species = sim.addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.1));
-        sim.addSuperquadric(Vec3::Zero(), sim.addShape(Superquadric::ellipsoid(0.5, 0.25, 0.25)), species,
+        sim.scene().setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.1));
+        sim.scene().addSuperquadric(Vec3::Zero(), sim.scene().addShape(Superquadric::ellipsoid(0.5, 0.25, 0.25)), species,
                             Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY())));
     };
-    s.run(1e-4, 1e-3);
+    s.runFor(1e-4, 1e-3);
     writeRestartFile("unnormalised.restart", s.state());
     std::string text = readWholeFile("unnormalised.restart");
     // The orientation's w is the first number after the motion index of the particle line.
     SimulationState read;
     readRestartFile("unnormalised.restart", read);
     ASSERT_TRUE(read.particles.hasShapes());
-    EXPECT_TRUE(sameBits(read.particles.orientation, s.particles().orientation));
-    const Quat q = s.particles().orientation[0];
+    EXPECT_TRUE(sameBits(read.particles.orientation, s.scene().particles().orientation));
+    const Quat q = s.scene().particles().orientation[0];
     std::ostringstream w;
     w.precision(17);
     w << q.w();
@@ -168,18 +168,18 @@ TEST(SuperquadricSimulation, HertzianTipToTipCollisionUsesTheTipsCurvature) {
     int contactSteps = 0;
     const double dt = expected / 2000;
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3::Zero());
-        sim.setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
-        const auto species = sim.addSpecies("grains", 6 / pi, law);
-        const std::size_t sq = sim.addShape(shape);
-        sim.addSuperquadric(Vec3(-0.501, 0, 0), sq, species, Quat::Identity(), Vec3(speed / 2, 0, 0));
-        sim.addSuperquadric(Vec3(0.501, 0, 0), sq, species, Quat::Identity(), Vec3(-speed / 2, 0, 0));
+        sim.scene().setGravity(Vec3::Zero());
+        sim.scene().setDomain(Vec3(-5, -5, -5), Vec3(5, 5, 5));
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, law);
+        const std::size_t sq = sim.scene().addShape(shape);
+        sim.scene().addSuperquadric(Vec3(-0.501, 0, 0), sq, species, Quat::Identity(), Vec3(speed / 2, 0, 0));
+        sim.scene().addSuperquadric(Vec3(0.501, 0, 0), sq, species, Quat::Identity(), Vec3(-speed / 2, 0, 0));
     };
     s.afterStep = [&](SceneSimulation& sim) { contactSteps += sim.contactSummary().contacts > 0; };
-    s.setParticleReordering(false);
-    s.run(dt, 0.002 / speed + 2 * expected);
+    s.settings().reorderParticles = false;
+    s.runFor(dt, 0.002 / speed + 2 * expected);
     const double duration = contactSteps * dt;
-    const double rebound = (s.particles().velocity[s.slotOf(1)].x() - s.particles().velocity[s.slotOf(0)].x()) / speed;
+    const double rebound = (s.scene().particles().velocity[s.scene().slotOf(1)].x() - s.scene().particles().velocity[s.scene().slotOf(0)].x()) / speed;
     std::printf("[ measured ] Hertz tip to tip: duration %.6e against %.6e, rebound speed ratio %.8f\n", duration,
                 expected, rebound);
     EXPECT_NEAR(duration / expected, 1, 2e-3);
@@ -200,23 +200,23 @@ TEST(SuperquadricSimulation, SphereComesToRestOnAFixedEllipsoid) {
     const double r = 0.3, mass = 6 / pi * 4.0 / 3.0 * pi * r * r * r;
     const LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.5);
     s.setup = [&](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -1));
-        sim.setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
-        const auto species = sim.addSpecies("grains", 6 / pi, law);
-        sim.addFixedSuperquadric(Vec3::Zero(), sim.addShape(Superquadric::ellipsoid(1, 0.6, 0.4)), species);
-        sim.addParticle(Vec3(0, 0, 0.4 + r + 0.05), r, species);
+        sim.scene().setGravity(Vec3(0, 0, -1));
+        sim.scene().setDomain(Vec3(-3, -3, -3), Vec3(3, 3, 3));
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, law);
+        sim.scene().addFixedSuperquadric(Vec3::Zero(), sim.scene().addShape(Superquadric::ellipsoid(1, 0.6, 0.4)), species);
+        sim.scene().addParticle(Vec3(0, 0, 0.4 + r + 0.05), r, species);
     };
-    s.run(1e-4, 3);
-    const std::size_t sphere = s.slotOf(1), ellipsoid = s.slotOf(0);
+    s.runFor(1e-4, 3);
+    const std::size_t sphere = s.scene().slotOf(1), ellipsoid = s.scene().slotOf(0);
     const double expected = 0.4 + r - mass / law.normalStiffness;
     std::printf("[ measured ] sphere on a fixed ellipsoid: z = %.10f against %.10f, error %.2e of r, sideways %.1e, "
                 "speed %.1e\n",
-                s.particles().position[sphere].z(), expected, (s.particles().position[sphere].z() - expected) / r,
-                s.particles().position[sphere].head<2>().norm(), s.particles().velocity[sphere].norm());
-    EXPECT_NEAR(s.particles().position[sphere].z(), expected, 1e-9 * r);
-    EXPECT_LT(s.particles().position[sphere].head<2>().norm(), 1e-9);
-    EXPECT_EQ(s.particles().position[ellipsoid], Vec3::Zero());
-    EXPECT_LT(s.particles().velocity[sphere].norm(), 1e-7);
+                s.scene().particles().position[sphere].z(), expected, (s.scene().particles().position[sphere].z() - expected) / r,
+                s.scene().particles().position[sphere].head<2>().norm(), s.scene().particles().velocity[sphere].norm());
+    EXPECT_NEAR(s.scene().particles().position[sphere].z(), expected, 1e-9 * r);
+    EXPECT_LT(s.scene().particles().position[sphere].head<2>().norm(), 1e-9);
+    EXPECT_EQ(s.scene().particles().position[ellipsoid], Vec3::Zero());
+    EXPECT_LT(s.scene().particles().velocity[sphere].norm(), 1e-7);
 }
 
 // Ellipsoids settling in a box, continued from a restart file two ways: their lasting contacts
@@ -227,27 +227,27 @@ TEST(SuperquadricSimulation, SphereComesToRestOnAFixedEllipsoid) {
 TEST(SuperquadricSimulation, BatchedEllipsoidContactStepFollowsTheScalarStep) {
     SceneSimulation settling;
     settling.setup = [](SceneSimulation& sim) {
-        sim.setGravity(Vec3(0, 0, -1));
+        sim.scene().setGravity(Vec3(0, 0, -1));
         const double width = 2.2;
-        sim.setDomain(Vec3(0, 0, 0), Vec3(width, width, 6));
+        sim.scene().setDomain(Vec3(0, 0, 0), Vec3(width, width, 6));
         const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.25);
         const double mass = 6 / pi * shape.volume();
         const auto species =
-            sim.addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, mass).withFriction(0.5));
-        sim.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        sim.addWall(Vec3::UnitX(), Vec3::Zero(), species);
-        sim.addWall(-Vec3::UnitX(), Vec3(width, 0, 0), species);
-        sim.addWall(Vec3::UnitY(), Vec3::Zero(), species);
-        sim.addWall(-Vec3::UnitY(), Vec3(0, width, 0), species);
-        const std::size_t sq = sim.addShape(shape);
+            sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, mass).withFriction(0.5));
+        sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        sim.scene().addWall(Vec3::UnitX(), Vec3::Zero(), species);
+        sim.scene().addWall(-Vec3::UnitX(), Vec3(width, 0, 0), species);
+        sim.scene().addWall(Vec3::UnitY(), Vec3::Zero(), species);
+        sim.scene().addWall(-Vec3::UnitY(), Vec3(0, width, 0), species);
+        const std::size_t sq = sim.scene().addShape(shape);
         for (int n = 0; n < 20; ++n) {  // five layers of 2 x 2, tilted each its own way
             const int layer = n / 4;
             const Vec3 x(0.55 + 1.1 * (n % 2) + 0.03 * (layer % 2), 0.55 + 1.1 * ((n / 2) % 2), 0.6 + 1.05 * layer);
-            sim.addSuperquadric(x, sq, species, Quat(Eigen::AngleAxisd(0.3 + 0.7 * n, Vec3(1, 2, 3 + n).normalized())));
+            sim.scene().addSuperquadric(x, sq, species, Quat(Eigen::AngleAxisd(0.3 + 0.7 * n, Vec3(1, 2, 3 + n).normalized())));
         }
     };
-    settling.setName("ellipsoid_lanes");
-    settling.setTimeStep(1e-4);
+    settling.settings().name = "ellipsoid_lanes";
+    settling.settings().timeStep = 1e-4;
     settling.solveOrThrow({"--end-time", "12", "--output-interval", "12"});
 
     auto continued = [](const char* outputInterval, std::size_t& inLanes, std::size_t& contacts) {
@@ -260,8 +260,8 @@ TEST(SuperquadricSimulation, BatchedEllipsoidContactStepFollowsTheScalarStep) {
                         "--files", "off"});
         std::vector<std::array<Vec3, 3>> motion;  // by id: position, velocity, spin
         for (std::uint64_t id = 0; id < 20; ++id) {
-            const std::size_t i = s.slotOf(id);
-            motion.push_back({s.particles().position[i], s.particles().velocity[i], s.particles().angularVelocity[i]});
+            const std::size_t i = s.scene().slotOf(id);
+            motion.push_back({s.scene().particles().position[i], s.scene().particles().velocity[i], s.scene().particles().angularVelocity[i]});
         }
         return motion;
     };

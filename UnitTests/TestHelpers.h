@@ -17,6 +17,16 @@
 #include "Error.h"
 #include "Simulation.h"
 
+namespace talus {
+
+// What tests change that drivers may not: the state of a simulation, mutable (a list's near-list
+// fraction, a restart file read into it). Simulation names this struct its friend.
+struct SimulationInternals {
+    static SimulationState& state(Simulation& simulation) { return simulation.state_; }
+};
+
+}  // namespace talus
+
 namespace talus::test {
 
 // `count` particles in a store of their own for the passes over per-particle arrays: every
@@ -50,10 +60,10 @@ public:
     std::function<void(SceneSimulation&)> afterStep;
 
     // Runs from t = 0 to endTime with steps dt, writing no files and printing no progress.
-    void run(double timeStep, double endTime) {
-        setTimeStep(timeStep);
-        setEndTime(endTime);
-        setFileOutput(false);
+    void runFor(double timeStep, double endTime) {
+        settings().timeStep = timeStep;
+        settings().endTime = endTime;
+        settings().setFileOutput(false);
         settings().progressInterval = 1e9;
         solveOrThrow({});
     }
@@ -157,10 +167,10 @@ inline void expectSameParticles(ParticleStore a, ParticleStore b) {
 // the pairs and their histories, bitwise.
 inline void expectSameContinuation(const Simulation& restarted, const Simulation& uninterrupted) {
     EXPECT_TRUE(sameBits(restarted.time(), uninterrupted.time()));
-    expectSameParticles(restarted.particles(), uninterrupted.particles());
-    EXPECT_TRUE(restarted.pairList().pairs == uninterrupted.pairList().pairs);
-    EXPECT_TRUE(sameBits(restarted.pairList().history, uninterrupted.pairList().history));
-    EXPECT_TRUE(sameBits(restarted.pairList().wallHistory, uninterrupted.pairList().wallHistory));
+    expectSameParticles(restarted.scene().particles(), uninterrupted.scene().particles());
+    EXPECT_TRUE(restarted.state().pairList.pairs == uninterrupted.state().pairList.pairs);
+    EXPECT_TRUE(sameBits(restarted.state().pairList.history, uninterrupted.state().pairList.history));
+    EXPECT_TRUE(sameBits(restarted.state().pairList.wallHistory, uninterrupted.state().pairList.wallHistory));
 }
 
 }  // namespace talus::test

@@ -22,22 +22,22 @@ namespace {
 // The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
 // the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
 // along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
-void benchmarkChute(Scene& s, const std::string& file) {
+void benchmarkChute(TestScene& s, const std::string& file) {
     const LammpsData bed = readLammpsData(std::string(TALUS_SHARED_DIR) + "/peers/data/" + file);
     const Vec3 size = bed.hi - bed.lo;
-    s.setDomain(bed.lo, bed.lo + Vec3(size.x(), 2 * size.y(), size.z()));
-    s.setPeriodic(true, true, false);
-    s.setGravity(Vec3(std::sin(degrees(24)), 0, -std::cos(degrees(24))));
+    s.scene().setDomain(bed.lo, bed.lo + Vec3(size.x(), 2 * size.y(), size.z()));
+    s.scene().setPeriodic(true, true, false);
+    s.scene().setGravity(Vec3(std::sin(degrees(24)), 0, -std::cos(degrees(24))));
     const auto law = LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25).withFriction(0.5);
-    const auto grain = s.addSpecies("grain", unitMassDensity, law);
-    s.addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), grain);
+    const auto grain = s.scene().addSpecies("grain", unitMassDensity, law);
+    s.scene().addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), grain);
     for (int copy = 0; copy < 2; ++copy)
         for (const LammpsAtom& a : bed.atoms) {
             const Vec3 x = a.position + Vec3(0, copy * size.y(), 0);
             if (a.type == 1)
-                s.addFixedParticle(x, a.diameter / 2, grain);
+                s.scene().addFixedParticle(x, a.diameter / 2, grain);
             else
-                s.addParticle(x, a.diameter / 2, grain, a.velocity, a.angularVelocity);
+                s.scene().addParticle(x, a.diameter / 2, grain, a.velocity, a.angularVelocity);
         }
 }
 
@@ -46,12 +46,12 @@ struct Difference {
 };
 
 // The largest differences between two runs, particle by particle (by id: slots follow the order).
-Difference largestDifference(const Scene& a, const Scene& b) {
+Difference largestDifference(const TestScene& a, const TestScene& b) {
     Difference d;
-    const ParticleStore &p = a.particles(), &q = b.particles();
+    const ParticleStore &p = a.scene().particles(), &q = b.scene().particles();
     EXPECT_EQ(p.size(), q.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const std::size_t j = b.slotOf(p.id[i]);
+        const std::size_t j = b.scene().slotOf(p.id[i]);
         d.position = std::max(d.position, a.state().domain.nearestImage(p.position[i] - q.position[j]).norm());
         d.velocity = std::max(d.velocity, (p.velocity[i] - q.velocity[j]).norm());
         d.angularVelocity = std::max(d.angularVelocity, (p.angularVelocity[i] - q.angularVelocity[j]).norm());
@@ -61,10 +61,10 @@ Difference largestDifference(const Scene& a, const Scene& b) {
 
 // The slots whose position, velocity or spin differ in any bit between two runs (with the same
 // particles in the same slots; every slot if their numbers differ).
-std::uint64_t stepsInWaves(const Scene& s) { return s.integrator().statistics().waves.stepsInWaves; }
+std::uint64_t stepsInWaves(const TestScene& s) { return s.integrator().statistics().waves.stepsInWaves; }
 
-std::size_t slotsThatDiffer(const Scene& one, const Scene& other) {
-    const ParticleStore &a = one.particles(), &b = other.particles();
+std::size_t slotsThatDiffer(const TestScene& one, const TestScene& other) {
+    const ParticleStore &a = one.scene().particles(), &b = other.scene().particles();
     if (a.size() != b.size()) return std::max(a.size(), b.size());
     std::size_t differ = 0;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -76,20 +76,20 @@ std::size_t slotsThatDiffer(const Scene& one, const Scene& other) {
 void expectSameTrajectory(const std::string& file, int steps, int stripColumns, std::uint64_t leastBuilds) {
     const double dt = 1e-4;
     const int run = 1000;
-    Scene waves, single;
-    waves.setup = single.setup = [file](Scene& s) { benchmarkChute(s, file); };
-    waves.setSkin(0.2), single.setSkin(0.2);
+    TestScene waves, single;
+    waves.setup = single.setup = [file](TestScene& s) { benchmarkChute(s, file); };
+    waves.settings().skin = 0.2, single.settings().skin = 0.2;
     waves.settings().stepper.setWaves(steps, stripColumns);
-    waves.run(dt, run * dt);
-    single.run(dt, run * dt);
+    waves.runFor(dt, run * dt);
+    single.runFor(dt, run * dt);
     const Difference d = largestDifference(waves, single);
     std::printf("[ measured ] %s, waves of %d steps, strips of %d columns: %llu of %d steps in waves, %llu list builds; "
                 "largest difference from single steps: position %.2e, velocity %.2e, angular velocity %.2e\n",
                 file.c_str(), steps, stripColumns, static_cast<unsigned long long>(stepsInWaves(waves)), run,
-                static_cast<unsigned long long>(waves.pairList().builds), d.position, d.velocity,
+                static_cast<unsigned long long>(waves.state().pairList.builds), d.position, d.velocity,
                 d.angularVelocity);
     EXPECT_GT(stepsInWaves(waves), static_cast<std::uint64_t>(run / 2)) << "most steps should be in waves";
-    EXPECT_GE(waves.pairList().builds, leastBuilds) << "the test needs list builds between waves";
+    EXPECT_GE(waves.state().pairList.builds, leastBuilds) << "the test needs list builds between waves";
     EXPECT_GT(single.contactSummary().contacts, 2000u) << "and the spheres in contact";
     // Round-off grows through the collisions of 1000 steps; a pair computed at the wrong step, or
     // a particle advanced with a force missing, differs by more than 1e-6 (velocities of order 1).
@@ -112,16 +112,16 @@ TEST(Waves, EightStepsInOneStripFollowSingleStepsFromTheSettledBed) {
 // the bit, through the near list's remakes and a list build.
 TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
     const double dt = 1e-4;
-    Scene overNear, overAll;
-    overNear.setup = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
-    overAll.setup = [](Scene& s) {
+    TestScene overNear, overAll;
+    overNear.setup = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    overAll.setup = [](TestScene& s) {
         benchmarkChute(s, "chute_B_flowing.data");
-        s.state().pairList.nearSkinFraction = 0;  // (no near list)
+        SimulationInternals::state(s).pairList.nearSkinFraction = 0;  // (no near list)
     };
-    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 1000 * dt);
-    EXPECT_GT(overNear.pairList().near.makes, 2u) << "the test needs the near list remade between waves";
-    EXPECT_EQ(overAll.pairList().near.makes, 0u);
-    EXPECT_GE(overNear.pairList().builds, 3u);
+    for (TestScene* s : {&overNear, &overAll}) s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8), s->runFor(dt, 1000 * dt);
+    EXPECT_GT(overNear.state().pairList.near.makes, 2u) << "the test needs the near list remade between waves";
+    EXPECT_EQ(overAll.state().pairList.near.makes, 0u);
+    EXPECT_GE(overNear.state().pairList.builds, 3u);
     EXPECT_GT(stepsInWaves(overNear), 900u);
     EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the schedules";
@@ -132,10 +132,10 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
 // single steps until each build (980 of 1000 steps here in waves).
 TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
     const double dt = 1e-4;
-    Scene s;
-    s.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
-    s.setSkin(0.2), s.settings().stepper.setWaves(4, 8), s.run(dt, 1000 * dt);
-    EXPECT_GE(s.pairList().builds, 3u) << "the test needs list builds within the run";
+    TestScene s;
+    s.setup = [](TestScene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
+    s.settings().skin = 0.2, s.settings().stepper.setWaves(4, 8), s.runFor(dt, 1000 * dt);
+    EXPECT_GE(s.state().pairList.builds, 3u) << "the test needs list builds within the run";
     EXPECT_EQ(stepsInWaves(s), 1000u);
 }
 
@@ -143,15 +143,15 @@ TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
 // speeds): single steps then rebuild as they need, as without waves, not before every step.
 TEST(Waves, ASkinTooThinForWavesLeavesTheBuildsToSingleSteps) {
     const double dt = 1e-4;
-    Scene waves, single;
-    waves.setup = single.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
-    waves.setSkin(0.002), single.setSkin(0.002);
+    TestScene waves, single;
+    waves.setup = single.setup = [](TestScene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
+    waves.settings().skin = 0.002, single.settings().skin = 0.002;
     waves.settings().stepper.setWaves(4, 8);
-    waves.run(dt, 200 * dt);
-    single.run(dt, 200 * dt);
+    waves.runFor(dt, 200 * dt);
+    single.runFor(dt, 200 * dt);
     EXPECT_EQ(stepsInWaves(waves), 0u);
-    EXPECT_GT(single.pairList().builds, 10u) << "the test needs a skin that takes frequent builds";
-    EXPECT_LE(waves.pairList().builds, single.pairList().builds + single.pairList().builds / 10);
+    EXPECT_GT(single.state().pairList.builds, 10u) << "the test needs a skin that takes frequent builds";
+    EXPECT_LE(waves.state().pairList.builds, single.state().pairList.builds + single.state().pairList.builds / 10);
 }
 
 // A driver's hook that moves the particles by hand between waves (each by up to 0.02 along each
@@ -160,24 +160,24 @@ TEST(Waves, ASkinTooThinForWavesLeavesTheBuildsToSingleSteps) {
 // so the run follows the whole list's waves to the bit.
 TEST(Waves, OverTheNearListFollowParticlesMovedByHand) {
     const double dt = 1e-4;
-    const auto jiggle = [](Scene& s) {
+    const auto jiggle = [](TestScene& s) {
         if (s.state().step != 400) return;  // (a wave ends there: the hook runs once per wave)
         std::mt19937 random(3);
         std::uniform_real_distribution<double> within(-0.02, 0.02);
-        ParticleStore& p = s.particles();
+        ParticleStore& p = s.scene().particles();
         for (std::uint64_t id = 0; id < p.size(); ++id) {
-            const std::size_t i = s.slotOf(id);
+            const std::size_t i = s.scene().slotOf(id);
             if (!p.fixed[i]) p.position[i] += Vec3(within(random), within(random), within(random));
         }
     };
-    Scene overNear, overAll;
-    overNear.setup = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
-    overAll.setup = [](Scene& s) {
+    TestScene overNear, overAll;
+    overNear.setup = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    overAll.setup = [](TestScene& s) {
         benchmarkChute(s, "chute_B_flowing.data");
-        s.state().pairList.nearSkinFraction = 0;  // (no near list)
+        SimulationInternals::state(s).pairList.nearSkinFraction = 0;  // (no near list)
     };
-    for (Scene* s : {&overNear, &overAll})
-        s->afterStep = jiggle, s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 600 * dt);
+    for (TestScene* s : {&overNear, &overAll})
+        s->afterStep = jiggle, s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8), s->runFor(dt, 600 * dt);
     EXPECT_GT(stepsInWaves(overNear), 500u);
     EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
@@ -188,12 +188,12 @@ TEST(Waves, OverTheNearListFollowParticlesMovedByHand) {
 // wave goes on over the whole list, to the bit as the whole list's waves do.
 TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
     const double dt = 1e-4;
-    const auto scene = [](Scene& s, double nearSkinFraction) {
+    const auto scene = [](TestScene& s, double nearSkinFraction) {
         benchmarkChute(s, "chute_B_settled.data");
         s.settings().maxInitialOverlapFraction = s.settings().maxOverlapFraction = 0.5;
         // The top sphere of the bed near (5, 5); just above it (0.003 apart), the pair, one
         // above the other: the lower is driven into the bed.
-        const ParticleStore& p = s.particles();
+        const ParticleStore& p = s.scene().particles();
         std::size_t top = 0;
         for (std::size_t i = 0; i < p.size(); ++i)
             if (std::abs(p.position[i].x() - 5) < 1 && std::abs(p.position[i].y() - 5) < 1 &&
@@ -201,14 +201,14 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
                 top = i;
         const std::size_t grain = 0;  // (benchmarkChute's one species)
         const Vec3 lower = p.position[top] + Vec3(0, 0, p.radius[top] + 0.5 + 0.003);
-        s.addParticle(lower, 0.5, grain);
-        s.addParticle(lower + Vec3(0, 0, 0.8), 0.5, grain);  // (overlapping by 40% of the radius)
-        s.state().pairList.nearSkinFraction = nearSkinFraction;
+        s.scene().addParticle(lower, 0.5, grain);
+        s.scene().addParticle(lower + Vec3(0, 0, 0.8), 0.5, grain);  // (overlapping by 40% of the radius)
+        SimulationInternals::state(s).pairList.nearSkinFraction = nearSkinFraction;
     };
-    Scene overNear, overAll;
-    overNear.setup = [&](Scene& s) { scene(s, 0.01); };
-    overAll.setup = [&](Scene& s) { scene(s, 0); };
-    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 200 * dt);
+    TestScene overNear, overAll;
+    overNear.setup = [&](TestScene& s) { scene(s, 0.01); };
+    overAll.setup = [&](TestScene& s) { scene(s, 0); };
+    for (TestScene* s : {&overNear, &overAll}) s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8), s->runFor(dt, 200 * dt);
     EXPECT_GT(overNear.integrator().statistics().waves.offTheNearList, 0u) << "the test needs a wave to outrun the near list";
     EXPECT_GT(stepsInWaves(overNear), 100u);
     EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
@@ -218,7 +218,7 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
 // Strips eight columns wide per step of the wave unless a width is asked for (TimeSkewing.md
 // "Using it": waves of 8 were measured fastest in strips of 64-128 columns, slower in 32-50).
 TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
-    Scene s;
+    TestScene s;
     s.settings().stepper.setWaves(8);
     EXPECT_EQ(s.settings().stepper.stripColumns(), 64);
     s.settings().stepper.setWaves(12);
@@ -230,7 +230,7 @@ TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
 }
 
 TEST(Waves, RefuseBadSettings) {
-    Scene s;
+    TestScene s;
     expectError([&] { s.settings().stepper.setWaves(0); }, {"waves of 1 to 255 steps"});
     expectError([&] { s.settings().stepper.setWaves(4, 0); }, {"strips of waves need at least one column"});
 }
@@ -245,11 +245,11 @@ TEST(Waves, RestartedRunContinuesBitwise) {
         t << steps * dt;
         return t.str();
     };
-    const auto chute = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
-    Scene first, restarted, uninterrupted;
+    const auto chute = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    TestScene first, restarted, uninterrupted;
     first.setup = uninterrupted.setup = chute;
-    for (Scene* s : {&first, &restarted, &uninterrupted}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8);
-    first.setName("waves_restart");
+    for (TestScene* s : {&first, &restarted, &uninterrupted}) s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8);
+    first.settings().name = "waves_restart";
     first.settings().progressInterval = 1e9;
     first.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(200), "--vtu", "off", "--fstat", "off"});
     restarted.settings().progressInterval = 1e9;

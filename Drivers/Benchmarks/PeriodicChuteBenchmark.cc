@@ -48,14 +48,14 @@ public:
     int nx = 1, ny = 1, absolute = 0, plainVerlet = 0, seed = 1;
 
     PeriodicChuteBenchmark() {
-        addFlag("nx", "copies of the start bed along x", nx);
-        addFlag("ny", "copies of the start bed along y", ny);
-        addFlag("angle", "inclination in degrees", angle);
-        addFlag("absolute-damping", "1: gn = 25 for every pair; 0: gn = 50 m* (the peers' default)", absolute);
-        addFlag("plain-verlet", "1: contacts integrated as the peers do (no treatment of contact ends)", plainVerlet);
-        addTextFlag("data", "LAMMPS data file (atom style sphere) to start from", startFile);
-        addFlag("perturbation", "add random velocities up to this speed to the flowing spheres", perturbation);
-        addFlag("seed", "seed of the random velocities", seed);
+        run().addFlag("nx", "copies of the start bed along x", nx);
+        run().addFlag("ny", "copies of the start bed along y", ny);
+        run().addFlag("angle", "inclination in degrees", angle);
+        run().addFlag("absolute-damping", "1: gn = 25 for every pair; 0: gn = 50 m* (the peers' default)", absolute);
+        run().addFlag("plain-verlet", "1: contacts integrated as the peers do (no treatment of contact ends)", plainVerlet);
+        run().addTextFlag("data", "LAMMPS data file (atom style sphere) to start from", startFile);
+        run().addFlag("perturbation", "add random velocities up to this speed to the flowing spheres", perturbation);
+        run().addFlag("seed", "seed of the random velocities", seed);
         baselineMemory_ = memoryBytes("RssAnon");
     }
 
@@ -64,9 +64,9 @@ public:
         const LammpsData bed = readLammpsData(startFile);
         require(bed.types == 3, startFile + ": expected 3 atom types (base, large, small)");
         const Vec3 size = bed.hi - bed.lo;
-        setDomain(bed.lo, bed.lo + Vec3(nx * size.x(), ny * size.y(), size.z()));
-        setPeriodic(true, true, false);
-        setGravity(Vec3(std::sin(degrees(angle)), 0, -std::cos(degrees(angle))));
+        scene().setDomain(bed.lo, bed.lo + Vec3(nx * size.x(), ny * size.y(), size.z()));
+        scene().setPeriodic(true, true, false);
+        scene().setGravity(Vec3(std::sin(degrees(angle)), 0, -std::cos(degrees(angle))));
 
         // One species per atom type, with the mass of its spheres.
         std::map<int, double> massOf, densityOf;
@@ -76,7 +76,7 @@ public:
         }
         const char* names[] = {"base", "large", "small"};
         for (int type = 1; type <= 3; ++type)
-            addSpecies(names[type - 1], densityOf.at(type), contactLaw(massOf.at(type) / 2));
+            scene().addSpecies(names[type - 1], densityOf.at(type), contactLaw(massOf.at(type) / 2));
         // Pairs: the effective mass of two flowing spheres, or of the flowing one against the base.
         const auto lawFor = [&](int a, int b) {
             const double ma = massOf.at(a), mb = massOf.at(b);
@@ -85,21 +85,21 @@ public:
             return contactLaw(ma * mb / (ma + mb));
         };
         for (int a = 1; a <= 3; ++a)
-            for (int b = a; b <= 3; ++b) species().setPair(a - 1, b - 1, lawFor(a, b));
-        addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), /*base*/ 0);
+            for (int b = a; b <= 3; ++b) scene().species().setPair(a - 1, b - 1, lawFor(a, b));
+        scene().addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5), /*base*/ 0);
 
-        particles().reserve(static_cast<std::size_t>(nx) * ny * bed.atoms.size());  // no growth slack
-        random().seed(static_cast<std::uint64_t>(seed));
+        scene().particles().reserve(static_cast<std::size_t>(nx) * ny * bed.atoms.size());  // no growth slack
+        scene().random().seed(static_cast<std::uint64_t>(seed));
         std::uniform_real_distribution<double> noise(-perturbation, perturbation);
         for (int ix = 0; ix < nx; ++ix)
             for (int iy = 0; iy < ny; ++iy)
                 for (const LammpsAtom& a : bed.atoms) {
                     const Vec3 x = a.position + Vec3(ix * size.x(), iy * size.y(), 0);
                     if (a.type == 1)
-                        addFixedParticle(x, a.diameter / 2, 0);
+                        scene().addFixedParticle(x, a.diameter / 2, 0);
                     else
-                        addParticle(x, a.diameter / 2, a.type - 1,
-                                    a.velocity + Vec3(noise(random()), noise(random()), noise(random())),
+                        scene().addParticle(x, a.diameter / 2, a.type - 1,
+                                    a.velocity + Vec3(noise(scene().random()), noise(scene().random()), noise(scene().random())),
                                     a.angularVelocity);
                 }
     }
@@ -114,7 +114,7 @@ public:
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;
         // What each process counts for itself (its memory, contacts, listed pairs), and the particles.
         const std::vector<double> sums = sumOverScene(*this, {allocated, double(contactSummary().contacts),
-            double(pairList().pairs.size()), double(pairList().interiorPairs)});
+            double(state().pairList.pairs.size()), double(state().pairList.interiorPairs)});
         const double particleCount = totalsOver(*this, allParticles()).count;
         const std::vector<double> flowing = sumsOver(*this, mobileParticles(), {
             [](const ParticleStore& p, std::size_t i) { return p.velocity[i].x(); },
@@ -126,7 +126,7 @@ public:
             "%s  sweep %s  in-waves %llu\n",
             flowing[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
             sums[0] / particleCount, flowing[0] / flowing[1], sums[1], sums[2], sums[3],
-            static_cast<unsigned long long>(pairList().builds), ranks.c_str(), sweepFormName(sweepForm()),
+            static_cast<unsigned long long>(state().pairList.builds), ranks.c_str(), sweepFormName(sweepForm()),
             static_cast<unsigned long long>(integrator().statistics().waves.stepsInWaves));
     }
 
@@ -142,10 +142,10 @@ private:
 
 int main(int argc, char** argv) {
     PeriodicChuteBenchmark chute;
-    chute.setName("PeriodicChuteBenchmark");
-    chute.setTimeStep(1e-4);
-    chute.setEndTime(5);  // 50000 steps
-    chute.setSkin(0.2);   // as the peers' neighbor 0.2
-    chute.setFileOutput(false);
+    chute.settings().name = "PeriodicChuteBenchmark";
+    chute.settings().timeStep = 1e-4;
+    chute.settings().endTime = 5;  // 50000 steps
+    chute.settings().skin = 0.2;   // as the peers' neighbor 0.2
+    chute.settings().setFileOutput(false);
     return chute.solve(argc, argv);
 }

@@ -45,14 +45,14 @@ inline void addMaserChuteSpecies(Simulation& s, const std::string& contactLaw, d
                               {"base-large", base, large, mL, (dB + dL) / 2, 0.5},
                               {"base-small", base, small, mS, (dB + dS) / 2, thesis ? muLS : 0.25}};
     auto lawOf = [&](const PairType& t) { return law(t.reducedMass, t.diameter, t.friction); };
-    s.addSpecies("large", density, lawOf(pairs[0]));
-    s.addSpecies("small", density, lawOf(pairs[1]));
-    s.addSpecies("base", density, law(mL, dL, 0.5));  // (base with base: both fixed, never in contact)
+    s.scene().addSpecies("large", density, lawOf(pairs[0]));
+    s.scene().addSpecies("small", density, lawOf(pairs[1]));
+    s.scene().addSpecies("base", density, law(mL, dL, 0.5));  // (base with base: both fixed, never in contact)
     for (const PairType& t : pairs)
-        if (t.a != t.b) s.species().setPair(t.a, t.b, lawOf(t));
-    say(s, "%s: contact law %s\n", s.name().c_str(), contactLaw.c_str());
+        if (t.a != t.b) s.scene().species().setPair(t.a, t.b, lawOf(t));
+    say(s, "%s: contact law %s\n", s.settings().name.c_str(), contactLaw.c_str());
     for (const PairType& t : pairs) {
-        const auto l = std::get<LinearSpringDashpot>(s.species().pairLaw(t.a, t.b));
+        const auto l = std::get<LinearSpringDashpot>(s.scene().species().pairLaw(t.a, t.b));
         say(s, "  %-11s reduced mass %.10g  kn %.10g  gamma_n %.10g  kt %.10g  gamma_t %.10g  mu %.10g\n", t.label,
             t.reducedMass, l.normalStiffness, l.normalDamping, l.tangentialStiffness, l.tangentialDamping, l.friction);
     }

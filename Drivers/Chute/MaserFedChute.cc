@@ -39,23 +39,23 @@ public:
     enum ChuteSpecies : std::size_t { large, small, base, chuteSpeciesCount };
 
     MaserFedChute() {
-        addFlag("angle", "inclination in degrees", angle);
-        addFlag("size-ratio", "dL / dS at mean diameter 1", sizeRatio);
-        addFlag("inflow-height", "height of the flow in the maser (sets the number of spheres)", inflowHeight);
-        addFlag("maser-length", "length of the maser box along x", maserLength);
-        addFlag("chute-length", "length of the open chute downstream of the maser", chuteLength);
-        addFlag("width", "periodic width along y", width);
-        addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
-        addFlag("seed", "seed of the base and of the start positions", seed);
-        addFlag("sample-interval", "time between samples", sampleInterval);
-        addFlag("window", "samples on a plateau that make the maser's flow steady", window);
-        addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
-        addFlag("earliest-activation", "the maser is not activated before this time", earliestActivation);
-        addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
-        addFlag("segregated-start", "1: the maser's small spheres start below its large ones", segregatedStart);
-        addTextFlag("contact-law", "chapter-4 (e = 0.88, tc = 0.005 for every pair) or table-3C1 (the thesis's chapter 3)", contactLaw);
-        keepInRestart("run.activatedAt", activatedAt_);
-        keepInRestart("run.boxParticles", boxParticles_);
+        run().addFlag("angle", "inclination in degrees", angle);
+        run().addFlag("size-ratio", "dL / dS at mean diameter 1", sizeRatio);
+        run().addFlag("inflow-height", "height of the flow in the maser (sets the number of spheres)", inflowHeight);
+        run().addFlag("maser-length", "length of the maser box along x", maserLength);
+        run().addFlag("chute-length", "length of the open chute downstream of the maser", chuteLength);
+        run().addFlag("width", "periodic width along y", width);
+        run().addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
+        run().addFlag("seed", "seed of the base and of the start positions", seed);
+        run().addFlag("sample-interval", "time between samples", sampleInterval);
+        run().addFlag("window", "samples on a plateau that make the maser's flow steady", window);
+        run().addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
+        run().addFlag("earliest-activation", "the maser is not activated before this time", earliestActivation);
+        run().addFlag("latest-activation", "the maser is activated at this time if not steady before", latestActivation);
+        run().addFlag("segregated-start", "1: the maser's small spheres start below its large ones", segregatedStart);
+        run().addTextFlag("contact-law", "chapter-4 (e = 0.88, tc = 0.005 for every pair) or table-3C1 (the thesis's chapter 3)", contactLaw);
+        run().keepInRestart("run.activatedAt", activatedAt_);
+        run().keepInRestart("run.boxParticles", boxParticles_);
     }
 
     void setupInitialConditions() override {
@@ -78,7 +78,7 @@ public:
         // The maser's spheres, at rest at random places in a loose layer (packing fraction 0.2),
         // mixed, or with --segregated-start the small ones in its lower half: a steady flow is
         // segregated (large on top), and a mixed start takes hundreds of time units to get there.
-        random().seed(static_cast<std::uint64_t>(seed));
+        scene().random().seed(static_cast<std::uint64_t>(seed));
         const double solids = 0.6 * inflowHeight * maserLength * width;
         const auto largeCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dL * dL * dL)));
         const auto smallCount = static_cast<std::size_t>(std::lround(solids / 2 / (pi / 6 * dS * dS * dS)));
@@ -98,7 +98,7 @@ public:
         if (activatedAt_ < 0 || end == oldEnd) return;
         require(end > oldEnd, "--chute-length " + str(chuteLength) + " is shorter than the chute of the restart file (" +
                                   str(oldEnd - maserLength) + "): a chute can be extended, not shortened");
-        say(*this, "%s: chute extended from x = %g to %g at t = %g (%.0f base spheres added)\n", name().c_str(), oldEnd,
+        say(*this, "%s: chute extended from x = %g to %g at t = %g (%.0f base spheres added)\n", settings().name.c_str(), oldEnd,
             end, time(), continueBase(maserBase_, base, maserLength, oldEnd, end));
         outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
         maser.setChuteEnd(*this, end);
@@ -120,11 +120,11 @@ public:
                        c.chute, c.chuteMass, outlet.count(), outlet.mass(), c.front, box.segregation});
         if (activatedAt_ >= 0) return;
         const bool steady = plateau_.add(time(), {box.kineticEnergy, box.massFlux}) || plateau_.steady();
-        if (steady && time() >= earliestActivation - 0.5 * timeStep())
+        if (steady && time() >= earliestActivation - 0.5 * settings().timeStep)
             say(*this, "%s: maser flow steady (kinetic energy %.4g, mass flux %.4g on a plateau for %d samples): "
-                "activating it at t = %g\n", name().c_str(), box.kineticEnergy, box.massFlux, window, time());
-        else if (time() >= latestActivation - 0.5 * timeStep())
-            say(*this, "%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n", name().c_str(), time());
+                "activating it at t = %g\n", settings().name.c_str(), box.kineticEnergy, box.massFlux, window, time());
+        else if (time() >= latestActivation - 0.5 * settings().timeStep)
+            say(*this, "%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n", settings().name.c_str(), time());
         else
             return;
         // Phase 2, with --chute-length as it is now (a maser saved before activation feeds chutes of any length).
@@ -133,7 +133,7 @@ public:
         maser.activate(*this, end);
         activatedAt_ = time();
         say(*this, "%s: chute base of %.0f spheres up to x = %g; the first %g of the chute seeded with a copy of the "
-            "maser's %.0f spheres\n", name().c_str(), continueBase(maserBase_, base, maserLength, 0, end), end,
+            "maser's %.0f spheres\n", settings().name.c_str(), continueBase(maserBase_, base, maserLength, 0, end), end,
             maserLength, maser.seeded());
     }
 
@@ -142,24 +142,24 @@ public:
     // of `created` terms (Math/SummationRounding.h). Then the inflow's composition: the small spheres' share
     // of the created mass, against that of the mass the maser's flow carried through its face (m vx dt / L).
     void actionsAfterSolve() override {
-        if (activatedAt_ < 0) return say(*this, "%s: the maser was not activated by t = %g\n", name().c_str(), time());
+        if (activatedAt_ < 0) return say(*this, "%s: the maser was not activated by t = %g\n", settings().name.c_str(), time());
         const Census c = census();
         const double created = maser.seeded() + maser.crossings(), deleted = outlet.count();
         const double createdMass = maser.seededMass() + maser.createdMass(), accountedMass = c.chuteMass + outlet.mass();
         const bool conserved = created == c.chute + deleted && c.box == boxParticles_ &&
                                equalUpToSummationRounding(createdMass, accountedMass, created);
         say(*this, "%s: created %.0f (seeded %.0f + crossed %.0f) = in the chute %.0f + deleted %.0f; maser holds %.0f of "
-            "%.0f; created mass %.10g, in the chute + deleted %.10g (apart by %.2g): mass conserved: %s\n", name().c_str(),
+            "%.0f; created mass %.10g, in the chute + deleted %.10g (apart by %.2g): mass conserved: %s\n", settings().name.c_str(),
             created, maser.seeded(), maser.crossings(), c.chute, deleted, c.box, boxParticles_, createdMass,
             accountedMass, std::abs(createdMass - accountedMass), conserved ? "yes" : "NO");
         const std::vector<double>& carried = carried_.totals();  // (m vx dt of the large, the small; one-way pair-steps)
         const double carriedLarge = carried[0] / maserLength, carriedSmall = carried[1] / maserLength;
         say(*this, "%s: since t = %g: inflow mass large %.6g small %.6g (small share %.4f); carried by the maser's "
-            "flow: large %.6g small %.6g (small share %.4f)\n", name().c_str(), activatedAt_, maser.createdMass(large),
+            "flow: large %.6g small %.6g (small share %.4f)\n", settings().name.c_str(), activatedAt_, maser.createdMass(large),
             maser.createdMass(small), maser.createdMass(small) / std::max(1e-300, maser.createdMass()), carriedLarge,
             carriedSmall, carriedSmall / std::max(1e-300, carriedLarge + carriedSmall));
         say(*this, "%s: pairs across the maser's face beyond the one-way overlap limit (%g of the radius): %.0f "
-            "pair-steps\n", name().c_str(), OneWayPeriodicBox::reactionOverlap, carried[2]);
+            "pair-steps\n", settings().name.c_str(), OneWayPeriodicBox::reactionOverlap, carried[2]);
         requireOnAllRanks(*this, conserved, "mass is not conserved between the maser, the chute and the outlet");
     }
 
@@ -190,9 +190,9 @@ private:
 
 int main(int argc, char** argv) {
     MaserFedChute chute;
-    chute.setName("MaserFedChute");
-    chute.setTimeStep(1e-4);
-    chute.setEndTime(300);
-    chute.setOutputInterval(5);
+    chute.settings().name = "MaserFedChute";
+    chute.settings().timeStep = 1e-4;
+    chute.settings().endTime = 300;
+    chute.settings().outputInterval = 5;
     return chute.solve(argc, argv);
 }

@@ -31,20 +31,20 @@ public:
     int large = 1000, small = 2000, seed = 1, window = 200;
 
     PeriodicBidisperseChute() {
-        addFlag("angle", "inclination in degrees", angle);
-        addFlag("length", "periodic length along x", length);
-        addFlag("width", "periodic width along y", width);
-        addFlag("large", "number of large spheres (d = 1)", large);
-        addFlag("small", "number of small spheres (d = 0.7937)", small);
-        addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
-        addFlag("seed", "seed of the base and of the start positions", seed);
-        addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
-        addFlag("window", "samples on a plateau that make the flow steady", window);
-        addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
+        run().addFlag("angle", "inclination in degrees", angle);
+        run().addFlag("length", "periodic length along x", length);
+        run().addFlag("width", "periodic width along y", width);
+        run().addFlag("large", "number of large spheres (d = 1)", large);
+        run().addFlag("small", "number of small spheres (d = 0.7937)", small);
+        run().addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
+        run().addFlag("seed", "seed of the base and of the start positions", seed);
+        run().addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
+        run().addFlag("window", "samples on a plateau that make the flow steady", window);
+        run().addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
         // A restarted run goes on detecting the plateau and averaging where it stopped.
-        keepInRestart("run.steadySamples", [this] { return snapshotNumbers(steadySamples_); },
+        run().keepInRestart("run.steadySamples", [this] { return snapshotNumbers(steadySamples_); },
                       [this](const std::vector<double>& v) { steadySamples_ = snapshotsFromNumbers(v); });
-        keepInRestart("run.profile", [this] { return profile_.state(); },
+        run().keepInRestart("run.profile", [this] { return profile_.state(); },
                       [this](const std::vector<double>& v) {
                           profile_ = profileOfThisChute();  // (the flags are back already)
                           profile_.restore(v);
@@ -58,15 +58,15 @@ public:
         // The thesis's table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the others.
         const LinearSpringDashpot largeLaw{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
         const double density = 6 / pi;
-        largeSpecies_ = addSpecies("large", density, largeLaw);
-        smallSpecies_ = addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
-        applyBidisperseRule(species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
+        largeSpecies_ = scene().addSpecies("large", density, largeLaw);
+        smallSpecies_ = scene().addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
+        applyBidisperseRule(scene().species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
                                         .smallDiameter = smallDiameter, .largeCollisionTime = largeLaw.collisionTime(0.5),
                                         .restitution = largeLaw.restitution(0.5), .mixedFriction = 0.375});
         addBase(ChuteBase::disordered, baseDiameter, largeSpecies_, static_cast<std::uint64_t>(seed));
         // The spheres start at rest at random places in a loose layer above the base (packing
         // fraction about 0.2, so the insertion never jams).
-        random().seed(static_cast<std::uint64_t>(seed));
+        scene().random().seed(static_cast<std::uint64_t>(seed));
         const double volume = large * pi / 6 + small * pi / 6 * std::pow(smallDiameter, 3);
         const double top = 1 + volume / (0.2 * length * width);
         for (auto [count, species, diameter] : {std::tuple{large, largeSpecies_, 1.0}, {small, smallSpecies_, smallDiameter}})
@@ -87,17 +87,17 @@ public:
         if (!plateau_.steady()) {
             if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}))
                 say(*this, "%s: steady flow at t = %g (kinetic energy %.4g and mass flux %.4g per unit area and width "
-                            "on a plateau for %d samples)\n", name().c_str(), time(), s.kineticEnergy, s.massFlux, window);
+                            "on a plateau for %d samples)\n", settings().name.c_str(), time(), s.kineticEnergy, s.massFlux, window);
             return;
         }
         steadySamples_.push_back(s);
-        profile_.add(particles(), this);
+        profile_.add(scene().particles(), this);
     }
 
     void actionsAfterSolve() override {
         if (steadySamples_.empty()) {
             say(*this, "%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
-                        name().c_str(), time(), plateau_.samples());
+                        settings().name.c_str(), time(), plateau_.samples());
             return;
         }
         std::vector<double> velocity, height, flux, concentration;
@@ -108,8 +108,8 @@ public:
             concentration.push_back(s.smallConcentration);
         }
         const MeanAndError u = batchMean(velocity), h = batchMean(height), q = batchMean(flux);
-        profile_.write(name() + ".profile", this);
-        writeFileOnce(*this, name() + ".steady", [&](std::ostream& out) {
+        profile_.write(settings().name + ".profile", this);
+        writeFileOnce(*this, settings().name + ".steady", [&](std::ostream& out) {
             out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
                 << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";
             out << "meanVelocity " << u.mean << ' ' << u.error << "\nheight " << h.mean << ' ' << h.error
@@ -117,7 +117,7 @@ public:
         });
         say(*this, "%s: steady from t = %g; over %zu samples: mean velocity %.4f +- %.4f, height %.3f +- %.3f, "
                     "mass flux %.4f +- %.4f (NAME.steady, depth profiles in NAME.profile)\n",
-                    name().c_str(), plateau_.steadySince(), steadySamples_.size(), u.mean, u.error, h.mean, h.error,
+                    settings().name.c_str(), plateau_.steadySince(), steadySamples_.size(), u.mean, u.error, h.mean, h.error,
                     q.mean, q.error);
     }
 
@@ -136,9 +136,9 @@ private:
 
 int main(int argc, char** argv) {
     PeriodicBidisperseChute chute;
-    chute.setName("PeriodicBidisperseChute");
-    chute.setTimeStep(1e-4);
-    chute.setEndTime(1500);
-    chute.setOutputInterval(10);
+    chute.settings().name = "PeriodicBidisperseChute";
+    chute.settings().timeStep = 1e-4;
+    chute.settings().endTime = 1500;
+    chute.settings().outputInterval = 10;
     return chute.solve(argc, argv);
 }

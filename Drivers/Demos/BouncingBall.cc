@@ -12,25 +12,25 @@ class BouncingBall : public Simulation {
     double restitution_ = 0.8;
 
 public:
-    BouncingBall() { addFlag("restitution", "restitution coefficient against the floor", restitution_); }
+    BouncingBall() { run().addFlag("restitution", "restitution coefficient against the floor", restitution_); }
 
     void setupInitialConditions() override {
         const double mass = 1, collisionTime = 0.005;
         // A wall contact's reduced mass is the particle's mass.
         auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution_, mass);
-        const auto steel = addSpecies("ball", 6 / pi, law);
-        setGravity(Vec3(0, 0, -1));
-        setDomain(Vec3(-1, -1, 0), Vec3(1, 1, 3));
-        addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
-        addParticle(Vec3(0, 0, 2), 0.5, steel);
+        const auto steel = scene().addSpecies("ball", 6 / pi, law);
+        scene().setGravity(Vec3(0, 0, -1));
+        scene().setDomain(Vec3(-1, -1, 0), Vec3(1, 1, 3));
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
+        scene().addParticle(Vec3(0, 0, 2), 0.5, steel);
     }
 };
 
 int main(int argc, char** argv) {
     BouncingBall ball;
-    ball.setName("BouncingBall");
-    ball.setTimeStep(1e-4);  // tc / 50
-    ball.setEndTime(10);
-    ball.setOutputInterval(0.05);
+    ball.settings().name = "BouncingBall";
+    ball.settings().timeStep = 1e-4;  // tc / 50
+    ball.settings().endTime = 10;
+    ball.settings().outputInterval = 0.05;
     return ball.solve(argc, argv);
 }

@@ -26,11 +26,11 @@ public:
     int spheres = 0;  // 1: spheres of the same volume instead (for the cost comparison)
 
     SettlingEllipsoids() {
-        addFlag("particles", "number of particles", particleCount);
-        addFlag("width", "width of the square box", width);
-        addFlag("aspect", "ratio of the long semi-axis to the two short ones", aspect);
-        addFlag("blockiness", "e1 = e2 of the superquadric (1: ellipsoids)", blockiness);
-        addFlag("spheres", "1: spheres of the same volume instead, on the sphere path (cost comparison)", spheres);
+        run().addFlag("particles", "number of particles", particleCount);
+        run().addFlag("width", "width of the square box", width);
+        run().addFlag("aspect", "ratio of the long semi-axis to the two short ones", aspect);
+        run().addFlag("blockiness", "e1 = e2 of the superquadric (1: ellipsoids)", blockiness);
+        run().addFlag("spheres", "1: spheres of the same volume instead, on the sphere path (cost comparison)", spheres);
     }
 
     void setupInitialConditions() override {
@@ -38,43 +38,43 @@ public:
         require(aspect >= 1, "--aspect must be at least 1, got " + str(aspect));
         require(width >= 2, "--width must be at least 2, got " + str(width));
         const Superquadric shape(0.5, 0.5 / aspect, 0.5 / aspect, blockiness, blockiness);
-        const std::size_t particleShape = addShape(shape);
+        const std::size_t particleShape = scene().addShape(shape);
         const double density = 6 / pi, mass = density * shape.volume();
-        const auto grains = addSpecies("grains", density,
+        const auto grains = scene().addSpecies("grains", density,
                                        LinearSpringDashpot::fromCollision(0.005, 0.5, mass / 2).withFriction(0.5));
 
-        setGravity(Vec3(0, 0, -1));
+        scene().setGravity(Vec3(0, 0, -1));
         const double spacing = 2 * shape.boundingRadius() * 1.1;  // bounding spheres apart
         const int perLayer = static_cast<int>(std::floor(width / spacing));
         require(perLayer >= 1, "--width " + str(width) + " is narrower than one particle");
         const double height = spacing * (particleCount / (perLayer * perLayer) + 2);
-        setDomain(Vec3::Zero(), Vec3(width, width, height));
-        addWall(Vec3::UnitZ(), Vec3::Zero(), grains);        // floor
-        addWall(Vec3::UnitX(), Vec3::Zero(), grains);        // x = 0
-        addWall(-Vec3::UnitX(), Vec3(width, 0, 0), grains);  // x = width
-        addWall(Vec3::UnitY(), Vec3::Zero(), grains);        // y = 0
-        addWall(-Vec3::UnitY(), Vec3(0, width, 0), grains);  // y = width
+        scene().setDomain(Vec3::Zero(), Vec3(width, width, height));
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grains);        // floor
+        scene().addWall(Vec3::UnitX(), Vec3::Zero(), grains);        // x = 0
+        scene().addWall(-Vec3::UnitX(), Vec3(width, 0, 0), grains);  // x = width
+        scene().addWall(Vec3::UnitY(), Vec3::Zero(), grains);        // y = 0
+        scene().addWall(-Vec3::UnitY(), Vec3(0, width, 0), grains);  // y = width
 
         std::uniform_real_distribution<double> jiggle(-0.1, 0.1);
         std::normal_distribution<double> gauss;
         for (int k = 0; k < particleCount; ++k) {
             const int ix = k % perLayer, iy = (k / perLayer) % perLayer, iz = k / (perLayer * perLayer);
             const Vec3 position = Vec3(ix + 0.5, iy + 0.5, iz + 0.5) * spacing;
-            const Quat orientation = Quat(gauss(random()), gauss(random()), gauss(random()), gauss(random())).normalized();
-            const Vec3 velocity(jiggle(random()), jiggle(random()), jiggle(random()));
+            const Quat orientation = Quat(gauss(scene().random()), gauss(scene().random()), gauss(scene().random()), gauss(scene().random())).normalized();
+            const Vec3 velocity(jiggle(scene().random()), jiggle(scene().random()), jiggle(scene().random()));
             if (spheres)
-                addParticle(position, std::cbrt(shape.volume() * 3 / (4 * pi)), grains, velocity);
+                scene().addParticle(position, std::cbrt(shape.volume() * 3 / (4 * pi)), grains, velocity);
             else
-                addSuperquadric(position, particleShape, grains, orientation, velocity);
+                scene().addSuperquadric(position, particleShape, grains, orientation, velocity);
         }
     }
 };
 
 int main(int argc, char** argv) {
     SettlingEllipsoids packing;
-    packing.setName("SettlingEllipsoids");
-    packing.setTimeStep(1e-4);  // tc / 50
-    packing.setEndTime(10);
-    packing.setOutputInterval(0.5);
+    packing.settings().name = "SettlingEllipsoids";
+    packing.settings().timeStep = 1e-4;  // tc / 50
+    packing.settings().endTime = 10;
+    packing.settings().outputInterval = 0.5;
     return packing.solve(argc, argv);
 }

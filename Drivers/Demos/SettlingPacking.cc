@@ -18,8 +18,8 @@ public:
     double width = 10;  // of the square box, in mean diameters
 
     SettlingPacking() {
-        addFlag("particles", "number of spheres", particleCount);
-        addFlag("width", "width of the square box", width);
+        run().addFlag("particles", "number of spheres", particleCount);
+        run().addFlag("width", "width of the square box", width);
     }
 
     void setupInitialConditions() override {
@@ -27,34 +27,34 @@ public:
         require(width >= 2, "--width must be at least 2");
         const double unitMass = 1;  // collision parameters for two d = 1 spheres
         auto law = LinearSpringDashpot::fromCollision(0.005, 0.5, unitMass / 2).withFriction(0.5);
-        const auto grains = addSpecies("grains", 6 / pi, law);
+        const auto grains = scene().addSpecies("grains", 6 / pi, law);
 
-        setGravity(Vec3(0, 0, -1));
+        scene().setGravity(Vec3(0, 0, -1));
         const double spacing = 1.3;  // lattice spacing, above the largest diameter
         const int perLayer = static_cast<int>(std::floor(width / spacing));
         const double height = spacing * (particleCount / (perLayer * perLayer) + 2);
-        setDomain(Vec3::Zero(), Vec3(width, width, height));
-        addWall(Vec3::UnitZ(), Vec3::Zero(), grains);             // floor
-        addWall(Vec3::UnitX(), Vec3::Zero(), grains);             // x = 0
-        addWall(-Vec3::UnitX(), Vec3(width, 0, 0), grains);       // x = width
-        addWall(Vec3::UnitY(), Vec3::Zero(), grains);             // y = 0
-        addWall(-Vec3::UnitY(), Vec3(0, width, 0), grains);       // y = width
+        scene().setDomain(Vec3::Zero(), Vec3(width, width, height));
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grains);             // floor
+        scene().addWall(Vec3::UnitX(), Vec3::Zero(), grains);             // x = 0
+        scene().addWall(-Vec3::UnitX(), Vec3(width, 0, 0), grains);       // x = width
+        scene().addWall(Vec3::UnitY(), Vec3::Zero(), grains);             // y = 0
+        scene().addWall(-Vec3::UnitY(), Vec3(0, width, 0), grains);       // y = width
 
         std::uniform_real_distribution<double> diameter(0.8, 1.2), jiggle(-0.1, 0.1);
         for (int k = 0; k < particleCount; ++k) {
             const int ix = k % perLayer, iy = (k / perLayer) % perLayer, iz = k / (perLayer * perLayer);
             const Vec3 position = Vec3(ix + 0.5, iy + 0.5, iz + 0.5) * spacing + Vec3(0.1, 0.1, 0.1);
-            const Vec3 velocity(jiggle(random()), jiggle(random()), jiggle(random()));
-            addParticle(position, diameter(random()) / 2, grains, velocity);
+            const Vec3 velocity(jiggle(scene().random()), jiggle(scene().random()), jiggle(scene().random()));
+            scene().addParticle(position, diameter(scene().random()) / 2, grains, velocity);
         }
     }
 };
 
 int main(int argc, char** argv) {
     SettlingPacking packing;
-    packing.setName("SettlingPacking");
-    packing.setTimeStep(1e-4);  // about tc / 50 for the lightest pair
-    packing.setEndTime(20);
-    packing.setOutputInterval(0.5);
+    packing.settings().name = "SettlingPacking";
+    packing.settings().timeStep = 1e-4;  // about tc / 50 for the lightest pair
+    packing.settings().endTime = 20;
+    packing.settings().outputInterval = 0.5;
     return packing.solve(argc, argv);
 }

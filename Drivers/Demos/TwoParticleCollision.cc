@@ -22,24 +22,24 @@ public:
     int plainVerlet = 0;
 
     TwoParticleCollision() {
-        addFlag("restitution", "restitution coefficient e", restitution);
-        addFlag("collision-time", "collision time tc", collisionTime);
-        addFlag("gap", "initial distance between the surfaces", gap);
-        addFlag("plain-verlet", "1: integrate the contact as LAMMPS and LIGGGHTS do (no treatment of its ends)",
+        run().addFlag("restitution", "restitution coefficient e", restitution);
+        run().addFlag("collision-time", "collision time tc", collisionTime);
+        run().addFlag("gap", "initial distance between the surfaces", gap);
+        run().addFlag("plain-verlet", "1: integrate the contact as LAMMPS and LIGGGHTS do (no treatment of its ends)",
                 plainVerlet);
     }
 
     void setupInitialConditions() override {
-        setTimeStep(collisionTime / 50);  // --dt still overrides this
+        settings().timeStep = collisionTime / 50;  // --dt still overrides this
         const double reducedMass = 0.5;
         auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, reducedMass);
         law.treatContactEnds = !plainVerlet;
-        const auto glass = addSpecies("glass", 6 / pi, law);
-        setGravity(Vec3::Zero());
-        setDomain(Vec3(-2, -1, -1), Vec3(2, 1, 1));
+        const auto glass = scene().addSpecies("glass", 6 / pi, law);
+        scene().setGravity(Vec3::Zero());
+        scene().setDomain(Vec3(-2, -1, -1), Vec3(2, 1, 1));
         // Surfaces a gap apart, closing at speed 1: contact starts at t = gap exactly.
-        addParticle(Vec3(-0.5 - gap / 2, 0, 0), 0.5, glass, Vec3(0.5, 0, 0));
-        addParticle(Vec3(0.5 + gap / 2, 0, 0), 0.5, glass, Vec3(-0.5, 0, 0));
+        scene().addParticle(Vec3(-0.5 - gap / 2, 0, 0), 0.5, glass, Vec3(0.5, 0, 0));
+        scene().addParticle(Vec3(0.5 + gap / 2, 0, 0), 0.5, glass, Vec3(-0.5, 0, 0));
     }
 
     void actionsAfterTimeStep() override {
@@ -49,7 +49,7 @@ public:
             separated_ = true;
             // The overlap -gap fell from previousGap_ to gap within this step: linear interpolation.
             const double fraction = -previousGap_ / (gap - previousGap_);
-            contactEnd_ = time() - timeStep() * (1 - fraction);
+            contactEnd_ = time() - settings().timeStep * (1 - fraction);
         }
         previousGap_ = gap;
     }
@@ -78,8 +78,8 @@ private:
 
 int main(int argc, char** argv) {
     TwoParticleCollision collision;
-    collision.setName("TwoParticleCollision");
-    collision.setEndTime(0.2);
-    collision.setOutputInterval(0.002);
+    collision.settings().name = "TwoParticleCollision";
+    collision.settings().endTime = 0.2;
+    collision.settings().outputInterval = 0.002;
     return collision.solve(argc, argv);
 }

@@ -14,24 +14,24 @@
 namespace talus {
 
 RotatingDrum::RotatingDrum() {
-    addFlag("radius", "drum radius r (the thesis: 15)", radius);
-    addFlag("length", "periodic length of the drum along its axis y", length);
-    addFlag("aspect", "aspect ratio R of the ellipsoids (a = R^(2/3)/2, b = c = R^(-1/3)/2)", aspect);
-    addFlag("fill", "fraction of the drum's cross-section the bed fills, in (0, 1)", fill);
-    addFlag("particles", "number of particles, half spheres, half ellipsoids (0: from --fill)", particleCount);
-    addFlag("froude", "Froude number F = w^2 r / g of the rotation", froude);
-    addTextFlag("wall", "particles (a wrapped rough layer of d = 0.5) or smooth (the cylinder wall)", wallType);
-    addFlag("seed", "seed of the wall layer and of the insertion", seed);
-    addFlag("sample-interval", "time between the samples written to NAME.series", sampleInterval);
-    addFlag("settled-energy", "kinetic energy per particle below which the bed counts as at rest", settledEnergy);
-    addFlag("insertion-rounds", "rounds of insertion (each after the bed settled) before giving up", insertionRounds);
-    addFlag("cg-width", "width of the Lucy kernel of the mixing index", cgWidth);
+    run().addFlag("radius", "drum radius r (the thesis: 15)", radius);
+    run().addFlag("length", "periodic length of the drum along its axis y", length);
+    run().addFlag("aspect", "aspect ratio R of the ellipsoids (a = R^(2/3)/2, b = c = R^(-1/3)/2)", aspect);
+    run().addFlag("fill", "fraction of the drum's cross-section the bed fills, in (0, 1)", fill);
+    run().addFlag("particles", "number of particles, half spheres, half ellipsoids (0: from --fill)", particleCount);
+    run().addFlag("froude", "Froude number F = w^2 r / g of the rotation", froude);
+    run().addTextFlag("wall", "particles (a wrapped rough layer of d = 0.5) or smooth (the cylinder wall)", wallType);
+    run().addFlag("seed", "seed of the wall layer and of the insertion", seed);
+    run().addFlag("sample-interval", "time between the samples written to NAME.series", sampleInterval);
+    run().addFlag("settled-energy", "kinetic energy per particle below which the bed counts as at rest", settledEnergy);
+    run().addFlag("insertion-rounds", "rounds of insertion (each after the bed settled) before giving up", insertionRounds);
+    run().addFlag("cg-width", "width of the Lucy kernel of the mixing index", cgWidth);
     for (auto [key, value] : {std::pair{"targetCount", &targetCount_}, {"insertedSpheres", &insertedSpheres_},
                               {"insertedEllipsoids", &insertedEllipsoids_}, {"rounds", &rounds_}, {"angleSamples", &angleSamples_}})
-        keepInRestart(std::string("drum.") + key, *value);
+        run().keepInRestart(std::string("drum.") + key, *value);
     for (auto [key, value] : {std::pair{"lastInsertion", &lastInsertion_}, {"rotationStart", &rotationStart_},
                               {"innerRadius", &innerRadius_}, {"angleSum", &angleSum_}})
-        keepInRestart(std::string("drum.") + key, *value);
+        run().keepInRestart(std::string("drum.") + key, *value);
     series_.setPrecision(10);
 }
 
@@ -53,22 +53,22 @@ void RotatingDrum::checkFlags() const {
 
 void RotatingDrum::setupInitialConditions() {
     checkFlags();
-    random().seed(static_cast<std::uint64_t>(seed));
-    setGravity(Vec3(0, 0, -1));
-    setDomain(Vec3(-radius - 1, 0, -radius - 1), Vec3(radius + 1, length, radius + 1));
-    setPeriodic(false, true, false);
+    scene().random().seed(static_cast<std::uint64_t>(seed));
+    scene().setGravity(Vec3(0, 0, -1));
+    scene().setDomain(Vec3(-radius - 1, 0, -radius - 1), Vec3(radius + 1, length, radius + 1));
+    scene().setPeriodic(false, true, false);
     // Theory/RotatingDrum.md eq. (1): equal volumes pi/6, equal density, mass 1; tc and e for two particles (m_ij = 1/2).
     const double density = 1 / particleVolume;
     const auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5).withFriction(friction);
-    addSpecies("spheres", density, law);
-    addSpecies("ellipsoids", density, law);
-    const std::size_t wallSpecies = addSpecies("wall", density, law);
+    scene().addSpecies("spheres", density, law);
+    scene().addSpecies("ellipsoids", density, law);
+    const std::size_t wallSpecies = scene().addSpecies("wall", density, law);
     if (aspect > 1)
-        shape_ = addShape(Superquadric::ellipsoid(std::cbrt(aspect * aspect) / 2, 0.5 / std::cbrt(aspect), 0.5 / std::cbrt(aspect)));
+        shape_ = scene().addShape(Superquadric::ellipsoid(std::cbrt(aspect * aspect) / 2, 0.5 / std::cbrt(aspect), 0.5 / std::cbrt(aspect)));
     // The drum turns later (startRotation); its motion exists from the start, at rest.
-    const int motion = static_cast<int>(addMotion(PrescribedMotion{}));
+    const int motion = static_cast<int>(scene().addMotion(PrescribedMotion{}));
     if (wallType == "smooth") {
-        addCylinderWall(Vec3::Zero(), Vec3::UnitY(), radius, wallSpecies, motion);
+        scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), radius, wallSpecies, motion);
         innerRadius_ = radius;
     } else {
         addParticleWall(wallSpecies, motion);
@@ -82,7 +82,7 @@ void RotatingDrum::setupInitialConditions() {
     require(bedVolume < 0.9 * crossSection * length,
             std::to_string(targetCount_) + " particles (--particles, --fill) do not fit into the drum (their bed would fill " +
                 str(bedVolume / (crossSection * length)) + " of it); use fewer, a larger --radius or --length");
-    say(*this, "%s: drum r = %g, inner radius %.4g, length %g, %d particles (fill %.3g), aspect %g\n", name().c_str(),
+    say(*this, "%s: drum r = %g, inner radius %.4g, length %g, %d particles (fill %.3g), aspect %g\n", settings().name.c_str(),
         radius, innerRadius_, length, targetCount_, bedVolume / (crossSection * length), aspect);
     insertRemaining();
 }
@@ -92,13 +92,13 @@ void RotatingDrum::setupInitialConditions() {
 void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     Chute flat;
     flat.setChuteGeometry({.length = 2 * pi * radius, .width = length, .height = 1, .periodicEnds = true});
-    flat.addSpecies("wall", 1, LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5));
+    flat.scene().addSpecies("wall", 1, LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5));
     flat.addBase(ChuteBase::disordered, wallDiameter, 0, static_cast<std::uint64_t>(seed));
     innerRadius_ = radius;
-    for (std::size_t i = 0; i < flat.particles().size(); ++i) {
-        const Vec3& x = flat.particles().position[i];  // (all fixed: the base alone)
+    for (std::size_t i = 0; i < flat.scene().particles().size(); ++i) {
+        const Vec3& x = flat.scene().particles().position[i];  // (all fixed: the base alone)
         const double angle = x.x() / radius, r = radius + x.z();
-        addFixedParticle(Vec3(r * std::cos(angle), x.y(), r * std::sin(angle)), wallDiameter / 2, wallSpecies, motion);
+        scene().addFixedParticle(Vec3(r * std::cos(angle), x.y(), r * std::sin(angle)), wallDiameter / 2, wallSpecies, motion);
         innerRadius_ = std::min(innerRadius_, r - wallDiameter / 2);
     }
 }
@@ -116,7 +116,7 @@ int RotatingDrum::insertRemaining() {
     insertedSpheres_ = inserted[0], insertedEllipsoids_ = inserted[1];
     ++rounds_;
     lastInsertion_ = time();
-    say(*this, "%s: insertion round %d at t = %g: placed %d, %d of %d in (%d spheres, %d ellipsoids)\n", name().c_str(),
+    say(*this, "%s: insertion round %d at t = %g: placed %d, %d of %d in (%d spheres, %d ellipsoids)\n", settings().name.c_str(),
         rounds_, time(), placed, particlesInserted(), targetCount_, insertedSpheres_, insertedEllipsoids_);
     return placed;
 }
@@ -125,12 +125,12 @@ void RotatingDrum::startRotation() {
     const double w = angularSpeed();
     // Theory/RotatingDrum.md eq. (3)-(4): velocity (-w r sin th, 0, w r cos th) at angle th = atan2(Z, X) is the rotation
     // w x X with w = (0, -w, 0): the angle grows, the bottom moves towards +x.
-    motions()[0].angularVelocity = Vec3(0, -w, 0);
+    scene().motions()[0].angularVelocity = Vec3(0, -w, 0);
     // The wall moves from now on (the time loop sets these velocities from the next step).
-    ParticleStore& p = particles();
+    ParticleStore& p = scene().particles();
     forEachSelected(*this, [](const ParticleStore& q, std::size_t i) { return q.motion[i] == 0; }, [&](std::size_t i) {
-        p.velocity[i] = motions()[0].pointVelocity(p.position[i]);
-        p.angularVelocity[i] = motions()[0].angularVelocity;
+        p.velocity[i] = scene().motions()[0].pointVelocity(p.position[i]);
+        p.angularVelocity[i] = scene().motions()[0].angularVelocity;
     });
     rotationStart_ = time();
     const int missing = targetCount_ - particlesInserted();
@@ -138,7 +138,7 @@ void RotatingDrum::startRotation() {
         std::to_string(targetCount_ / 2 + targetCount_ % 2 - insertedSpheres_) + " spheres, " +
         std::to_string(targetCount_ / 2 - insertedEllipsoids_) + " ellipsoids";
     say(*this, "%s: bed at rest at t = %g (kinetic energy per particle %.3g); rotating at w = %.6g (F = %g, one turn in "
-        "%.4g)%s\n", name().c_str(), time(), bedEnergy() / particlesInserted(), w, froude, 2 * pi / w, missing ? missed.c_str() : "");
+        "%.4g)%s\n", settings().name.c_str(), time(), bedEnergy() / particlesInserted(), w, froude, 2 * pi / w, missing ? missed.c_str() : "");
 }
 
 // Mass conservation: every inserted particle is still there and inside the drum (none escaped
@@ -184,7 +184,7 @@ void RotatingDrum::writeSample() {
 void RotatingDrum::actionsAfterSolve() {
     const drum::MixingIndices mixing = mixingOf(gatherParticles(*this));
     say(*this, "%s: at t = %g after %.3g rotations: M = %.8f, S = %.8f (spheres at the %s); mean angle of repose "
-        "after the first turn %.2f degrees (%d samples); %d of %d particles in the drum\n", name().c_str(), time(),
+        "after the first turn %.2f degrees (%d samples); %d of %d particles in the drum\n", settings().name.c_str(), time(),
         rotations(), mixing.mixing, mixing.segregation, mixing.spheresAtCore ? "core" : "periphery",
         angleSamples_ > 0 ? angleSum_ / angleSamples_ : NAN, angleSamples_, particlesInserted(), targetCount_);
 }

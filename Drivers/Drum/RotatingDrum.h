@@ -48,7 +48,7 @@ public:
     RotatingDrum();
 
     // Angular speed of the drum from the Froude number, w = sqrt(F g / r).
-    double angularSpeed() const { return std::sqrt(froude * gravity().norm() / radius); }
+    double angularSpeed() const { return std::sqrt(froude * scene().gravity().norm() / radius); }
     bool rotating() const { return rotationStart_ >= 0; }
     double rotationStartTime() const { return rotationStart_; }
     // Drum turns since the rotation started.

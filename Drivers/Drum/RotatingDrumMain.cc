@@ -3,9 +3,9 @@
 
 int main(int argc, char** argv) {
     talus::RotatingDrum drum;
-    drum.setName("RotatingDrum");
-    drum.setTimeStep(talus::RotatingDrum::collisionTime / 50);  // Theory/RotatingDrum.md eq. (1): tc = 0.05
-    drum.setEndTime(400);
-    drum.setOutputInterval(10);
+    drum.settings().name = "RotatingDrum";
+    drum.settings().timeStep = talus::RotatingDrum::collisionTime / 50;  // Theory/RotatingDrum.md eq. (1): tc = 0.05
+    drum.settings().endTime = 400;
+    drum.settings().outputInterval = 10;
     return drum.solve(argc, argv);
 }

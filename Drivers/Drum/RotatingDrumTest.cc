@@ -23,10 +23,10 @@ public:
     std::function<void(CheckedDrum&)> check;
     std::function<void(CheckedDrum&)> afterSetup;
 
-    void run(std::vector<std::string> flags) {
+    void runWith(std::vector<std::string> flags) {
         flags.insert(flags.end(), {"--files", "off", "--progress-interval", "1e9"});
-        setName("RotatingDrumTest");
-        setTimeStep(collisionTime / 50);
+        settings().name = "RotatingDrumTest";
+        settings().timeStep = collisionTime / 50;
         solveOrThrow(flags);
     }
 
@@ -44,7 +44,7 @@ protected:
 std::string errorOf(const std::vector<std::string>& flags) {
     CheckedDrum drum;
     try {
-        drum.run(flags);
+        drum.runWith(flags);
     } catch (const Error& e) {
         return e.what();
     }
@@ -82,11 +82,11 @@ TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
     double worstRadiusOfBound = 0, worstSpeedOfBound = 0, worstAngleOfBound = 0;  // each error / its bound
     std::uint64_t startStep = 0, turningSteps = 0;
     drum.check = [&](CheckedDrum& d) {
-        const ParticleStore& p = d.particles();
+        const ParticleStore& p = d.scene().particles();
         const double w = d.rotating() ? d.angularSpeed() : 0;
         if (d.rotating() && startStep == 0) startStep = d.step();
         const std::uint64_t n = d.rotating() ? d.step() - startStep : 0;
-        const double turned = w * d.timeStep() * static_cast<double>(n);
+        const double turned = w * d.settings().timeStep * static_cast<double>(n);
         turningSteps = n;
         double fastest = 0;
         for (std::size_t i = 0; i < p.size(); ++i) {
@@ -111,7 +111,7 @@ TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
         }
         if (d.rotating() && restSpeed < 0) restSpeed = fastest;  // the first step of the turning drum
     };
-    drum.run({"--radius", "4", "--length", "4", "--particles", "30", "--end-time", "40"});
+    drum.runWith({"--radius", "4", "--length", "4", "--particles", "30", "--end-time", "40"});
     ASSERT_TRUE(drum.rotating());
     EXPECT_GT(drum.rotations(), 0.1);
     std::printf("[ measured ] wall after %.3f turns (%llu steps): radius drift %.2e, |speed - w r| %.2e, angle error "
@@ -128,7 +128,7 @@ TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
     EXPECT_LT(restSpeed, std::sqrt(2e-4));
     // Mass conservation: all 30 in the drum, 15 of each kind, each of mass 1 (equal volumes pi/6,
     // density 6/pi: the ellipsoid's 4/3 pi a b^2 = pi/6 R^(2/3) R^(-2/3)).
-    const ParticleStore& p = drum.particles();
+    const ParticleStore& p = drum.scene().particles();
     int spheres = 0, ellipsoids = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.fixed[i]) continue;
@@ -163,7 +163,7 @@ TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
     CheckedDrum drum;
     const double r = 4, s = 0.5, froude = 0.01;
     drum.afterSetup = [&](CheckedDrum& d) {
-        ParticleStore& p = d.particles();
+        ParticleStore& p = d.scene().particles();
         for (std::size_t i = 0; i < p.size(); ++i)
             if (!p.fixed[i]) {
                 // At the bottom, sunk into the wall by its weight m g / kn (no bounce).
@@ -176,14 +176,14 @@ TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
     const double period = 2 * pi * std::sqrt(7 * (r - s) / 5);
     drum.check = [&](CheckedDrum& d) {
         if (!d.rotating() || d.time() - d.rotationStartTime() > period / 2) return;
-        for (std::size_t i = 0; i < d.particles().size(); ++i)
-            if (!d.particles().fixed[i]) {
-                const Vec3& x = d.particles().position[i];
+        for (std::size_t i = 0; i < d.scene().particles().size(); ++i)
+            if (!d.scene().particles().fixed[i]) {
+                const Vec3& x = d.scene().particles().position[i];
                 lastPhi = std::atan2(x.x(), -x.z());
                 phiMax = std::max(phiMax, lastPhi);
             }
     };
-    drum.run({"--radius", "4", "--length", "4", "--particles", "1", "--wall", "smooth", "--froude", "0.01",
+    drum.runWith({"--radius", "4", "--length", "4", "--particles", "1", "--wall", "smooth", "--froude", "0.01",
               "--end-time", "30"});
     ASSERT_TRUE(drum.rotating());
     ASSERT_LT(drum.rotationStartTime(), 30 - period / 2);

@@ -20,12 +20,12 @@ int CylinderFilling::fillRound(Simulation& s, std::vector<int>& inserted) const 
     require(inserted.size() == kinds_.size(), "cylinder filling: one count per kind of particle");
     std::vector<double> ownRadius;
     for (const FillingKind& k : kinds_)
-        ownRadius.push_back(k.shape >= 0 ? s.shapes().at(static_cast<std::size_t>(k.shape)).boundingRadius() : k.radius);
+        ownRadius.push_back(k.shape >= 0 ? s.scene().shapes().at(static_cast<std::size_t>(k.shape)).boundingRadius() : k.radius);
     const double reach = innerRadius_ - *std::max_element(ownRadius.begin(), ownRadius.end());
     ParticleStore p = gatherParticles(s, allParticles());  // (the bounding spheres not to overlap)
     std::uniform_real_distribution<double> unit(0, 1);
     std::normal_distribution<double> gauss;
-    std::mt19937_64& random = s.random();
+    std::mt19937_64& random = s.scene().random();
     int placedInRound = 0;
     while (true) {
         std::size_t kind = kinds_.size();  // the fewest inserted below its target

@@ -22,7 +22,7 @@ class Simulation;
 struct FillingKind {
     std::size_t species = 0;
     double radius = 0.5;  // of a sphere
-    int shape = -1;       // a superquadric shape (Simulation::addShape), or -1 for a sphere
+    int shape = -1;       // a superquadric shape (Scene::addShape), or -1 for a sphere
     int target = 0;       // particles of this kind wanted in all
 };
 

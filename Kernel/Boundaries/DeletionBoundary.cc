@@ -14,15 +14,15 @@ DeletionBoundary::DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3
     // The plane too: a driver may set it from its flags in setupInitialConditions, which a
     // restarted run does not call.
     for (int a = 0; a < 3; ++a) {
-        s.keepInRestart(name + ".normal." + std::to_string(a), normal_[a]);
-        s.keepInRestart(name + ".point." + std::to_string(a), point_[a]);
+        s.run().keepInRestart(name + ".normal." + std::to_string(a), normal_[a]);
+        s.run().keepInRestart(name + ".point." + std::to_string(a), point_[a]);
     }
-    s.keepInRestart(name + ".count", count_);
-    s.keepInRestart(name + ".mass", mass_);
-    s.keepInRestart(name + ".volume", volume_);
+    s.run().keepInRestart(name + ".count", count_);
+    s.run().keepInRestart(name + ".mass", mass_);
+    s.run().keepInRestart(name + ".volume", volume_);
     for (std::size_t k = 0; k < species; ++k) {
-        s.keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
-        s.keepInRestart(name + ".volume." + std::to_string(k), speciesVolume_[k]);
+        s.run().keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
+        s.run().keepInRestart(name + ".volume." + std::to_string(k), speciesVolume_[k]);
     }
 }
 
@@ -34,7 +34,7 @@ void DeletionBoundary::setPlane(const Vec3& normal, const Vec3& point) {
 }
 
 std::size_t DeletionBoundary::apply(Simulation& s) {
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     // What this call removes: count, mass, volume, and per species mass and volume (summed over
     // the ranks on ranks, where each rank removes the particles it owns).
     const std::size_t species = speciesMass_.size();
@@ -50,7 +50,7 @@ std::size_t DeletionBoundary::apply(Simulation& s) {
             removed[3 + p.species[i]] += p.mass[i];
             removed[3 + species + p.species[i]] += volume;
         }
-        s.removeParticle(i);
+        s.scene().removeParticle(i);
     }
     const auto here = static_cast<std::size_t>(removed[0]);
     s.sumOverRanks(removed);

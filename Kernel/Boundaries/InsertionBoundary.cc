@@ -282,8 +282,8 @@ InsertionReport InsertionBoundary::fillToVolumeFraction(Simulation& s, double fr
 InsertionReport InsertionBoundary::insertAtRate(Simulation& s, double particlesPerTime) {
     require(std::isfinite(particlesPerTime) && particlesPerTime >= 0,
             "insertAtRate: rate must not be negative, got " + str(particlesPerTime));
-    const double dt = s.timeStep();
-    require(dt > 0, "insertAtRate: no time step (call setTimeStep first)");
+    const double dt = s.settings().timeStep;
+    require(dt > 0, "insertAtRate: no time step (set settings().timeStep first)");
     // Products of the step count, not a running sum of rate dt, whose rounding would lose a
     // particle whenever rate t is a whole number.
     const auto due = [&](std::uint64_t step) { return std::floor(particlesPerTime * (double(step) * dt)); };
@@ -296,10 +296,10 @@ InsertionReport InsertionBoundary::insert(Simulation& s, InsertionReport::Target
     // (setupInitialConditions runs on every rank before the scene is split, which is fine).
     require(!s.onRanks(), "insertion boundary: inserting during a run on more than one rank is not supported yet "
                           "(insert in setupInitialConditions, or run on one rank; Documentation/Parallel.md)");
-    const Domain& domain = s.domain();
+    const Domain& domain = s.scene().domain();
     for (std::size_t k = 0; k < distribution_.classes().size(); ++k) {
         const std::size_t species = distribution_.classes()[k].species;
-        require(species < s.species().size(), "size distribution: size class " + std::to_string(k) + ": species " +
+        require(species < s.scene().species().size(), "size distribution: size class " + std::to_string(k) + ": species " +
                                                   std::to_string(species) + " does not exist (add species first)");
     }
     const Region region(lo_, hi_, domain);
@@ -315,7 +315,7 @@ InsertionReport InsertionBoundary::insert(Simulation& s, InsertionReport::Target
     report.target = target;
     report.requested = requested;
     report.maxAttemptsPerParticle = maxAttempts_;
-    ParticleStore& p = s.particles();
+    ParticleStore& p = s.scene().particles();
     double largestRadius = distribution_.largestRadius(), occupied = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         largestRadius = std::max(largestRadius, p.radius[i]);
@@ -345,7 +345,7 @@ InsertionReport InsertionBoundary::insert(Simulation& s, InsertionReport::Target
         domain.wrap(x);
         if (grid.covers(x)) grid.add(x, p.radius[i]);
     }
-    std::mt19937_64& random = s.random();
+    std::mt19937_64& random = s.scene().random();
     while (reached() < requested) {
         const SizeDistribution::Draw draw = distribution_.sample(random);
         const double r = draw.radius;
@@ -354,8 +354,8 @@ InsertionReport InsertionBoundary::insert(Simulation& s, InsertionReport::Target
             ++report.attempts;
             Vec3 x = region.randomCentre(r, random);
             domain.wrap(x);
-            if (!clearOfWalls(s.walls(), x, r) || !grid.isFree(x, r)) continue;
-            const std::size_t slot = s.addParticle(x, r, draw.species, velocity_);
+            if (!clearOfWalls(s.scene().walls(), x, r) || !grid.isFree(x, r)) continue;
+            const std::size_t slot = s.scene().addParticle(x, r, draw.species, velocity_);
             grid.add(x, r);
             ++report.inserted;
             report.mass += p.mass[slot];

@@ -94,7 +94,7 @@ struct InsertionReport {
 // Inserts into the box [lo, hi]. Along an axis where the domain is periodic and the box covers
 // the whole period, centres are drawn over the whole period; along every other axis the box is
 // shrunk by the particle's radius, so that the particle lies wholly inside it. Random numbers
-// come from Simulation::random(), which the restart file stores: the same seed gives the same
+// come from Scene::random(), which the restart file stores: the same seed gives the same
 // particles. Nothing is printed; print report.describe() if you want it.
 class InsertionBoundary {
 public:

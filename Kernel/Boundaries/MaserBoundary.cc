@@ -10,17 +10,17 @@ namespace talus {
 MaserBoundary::MaserBoundary(Simulation& s, double lo, double hi, std::size_t species, const std::string& name)
     : speciesCount_(species, 0), speciesMass_(species, 0) {
     setBox(lo, hi);
-    s.addBoundary(*this);
-    s.keepInRestart(name + ".lo", lo_);  // (a driver sets the box in its set-up, which a restart skips)
-    s.keepInRestart(name + ".hi", hi_);
-    s.keepInRestart(name + ".crossings", crossings_);
-    s.keepInRestart(name + ".mass", mass_);
-    s.keepInRestart(name + ".backward", backward_);
-    s.keepInRestart(name + ".seeded", seeded_);
-    s.keepInRestart(name + ".seededMass", seededMass_);
+    s.scene().addBoundary(*this);
+    s.run().keepInRestart(name + ".lo", lo_);  // (a driver sets the box in its set-up, which a restart skips)
+    s.run().keepInRestart(name + ".hi", hi_);
+    s.run().keepInRestart(name + ".crossings", crossings_);
+    s.run().keepInRestart(name + ".mass", mass_);
+    s.run().keepInRestart(name + ".backward", backward_);
+    s.run().keepInRestart(name + ".seeded", seeded_);
+    s.run().keepInRestart(name + ".seededMass", seededMass_);
     for (std::size_t k = 0; k < species; ++k) {
-        s.keepInRestart(name + ".crossings." + std::to_string(k), speciesCount_[k]);
-        s.keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
+        s.run().keepInRestart(name + ".crossings." + std::to_string(k), speciesCount_[k]);
+        s.run().keepInRestart(name + ".mass." + std::to_string(k), speciesMass_[k]);
     }
 }
 
@@ -33,29 +33,29 @@ void MaserBoundary::setBox(double lo, double hi) {
 
 std::size_t MaserBoundary::maserSpecies(Simulation& s, std::size_t chuteSpecies) {
     require(!active(s), "maser: add its species before activating it");
-    require(chuteSpecies < s.species().size(),
+    require(chuteSpecies < s.scene().species().size(),
             "maser: chute species " + std::to_string(chuteSpecies) + " does not exist");
-    const std::size_t copy = s.species().addCopy(chuteSpecies, "maser-" + s.species()[chuteSpecies].name);
-    OneWayPeriodicBox& box = s.state().domain.oneWay;
+    const std::size_t copy = s.scene().species().addCopy(chuteSpecies, "maser-" + s.scene().species()[chuteSpecies].name);
+    OneWayPeriodicBox& box = s.scene().oneWayBox();
     require(box.outflowSpecies.empty() || (box.lo == lo_ && box.hi == hi_), "maser: the box moved after its species were added");
     box.lo = lo_;
     box.hi = hi_;
-    box.outflowSpecies.resize(s.species().size(), -1);
+    box.outflowSpecies.resize(s.scene().species().size(), -1);
     box.outflowSpecies[copy] = static_cast<std::int32_t>(chuteSpecies);
     return copy;
 }
 
-bool MaserBoundary::active(const Simulation& s) const { return s.domain().oneWay.active; }
+bool MaserBoundary::active(const Simulation& s) const { return s.scene().domain().oneWay.active; }
 
 void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
     require(!active(s), "maser: activated twice");
-    OneWayPeriodicBox& box = s.state().domain.oneWay;
+    OneWayPeriodicBox& box = s.scene().oneWayBox();
     require(box.lo == lo_ && box.hi == hi_, "maser: no maser species (call maserSpecies before activating)");
-    require(s.domain().lo.x() == lo_,
-            "maser: the domain must start at the box's upstream face x = " + str(lo_) + ", not " + str(s.domain().lo.x()));
+    require(s.scene().domain().lo.x() == lo_,
+            "maser: the domain must start at the box's upstream face x = " + str(lo_) + ", not " + str(s.scene().domain().lo.x()));
     require(std::isfinite(chuteEnd) && chuteEnd > hi_,
             "maser: the chute must end downstream of the box (x = " + str(hi_) + "), got " + str(chuteEnd));
-    const ParticleStore& p = s.particles();
+    const ParticleStore& p = s.scene().particles();
     double mobile = 0, largest = 0;
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (!box.isMember(p.species[i])) continue;
@@ -79,7 +79,7 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
             if (p.fixed[i] || !box.isMember(p.species[i])) continue;
             const Vec3 x = p.position[i] + Vec3(hi_ - lo_, 0, 0), v = p.velocity[i], w = p.angularVelocity[i];
             const std::size_t copy =
-                s.addParticle(x, p.radius[i], static_cast<std::size_t>(box.outflowSpecies[p.species[i]]), v, w);
+                s.scene().addParticle(x, p.radius[i], static_cast<std::size_t>(box.outflowSpecies[p.species[i]]), v, w);
             seeded[0] += 1;
             seeded[1] += p.mass[copy];
         }
@@ -88,23 +88,23 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
         seededMass_ += seeded[1];
     }
     setChuteEnd(s, chuteEnd);
-    s.setPeriodic(false, s.domain().periodic[1], s.domain().periodic[2]);
+    s.scene().setPeriodic(false, s.scene().domain().periodic[1], s.scene().domain().periodic[2]);
 }
 
 void MaserBoundary::setChuteEnd(Simulation& s, double chuteEnd) const {
     require(active(s), "maser: the chute's end is set at activation or after");
     require(std::isfinite(chuteEnd) && chuteEnd > hi_,
             "maser: the chute must end downstream of the box (x = " + str(hi_) + "), got " + str(chuteEnd));
-    Vec3 hi = s.domain().hi;
+    Vec3 hi = s.scene().domain().hi;
     hi.x() = chuteEnd;
-    s.setDomain(s.domain().lo, hi);
+    s.scene().setDomain(s.scene().domain().lo, hi);
 }
 
 void MaserBoundary::afterDrift(Simulation& s) {
-    const OneWayPeriodicBox& box = s.domain().oneWay;
+    const OneWayPeriodicBox& box = s.scene().domain().oneWay;
     if (!box.active) return;
     const double length = box.length();
-    ParticleStore& p = s.particles();
+    ParticleStore& p = s.scene().particles();
     // What this step added to the totals: crossings, their mass, backward crossings, and per
     // chute species the count and mass (summed over the ranks on ranks).
     const std::size_t species = speciesCount_.size();
@@ -116,7 +116,7 @@ void MaserBoundary::afterDrift(Simulation& s) {
         if (x >= box.hi) {
             const auto chuteSpecies = static_cast<std::size_t>(box.outflowSpecies[p.species[i]]);
             const std::size_t copy =
-                s.addParticle(p.position[i], p.radius[i], chuteSpecies, p.velocity[i], p.angularVelocity[i]);
+                s.scene().addParticle(p.position[i], p.radius[i], chuteSpecies, p.velocity[i], p.angularVelocity[i]);
             p.force[copy] = p.force[i];  // the last step's force, which the next contact forces start from
             added[0] += 1;
             added[1] += p.mass[copy];
@@ -124,12 +124,12 @@ void MaserBoundary::afterDrift(Simulation& s) {
                 added[3 + chuteSpecies] += 1;
                 added[3 + species + chuteSpecies] += p.mass[copy];
             }
-            s.moveParticleBy(i, Vec3(-length, 0, 0));
+            s.scene().moveParticleBy(i, Vec3(-length, 0, 0));
         } else if (x < box.lo - 2 * p.radius[i]) {
             // A diameter behind the upstream face, not at it: a particle just moved back from the
             // downstream face meets the particles in front of it there and may be pushed back a
             // little; moved forward at once it would land on its own copy.
-            s.moveParticleBy(i, Vec3(length, 0, 0));
+            s.scene().moveParticleBy(i, Vec3(length, 0, 0));
             added[2] += 1;
         }
     }

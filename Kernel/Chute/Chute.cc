@@ -66,11 +66,11 @@ void Chute::setChuteAngle(double degreesAngle) {
     require(std::isfinite(degreesAngle) && degreesAngle > -90 && degreesAngle < 90,
             "chute angle (--angle) must lie in (-90, 90) degrees, got " + str(degreesAngle));
     angle_ = degreesAngle;
-    setGravity(gravityMagnitude_ * Vec3(std::sin(degrees(angle_)), 0, -std::cos(degrees(angle_))));
+    scene().setGravity(gravityMagnitude_ * Vec3(std::sin(degrees(angle_)), 0, -std::cos(degrees(angle_))));
 }
 
 double Chute::chuteAngle() const {
-    const Vec3& g = gravity();
+    const Vec3& g = scene().gravity();
     return std::atan2(g.x(), -g.z()) * 180 / pi;
 }
 
@@ -86,8 +86,8 @@ void Chute::setChuteGeometry(const ChuteGeometry& geometry) {
                 str(geometry.width) + ", " + str(geometry.height));
     geometry_ = geometry;
     geometrySet_ = true;
-    setDomain(Vec3(0, 0, -1), Vec3(geometry.length, geometry.width, geometry.height));
-    setPeriodic(geometry.periodicEnds, true, false);
+    scene().setDomain(Vec3(0, 0, -1), Vec3(geometry.length, geometry.width, geometry.height));
+    scene().setPeriodic(geometry.periodicEnds, true, false);
 }
 
 std::size_t Chute::addBase(ChuteBase type, double diameter, std::size_t species, std::uint64_t seed,
@@ -98,9 +98,9 @@ std::size_t Chute::addBase(ChuteBase type, double diameter, std::size_t species,
     require(diameter <= geometry_.length && diameter <= geometry_.width,
             "chute base diameter " + str(diameter) + " is larger than the chute");
     // The domain reaches one diameter below the base, for output.
-    setDomain(Vec3(0, 0, -diameter), Vec3(geometry_.length, geometry_.width, geometry_.height));
+    scene().setDomain(Vec3(0, 0, -diameter), Vec3(geometry_.length, geometry_.width, geometry_.height));
     if (type == ChuteBase::flat) {
-        addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
         return 0;
     }
     std::vector<Vec3> centres;
@@ -110,11 +110,11 @@ std::size_t Chute::addBase(ChuteBase type, double diameter, std::size_t species,
         for (int ix = 0; ix < nx; ++ix)
             for (int iy = 0; iy < ny; ++iy) centres.emplace_back((ix + 0.5) * dx, (iy + 0.5) * dy, 0);
     } else {
-        centres = disorderedLayer(domain(), diameter, roughness * diameter, seed);
+        centres = disorderedLayer(scene().domain(), diameter, roughness * diameter, seed);
     }
-    for (const Vec3& x : centres) addFixedParticle(x, diameter / 2, species);
+    for (const Vec3& x : centres) scene().addFixedParticle(x, diameter / 2, species);
     // The safety floor: below every base particle.
-    addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5 * (1 + roughness) * diameter), species);
+    scene().addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5 * (1 + roughness) * diameter), species);
     return centres.size();
 }
 
@@ -122,11 +122,11 @@ double Chute::continueBase(std::size_t from, std::size_t to, double period, doub
     require(period > 0, "continueBase: the period must be positive");
     double added = 0;
     forEachSelected(*this, ofSpecies(from), [&](std::size_t i) {
-        if (!particles().fixed[i]) return;
-        const Vec3 x = particles().position[i];
-        const double r = particles().radius[i];
+        if (!scene().particles().fixed[i]) return;
+        const Vec3 x = scene().particles().position[i];
+        const double r = scene().particles().radius[i];
         for (int k = 1; x.x() + k * period < xTo; ++k)
-            if (x.x() + k * period >= xFrom) addFixedParticle(x + Vec3(k * period, 0, 0), r, to), ++added;
+            if (x.x() + k * period >= xFrom) scene().addFixedParticle(x + Vec3(k * period, 0, 0), r, to), ++added;
     });
     return sumOverRanks(added);
 }

@@ -61,7 +61,7 @@ public:
     // particles of species `to` (a maser's base laid along the chute it feeds). Each rank copies
     // the particles it owns. Returns the number of copies in the whole scene.
     // A start configuration: `count` spheres of the species and radius, at rest at random places
-    // in the box [lo, hi] (Boundaries/InsertionBoundary.h, random numbers from random()); prints
+    // in the box [lo, hi] (Boundaries/InsertionBoundary.h, random numbers from scene().random()); prints
     // the insertion's report once and stops with an error naming `what` unless all were placed.
     void insertAtRest(std::size_t count, std::size_t species, double radius, const Vec3& lo, const Vec3& hi,
                       const std::string& what);

@@ -70,7 +70,7 @@ ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, 
 
 ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies, double xMin,
                            double xMax) {
-    std::vector<double> sum = chuteSums(s.particles(), smallSpecies, xMin, xMax);
+    std::vector<double> sum = chuteSums(s.scene().particles(), smallSpecies, xMin, xMax);
     s.sumOverRanks(sum);
     return snapshotOf(sum, length, width, s.time());
 }

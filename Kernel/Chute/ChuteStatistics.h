@@ -35,7 +35,7 @@ struct ChuteSnapshot {
 // of the region measured.
 ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, std::size_t smallSpecies, double time,
                            double xMin = -INFINITY, double xMax = INFINITY);
-// Snapshots as a list of numbers and back (for a restart file: Simulation::keepInRestart).
+// Snapshots as a list of numbers and back (for a restart file: Run::keepInRestart).
 std::vector<double> snapshotNumbers(const std::vector<ChuteSnapshot>& snapshots);
 std::vector<ChuteSnapshot> snapshotsFromNumbers(const std::vector<double>& numbers);
 // The same over the particles of every rank of a simulation (all ranks call it together; on one
@@ -67,7 +67,7 @@ public:
     // writes.
     void write(const std::string& path, const Simulation* s = nullptr) const;
     std::size_t samples() const { return samples_; }
-    // The totals as numbers, for a restart file (Simulation::keepInRestart), and back.
+    // The totals as numbers, for a restart file (Run::keepInRestart), and back.
     std::vector<double> state() const;
     void restore(const std::vector<double>& state);
 

@@ -11,7 +11,7 @@ namespace talus {
 
 SeriesFile::SeriesFile(Simulation& simulation, std::string suffix, std::string header)
     : simulation_(simulation), suffix_(std::move(suffix)), header_(std::move(header)) {
-    simulation_.keepInRestart("file." + suffix_, [this] { return save(); },
+    simulation_.run().keepInRestart("file." + suffix_, [this] { return save(); },
                               [this](const std::vector<double>& saved) { restore(saved); });
 }
 
@@ -56,7 +56,7 @@ SeriesFile::~SeriesFile() {
 }
 
 void SeriesFile::open() {
-    path_ = simulation_.name() + "." + suffix_;
+    path_ = simulation_.settings().name + "." + suffix_;
     if (restarted_) cutBackToRestartPoint(path_, restartBytes_);  // lines after the restart point go
     errno = 0;
     file_ = std::fopen(path_.c_str(), restarted_ ? "ab" : "wb");

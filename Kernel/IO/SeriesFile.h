@@ -1,6 +1,6 @@
 // A driver's own time series, NAME.SUFFIX (a header line, then one line per sample), that a
 // restarted run continues exactly, as OutputFiles continues .data: at every saved frame the
-// file is synced to the disk and its size kept in the restart file (Simulation::keepInRestart,
+// file is synced to the disk and its size kept in the restart file (Run::keepInRestart,
 // value "file.SUFFIX"); a restarted run cuts it back to that size before it appends, dropping the
 // lines a killed run wrote after its restart point (the restarted run writes them again). A
 // fresh run starts the file anew. Only rank 0 writes: the values given are whole-scene numbers

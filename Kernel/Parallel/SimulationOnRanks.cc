@@ -10,6 +10,7 @@
 #include "IO/OutputFiles.h"
 #include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
+#include "Boundaries/Boundary.h"
 #include "Simulation.h"
 
 namespace talus {
@@ -17,9 +18,9 @@ namespace talus {
 // Every rank set up (or read) the whole scene; each keeps the particles of its slab and the
 // contact histories that involve them. The first step builds the list (and rebalances).
 void Simulation::splitScene() {
-    require(runsOnRanks_, "driver '" + name() + "' has not been made rank-aware (setRunsOnRanks): its analysis "
+    require(runsOnRanks_, "driver '" + state_.settings.name + "' has not been made rank-aware (setRunsOnRanks): its analysis "
                           "would see the particles of one rank only; run it without mpirun (Documentation/Parallel.md)");
-    for (const Boundary* b : boundaries_)
+    for (const Boundary* b : scene_->boundaries())
         require(b->runsOnRanks(), "this driver has a boundary that does not run on more than one rank yet; run it "
                                   "without mpirun (Documentation/Parallel.md lists what runs on ranks)");
     ParticleStore& p = state_.particles;
@@ -191,7 +192,7 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
 // ranks, with the same writers as a serial run; then every rank marks its list for a rebuild at
 // the next step, which is what a run restarted from these files does first (exact restarts).
 void Simulation::writeGatheredOutput() {
-    saveKeptValues();
+    run_->saveKeptValues(state_);
     const RunSettings& c = state_.settings;
     if (!(c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart)) return;  // nothing to gather
     renumberNewParticles();

@@ -10,12 +10,12 @@ bool addsHere(const Simulation& simulation) { return !simulation.onRanks() || si
 
 void addParticleOnce(Simulation& simulation, const Vec3& position, double radius, std::size_t species,
                      const Vec3& velocity) {
-    if (addsHere(simulation)) simulation.addParticle(position, radius, species, velocity);
+    if (addsHere(simulation)) simulation.scene().addParticle(position, radius, species, velocity);
 }
 
 void addSuperquadricOnce(Simulation& simulation, const Vec3& position, std::size_t shape, std::size_t species,
                          const Quat& orientation) {
-    if (addsHere(simulation)) simulation.addSuperquadric(position, shape, species, orientation);
+    if (addsHere(simulation)) simulation.scene().addSuperquadric(position, shape, species, orientation);
 }
 
 }  // namespace talus

@@ -31,7 +31,7 @@ Selection both(Selection a, Selection b) {
 namespace {
 
 double particleVolume(const Simulation& s, const ParticleStore& p, std::size_t i) {
-    if (p.isShaped(i)) return s.shapes()[static_cast<std::size_t>(p.shape[i])].volume();
+    if (p.isShaped(i)) return s.scene().shapes()[static_cast<std::size_t>(p.shape[i])].volume();
     return 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
 }
 
@@ -44,7 +44,7 @@ double rotationalEnergy(const ParticleStore& p, std::size_t i) {
 }  // namespace
 
 Totals totalsOver(const Simulation& simulation, const Selection& selection) {
-    const ParticleStore& p = simulation.particles();
+    const ParticleStore& p = simulation.scene().particles();
     std::vector<double> sum(11, 0.0);  // count, mass, volume, translational and rotational energy, momentum, m x
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (!selection(p, i)) continue;
@@ -69,7 +69,7 @@ Totals totalsOver(const Simulation& simulation, const Selection& selection) {
 
 std::vector<double> sumsOver(const Simulation& simulation, const Selection& selection,
                              const std::vector<ParticleQuantity>& quantities) {
-    const ParticleStore& p = simulation.particles();
+    const ParticleStore& p = simulation.scene().particles();
     std::vector<double> sum(quantities.size(), 0.0);
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (!selection(p, i)) continue;
@@ -89,7 +89,7 @@ std::vector<double> sumOverScene(const Simulation& simulation, std::vector<doubl
 }
 
 double maxOver(const Simulation& simulation, const Selection& selection, const ParticleQuantity& quantity) {
-    const ParticleStore& p = simulation.particles();
+    const ParticleStore& p = simulation.scene().particles();
     double largest = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < p.owned(); ++i)
         if (selection(p, i)) largest = std::max(largest, quantity(p, i));
@@ -101,13 +101,13 @@ double minOver(const Simulation& simulation, const Selection& selection, const P
 }
 
 void forEachSelected(Simulation& simulation, const Selection& selection, const std::function<void(std::size_t)>& action) {
-    const std::size_t owned = simulation.particles().owned();  // (those added are appended after these)
+    const std::size_t owned = simulation.scene().particles().owned();  // (those added are appended after these)
     for (std::size_t i = 0; i < owned; ++i)
-        if (selection(simulation.particles(), i)) action(i);
+        if (selection(simulation.scene().particles(), i)) action(i);
 }
 
 ParticleStore gatherParticles(const Simulation& simulation, const Selection& selection) {
-    const ParticleStore& p = simulation.particles();
+    const ParticleStore& p = simulation.scene().particles();
     std::vector<std::size_t> selected;
     for (std::size_t i = 0; i < p.owned(); ++i)
         if (selection(p, i)) selected.push_back(i);

@@ -11,7 +11,7 @@ namespace talus {
 
 std::string describeRanks(const Simulation& simulation) {
     const DomainSplit::Timings& seconds = simulation.domainSplit()->seconds;
-    std::vector<double> sums = {seconds.total(), double(simulation.particles().ghostCount), seconds.ghosts,
+    std::vector<double> sums = {seconds.total(), double(simulation.scene().particles().ghostCount), seconds.ghosts,
                                 seconds.agreement};
     simulation.sumOverRanks(sums);
     const double ranks = simulation.ranks(), wall = std::max(simulation.lastRun().wallSeconds, 1e-300);

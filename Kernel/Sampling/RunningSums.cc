@@ -6,7 +6,7 @@ namespace talus {
 
 RunningSums::RunningSums(Simulation& simulation, const std::string& name, std::size_t count)
     : simulation_(simulation), totals_(count, 0.0), unsummed_(count, 0.0) {
-    simulation_.keepInRestart(name, [this] { return sumParts(), totals_; },
+    simulation_.run().keepInRestart(name, [this] { return sumParts(), totals_; },
                               [this, name](const std::vector<double>& saved) {
                                   require(saved.size() == totals_.size(),
                                           "restart file: '" + name + "' holds " + std::to_string(saved.size()) +
@@ -17,8 +17,8 @@ RunningSums::RunningSums(Simulation& simulation, const std::string& name, std::s
 }
 
 void RunningSums::addStepIntegral(std::size_t k, const Selection& selection, const ParticleQuantity& quantity) {
-    const ParticleStore& p = simulation_.particles();
-    const double dt = simulation_.timeStep();
+    const ParticleStore& p = simulation_.scene().particles();
+    const double dt = simulation_.settings().timeStep;
     double& part = unsummed_.at(k);
     for (std::size_t i = 0; i < p.owned(); ++i)
         if (selection(p, i)) part += quantity(p, i) * dt;

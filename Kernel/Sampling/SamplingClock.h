@@ -1,7 +1,7 @@
 // A driver's sampling clock: every(interval) is true once per interval of simulated time, at
 // the first step at or past each multiple of the interval (within half a time step: t = k T
 // reached by adding the step). The next sample time is kept in the restart file
-// (Simulation::keepInRestart, "clock.NAME"), so a restarted run samples at the same steps as
+// (Run::keepInRestart, "clock.NAME"), so a restarted run samples at the same steps as
 // the run it continues, and a run stepping in waves (several steps between the driver's hooks)
 // still samples once per interval, at the end of the wave that crosses the sample time.
 #pragma once

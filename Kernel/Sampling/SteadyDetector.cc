@@ -11,7 +11,7 @@ SteadyDetector::SteadyDetector(std::size_t window, double tolerance) { reset(win
 
 SteadyDetector::SteadyDetector(Simulation& simulation, const std::string& name, std::size_t window, double tolerance)
     : SteadyDetector(window, tolerance) {
-    simulation.keepInRestart(name, [this] { return state(); }, [this](const std::vector<double>& v) { restore(v); });
+    simulation.run().keepInRestart(name, [this] { return state(); }, [this](const std::vector<double>& v) { restore(v); });
 }
 
 void SteadyDetector::reset(std::size_t window, double tolerance) {

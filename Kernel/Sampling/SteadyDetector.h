@@ -5,7 +5,7 @@
 // comparison of half-window means: a flow that still accelerates by 0.1% per sample passes a 2%
 // test on half-window means of 20 samples, but not this one on 100 samples.
 // Made with a simulation and a name, it keeps what it knows in the restart file
-// (Simulation::keepInRestart, "NAME"), so that a restarted run goes on watching where it stopped.
+// (Run::keepInRestart, "NAME"), so that a restarted run goes on watching where it stopped.
 // The samples are whole-scene numbers (every rank the same, Sampling/ParticleSums.h).
 #pragma once
 

@@ -7,8 +7,8 @@
 namespace talus {
 
 TimedEvents::TimedEvents(Simulation& simulation, const std::string& name) {
-    simulation.addBoundary(*this);
-    simulation.keepInRestart(
+    simulation.scene().addBoundary(*this);
+    simulation.run().keepInRestart(
         name,
         [this] {
             std::vector<double> done;
@@ -31,7 +31,7 @@ void TimedEvents::at(std::function<double()> time, std::function<void()> action)
 }
 
 void TimedEvents::afterDrift(Simulation& simulation) {
-    const double t = simulation.time(), halfStep = 0.5 * simulation.timeStep();
+    const double t = simulation.time(), halfStep = 0.5 * simulation.settings().timeStep;
     for (Event& e : events_) {
         if (e.done || t < e.time() - halfStep) continue;
         e.done = true;  // (before the action: an action that throws is not retried)

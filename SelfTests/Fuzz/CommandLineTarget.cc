@@ -23,9 +23,9 @@ public:
     std::string data = "start.data";
 
     FlagsOnly() {
-        addFlag("angle", "inclination in degrees", angle);
-        addFlag("layers", "number of layers", layers);
-        addTextFlag("data", "file to start from", data);
+        run().addFlag("angle", "inclination in degrees", angle);
+        run().addFlag("layers", "number of layers", layers);
+        run().addTextFlag("data", "file to start from", data);
     }
 
 protected:

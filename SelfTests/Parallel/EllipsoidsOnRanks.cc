@@ -42,30 +42,30 @@ public:
     int perSide = 5;  // the lattice is perSide^3 ellipsoids
 
     EllipsoidsOnRanks() {
-        addFlag("per-side", "ellipsoids along each side of the starting lattice", perSide);
+        run().addFlag("per-side", "ellipsoids along each side of the starting lattice", perSide);
         setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
         require(perSide >= 2 && perSide <= 12, "--per-side must be 2 to 12");
         const Superquadric shape(0.5, 0.25, 0.25, 1, 1);
-        const std::size_t ellipsoid = addShape(shape);
+        const std::size_t ellipsoid = scene().addShape(shape);
         const double density = 6 / pi, mass = density * shape.volume();
         const auto grains =
-            addSpecies("grains", density, LinearSpringDashpot::fromCollision(0.005, 0.7, mass / 2).withFriction(0.5));
-        setGravity(Vec3::Zero());
+            scene().addSpecies("grains", density, LinearSpringDashpot::fromCollision(0.005, 0.7, mass / 2).withFriction(0.5));
+        scene().setGravity(Vec3::Zero());
         const double spacing = 1.05, side = 20;
-        setDomain(Vec3::Zero(), Vec3::Constant(side));
+        scene().setDomain(Vec3::Zero(), Vec3::Constant(side));
         const Vec3 centre = Vec3::Constant(side / 2);
         std::normal_distribution<double> gauss;
         for (int k = 0; k < perSide * perSide * perSide; ++k) {
             const Vec3 cell(k % perSide, (k / perSide) % perSide, k / (perSide * perSide));
             const Vec3 x = centre + spacing * (cell - Vec3::Constant(0.5 * (perSide - 1)));
-            const Quat q = Quat(gauss(random()), gauss(random()), gauss(random()), gauss(random())).normalized();
-            const Vec3 v = -2 * (x - centre) + 0.3 * Vec3(gauss(random()), gauss(random()), gauss(random()));
-            const Vec3 w(gauss(random()), gauss(random()), gauss(random()));
-            addSuperquadric(x, ellipsoid, grains, q, v, w);
-            initialMass_.push_back(particles().mass.back());
+            const Quat q = Quat(gauss(scene().random()), gauss(scene().random()), gauss(scene().random()), gauss(scene().random())).normalized();
+            const Vec3 v = -2 * (x - centre) + 0.3 * Vec3(gauss(scene().random()), gauss(scene().random()), gauss(scene().random()));
+            const Vec3 w(gauss(scene().random()), gauss(scene().random()), gauss(scene().random()));
+            scene().addSuperquadric(x, ellipsoid, grains, q, v, w);
+            initialMass_.push_back(scene().particles().mass.back());
         }
         // A chain at rest along x, far below the cloud, tip to tip with overlaps of 1e-9: every
         // rank boundary across x cuts one of its contacts, and the chain relaxes so slowly (speeds
@@ -73,13 +73,13 @@ public:
         // take a contact only when the last step's solution is within one Newton iteration.
         const double overlap = 1e-9;
         for (int k = 0; k < 19; ++k) {
-            addSuperquadric(Vec3(1 + k * (1 - overlap), 2, 2), ellipsoid, grains, Quat::Identity());
-            initialMass_.push_back(particles().mass.back());
+            scene().addSuperquadric(Vec3(1 + k * (1 - overlap), 2, 2), ellipsoid, grains, Quat::Identity());
+            initialMass_.push_back(scene().particles().mass.back());
         }
     }
 
     void actionsAfterTimeStep() override {
-        const ParticleStore& p = particles();
+        const ParticleStore& p = scene().particles();
         bool massesKept = true;
         for (std::size_t i = 0; i < p.owned(); ++i) massesKept &= p.mass[i] == initialMass_.at(p.id[i]);
         const Vec3 centre = Vec3::Constant(10);
@@ -155,10 +155,10 @@ private:
 
 int main(int argc, char** argv) {
     EllipsoidsOnRanks cloud;
-    cloud.setName("EllipsoidsOnRanks");
-    cloud.setTimeStep(2e-4);  // tc / 25
-    cloud.setEndTime(0.2);
-    cloud.setOutputInterval(0.1);
-    cloud.setVtuOutput(false);
+    cloud.settings().name = "EllipsoidsOnRanks";
+    cloud.settings().timeStep = 2e-4;  // tc / 25
+    cloud.settings().endTime = 0.2;
+    cloud.settings().outputInterval = 0.1;
+    cloud.settings().writeVtu = false;
     return cloud.solve(argc, argv);
 }

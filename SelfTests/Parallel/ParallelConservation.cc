@@ -26,26 +26,26 @@ public:
     double drift = 10;
 
     ParallelConservation() {
-        addFlag("particles", "number of spheres", particleCount);
-        addFlag("drift", "mean velocity along x (thermal speed 1)", drift);
+        run().addFlag("particles", "number of spheres", particleCount);
+        run().addFlag("drift", "mean velocity along x (thermal speed 1)", drift);
         setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
         const Vec3 box(16, 5, 5);  // a packing fraction of 0.17 for 600 spheres
-        setDomain(Vec3::Zero(), box);
-        setPeriodic(true, true, true);
-        setGravity(Vec3::Zero());
+        scene().setDomain(Vec3::Zero(), box);
+        scene().setPeriodic(true, true, true);
+        scene().setGravity(Vec3::Zero());
         const double meanMass = 6 / pi * pi / 6 * 0.6 * 0.6 * 0.6;
         const auto grains =
-            addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.01, 0.8, meanMass / 2).withFriction(0.5));
+            scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.01, 0.8, meanMass / 2).withFriction(0.5));
         InsertionBoundary fill(Vec3::Zero(), box, SizeDistribution::byNumber().addRange(grains, 0.25, 0.35));
         const InsertionReport report = fill.insertCount(*this, static_cast<std::size_t>(particleCount));
         require(report.complete, report.describe());
         std::normal_distribution<double> thermal(0, 1);
-        ParticleStore& p = particles();
+        ParticleStore& p = scene().particles();
         for (std::size_t i = 0; i < p.size(); ++i)
-            p.velocity[i] = Vec3(drift + thermal(random()), thermal(random()), thermal(random()));
+            p.velocity[i] = Vec3(drift + thermal(scene().random()), thermal(scene().random()), thermal(scene().random()));
     }
 
     void actionsAfterTimeStep() override {
@@ -95,7 +95,7 @@ public:
 private:
     // count, sum of ids, sum of squared ids, mass, momentum (3), sum of |m v|; over all ranks.
     std::vector<double> totals() const {
-        const ParticleStore& p = particles();
+        const ParticleStore& p = scene().particles();
         std::vector<double> t(8, 0.0);
         for (std::size_t i = 0; i < p.owned(); ++i) {
             const double id = static_cast<double>(p.id[i]);
@@ -116,9 +116,9 @@ private:
 
 int main(int argc, char** argv) {
     ParallelConservation gas;
-    gas.setName("ParallelConservation");
-    gas.setTimeStep(2e-4);  // tc / 50
-    gas.setEndTime(3.2);    // the drift carries every particle twice through the box
-    gas.setFileOutput(false);
+    gas.settings().name = "ParallelConservation";
+    gas.settings().timeStep = 2e-4;  // tc / 50
+    gas.settings().endTime = 3.2;    // the drift carries every particle twice through the box
+    gas.settings().setFileOutput(false);
     return gas.solve(argc, argv);
 }

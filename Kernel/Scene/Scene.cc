@@ -1,16 +1,19 @@
-// Building and editing the scene (Documentation/Architecture.md "The driver contract"): the box, species, particles, walls and prescribed
-// motions a driver sets up, and the particles it adds, moves or removes during a run. Part of
-// talus::Simulation.
+// Building, editing and checking the scene (Scene.h).
+#include "Scene/Scene.h"
+
 #include <algorithm>
 #include <cmath>
 
-#include "Parallel/DomainSplit.h"
 #include "Particles/RigidBodyRotation.h"
-#include "Simulation.h"
 
 namespace talus {
 
-void Simulation::setDomain(const Vec3& lo, const Vec3& hi) {
+void Scene::setGravity(const Vec3& g) {
+    require(isFinite(g), "gravity is not finite");
+    state_.gravity = g;
+}
+
+void Scene::setDomain(const Vec3& lo, const Vec3& hi) {
     require(isFinite(lo) && isFinite(hi) && (hi - lo).minCoeff() > 0,
             "domain: the upper corner must lie above the lower corner along x, y and z");
     state_.domain.lo = lo;
@@ -18,17 +21,17 @@ void Simulation::setDomain(const Vec3& lo, const Vec3& hi) {
     state_.pairList.valid = false;
 }
 
-void Simulation::setPeriodic(bool x, bool y, bool z) {
+void Scene::setPeriodic(bool x, bool y, bool z) {
     state_.domain.periodic = {x, y, z};
     state_.pairList.valid = false;
 }
 
-std::size_t Simulation::addSpecies(const std::string& name, double density, const ContactLaw& law) {
+std::size_t Scene::addSpecies(const std::string& name, double density, const ContactLaw& law) {
     requireWord(name, "species name");
     return state_.species.add(name, density, law);
 }
 
-std::size_t Simulation::addParticle(const Vec3& position, double radius, std::size_t species, const Vec3& velocity,
+std::size_t Scene::addParticle(const Vec3& position, double radius, std::size_t species, const Vec3& velocity,
                                     const Vec3& angularVelocity) {
     ParticleStore& p = state_.particles;
     const std::string which = "particle " + std::to_string(state_.nextId);
@@ -41,7 +44,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     // New particles go before the ghosts: with a valid list they move the ghosts up a slot and
     // have their pairs relisted (PairList::relist); otherwise the ghosts go until the next build.
     const bool beforeGhosts = p.ghostCount > 0 && state_.pairList.valid;
-    if (p.ghostCount > 0 && !beforeGhosts) releaseGhosts();
+    if (p.ghostCount > 0 && !beforeGhosts) ranks_.releaseGhosts();
     p.position.push_back(position);
     p.velocity.push_back(velocity);
     p.angularVelocity.push_back(angularVelocity);
@@ -54,11 +57,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     p.species.push_back(static_cast<std::uint32_t>(species));
     // On ranks a new particle gets a provisional id, unique to this rank, until all ranks number
     // their new particles together (renumberNewParticles, at the next list build or save).
-    if (onRanks()) {
-        p.id.push_back(provisionalIdBase + (std::uint64_t(rank()) << 40) + provisionalIds_++);
-    } else {
-        p.id.push_back(state_.nextId++);
-    }
+    p.id.push_back(ranks_.onRanks() ? ranks_.provisionalId() : state_.nextId++);
     p.fixed.push_back(0);
     p.motion.push_back(-1);
     if (p.hasShapes()) {
@@ -69,19 +68,19 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     }
     const std::size_t slot = beforeGhosts ? p.moveLastBeforeGhosts() : p.size() - 1;
     // The list relists the new particle's pairs at the next force computation (on ranks if no
-    // other rank needs it: Simulation::updateNeighbourhoodOnRanks).
+    // other rank needs it: Scene::updateNeighbourhoodOnRanks).
     // (p.position[slot], not `position`: that may be a reference into the array the push_back
     // above moved, as the maser's copies are made.)
     state_.pairList.noteInserted(static_cast<std::uint32_t>(slot), p.position[slot]);
     return slot;
 }
 
-std::size_t Simulation::addShape(const Superquadric& shape) {
+std::size_t Scene::addShape(const Superquadric& shape) {
     state_.shapes.push_back(shape);
     return state_.shapes.size() - 1;
 }
 
-std::size_t Simulation::addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                         const Quat& orientation, const Vec3& velocity, const Vec3& angularVelocity) {
     const std::string which = "particle " + std::to_string(state_.nextId);
     require(shape < state_.shapes.size(), which + ": shape " + std::to_string(shape) + " does not exist (addShape first)");
@@ -105,25 +104,25 @@ std::size_t Simulation::addSuperquadric(const Vec3& position, std::size_t shape,
     return i;
 }
 
-std::size_t Simulation::addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion) {
+std::size_t Scene::addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion) {
     requireMotion(motion, "fixed particle");
     return fixParticle(addParticle(position, radius, species), motion);
 }
 
-std::size_t Simulation::addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+std::size_t Scene::addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                              const Quat& orientation, int motion) {
     requireMotion(motion, "fixed superquadric");
     return fixParticle(addSuperquadric(position, shape, species, orientation), motion);
 }
 
-void Simulation::requireMotion(int motion, const std::string& what) const {
+void Scene::requireMotion(int motion, const std::string& what) const {
     require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
             what + ": motion " + std::to_string(motion) + " does not exist (add it with addMotion first)");
 }
 
 // Never integrated (inverse mass and inertia 0: an infinitely heavy partner in its contacts);
 // with a motion it moves and turns with it.
-std::size_t Simulation::fixParticle(std::size_t i, int motion) {
+std::size_t Scene::fixParticle(std::size_t i, int motion) {
     ParticleStore& p = state_.particles;
     p.fixed[i] = 1;
     p.invMass[i] = 0;
@@ -136,24 +135,24 @@ std::size_t Simulation::fixParticle(std::size_t i, int motion) {
     return i;
 }
 
-void Simulation::moveParticleBy(std::size_t slot, const Vec3& jump) {
+void Scene::moveParticleBy(std::size_t slot, const Vec3& jump) {
     require(slot < state_.particles.owned(), "moveParticleBy: slot " + std::to_string(slot) + " does not exist");
     state_.particles.position[slot] += jump;
     // On ranks a particle that another rank holds as a ghost makes the list build anew (its
     // ghost would jump there unseen by that rank's list).
-    if (onRanks() && split_->isSentAsGhost(static_cast<std::uint32_t>(slot))) state_.pairList.valid = false;
+    if (ranks_.onRanks() && ranks_.isSentAsGhost(slot)) state_.pairList.valid = false;
     else state_.pairList.noteJumped(static_cast<std::uint32_t>(slot), jump);
 }
 
-void Simulation::removeParticle(std::size_t slot) {
+void Scene::removeParticle(std::size_t slot) {
     require(slot < state_.particles.owned(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
-    if (state_.particles.ghostCount > 0) releaseGhosts();
+    if (state_.particles.ghostCount > 0) ranks_.releaseGhosts();
     const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);
     state_.particles.removeBySwap(slot);
     state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);
 }
 
-std::size_t Simulation::addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius,
+std::size_t Scene::addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius,
                                         std::size_t species, int motion) {
     require(std::isfinite(radius) && radius > 0, "cylinder wall: the radius must be positive, got " + str(radius));
     const std::size_t w = addWall(axisDirection, axisPoint, species, motion);
@@ -161,7 +160,7 @@ std::size_t Simulation::addCylinderWall(const Vec3& axisPoint, const Vec3& axisD
     return w;
 }
 
-std::size_t Simulation::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {
+std::size_t Scene::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {
     require(isFinite(normal) && normal.norm() > 0, "wall: the normal must be a non-zero vector");
     require(isFinite(point), "wall: the point is not finite");
     require(species < state_.species.size(), "wall: species " + std::to_string(species) + " does not exist");
@@ -172,11 +171,83 @@ std::size_t Simulation::addWall(const Vec3& normal, const Vec3& point, std::size
     return state_.walls.size() - 1;
 }
 
-std::size_t Simulation::addMotion(const PrescribedMotion& motion) {
+std::size_t Scene::addMotion(const PrescribedMotion& motion) {
     require(isFinite(motion.velocity) && isFinite(motion.angularVelocity) && isFinite(motion.centre),
             "prescribed motion: velocity, angular velocity and centre must be finite");
     state_.motions.push_back(motion);
     return state_.motions.size() - 1;
+}
+
+double Scene::shortestCollisionTime(std::string* which) const {
+    // Per species: how many mobile particles, the lightest and the smallest of them, and whether
+    // fixed particles or walls of that species can be hit.
+    struct Present {
+        std::size_t mobile = 0;
+        double lightest = INFINITY, smallest = INFINITY;
+        bool immobile = false;  // fixed particles or walls
+    };
+    const std::size_t n = state_.species.size();
+    std::vector<Present> present(n);
+    const ParticleStore& p = state_.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        Present& s = present[p.species[i]];
+        if (p.fixed[i]) {
+            s.immobile = true;
+            continue;
+        }
+        ++s.mobile;
+        s.lightest = std::min(s.lightest, p.mass[i]);
+        s.smallest = std::min(s.smallest, p.radius[i]);
+    }
+    for (const Wall& w : state_.walls) present[w.species].immobile = true;
+
+    double shortest = INFINITY;
+    auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
+        const ContactLaw law = state_.species.pairLaw(a, b);
+        double tc = INFINITY;
+        if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
+        if (auto* h = std::get_if<HertzMindlin>(&law))
+            tc = h->collisionTime(reducedMass, effectiveRadius, h->characteristicVelocity);
+        if (tc >= shortest) return;
+        shortest = tc;
+        if (which)
+            *which = "species '" + state_.species[a].name + "' with '" + state_.species[b].name + "', reduced mass " +
+                     str(reducedMass);
+    };
+    for (std::size_t a = 0; a < n; ++a) {
+        const Present& pa = present[a];
+        if (pa.mobile == 0) continue;
+        for (std::size_t b = 0; b < n; ++b) {
+            const Present& pb = present[b];
+            // Two mobile particles (two of them if the species is the same), the lightest ones.
+            if (pb.mobile > (a == b ? 1u : 0u) && b >= a)
+                consider(a, b, pa.lightest * pb.lightest / (pa.lightest + pb.lightest),
+                         pa.smallest * pb.smallest / (pa.smallest + pb.smallest));
+            // A mobile particle against a fixed particle or a wall: the reduced mass is its own.
+            if (pb.immobile) consider(a, b, pa.lightest, pa.smallest);
+        }
+    }
+    return shortest;
+}
+
+std::size_t Scene::slotOf(std::uint64_t id, bool ghosts) const {
+    const std::vector<std::uint64_t>& ids = state_.particles.id;
+    const auto end = ids.begin() + static_cast<std::ptrdiff_t>(ghosts ? ids.size() : state_.particles.owned());
+    const auto it = std::find(ids.begin(), end, id);
+    require(it != end, "no particle has id " + std::to_string(id) +
+                           (ranks_.onRanks() ? " on rank " + std::to_string(ranks_.rank()) : ""));
+    return static_cast<std::size_t>(it - ids.begin());
+}
+
+void Scene::validate(double timeStep) const {
+    state_.species.validate();
+    for (const Wall& w : state_.walls)
+        require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
+    std::string which;
+    const double tc = shortestCollisionTime(&which);
+    if (timeStep > tc / 10)
+        throw Error("time step " + str(timeStep) + " is larger than a tenth of the shortest collision time " + str(tc) +
+                    " (" + which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller");
 }
 
 }  // namespace talus

@@ -1,0 +1,125 @@
+// The scene of a run (Documentation/Architecture.md "The driver contract"): gravity, the box,
+// species, particles (spheres and superquadrics), walls, prescribed motions and boundaries, as a
+// driver builds them in setupInitialConditions() and edits them during a run, each call checking
+// its input; validate() checks the whole before the run starts. A driver reaches it through
+// Simulation::scene(); it works on the simulation's state and asks the rank context (SceneRanks)
+// what splitting the scene over ranks changes.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "SimulationState.h"
+
+namespace talus {
+
+class Boundary;
+
+// What the scene asks of the ranks the run is split over (Parallel/DomainSplit.h); Simulation
+// answers. Without a split: not on ranks, nothing to release, nobody else holds a ghost.
+class SceneRanks {
+public:
+    virtual bool onRanks() const = 0;
+    virtual int rank() const = 0;
+    virtual double sumOverRanks(double x) const = 0;
+    // The ghosts go (before the particle arrays change in a way the ghost slots cannot follow).
+    virtual void releaseGhosts() = 0;
+    // An id for a particle added on this rank, unique until the ranks renumber their new ones.
+    virtual std::uint64_t provisionalId() = 0;
+    // Whether another rank holds this particle as a ghost.
+    virtual bool isSentAsGhost(std::size_t slot) const = 0;
+
+protected:
+    ~SceneRanks() = default;
+};
+
+class Scene {
+public:
+    Scene(SimulationState& state, SceneRanks& ranks) : state_(state), ranks_(ranks) {}
+
+    // --- gravity and the box ---
+    void setGravity(const Vec3& g);
+    const Vec3& gravity() const { return state_.gravity; }
+    void setDomain(const Vec3& lo, const Vec3& hi);
+    void setPeriodic(bool x, bool y, bool z);
+    const Domain& domain() const { return state_.domain; }
+    // The maser's one-way periodic box (Boundaries/MaserBoundary.h).
+    OneWayPeriodicBox& oneWayBox() { return state_.domain.oneWay; }
+
+    // --- species ---
+    std::size_t addSpecies(const std::string& name, double density, const ContactLaw& law);
+    SpeciesTable& species() { return state_.species; }
+    const SpeciesTable& species() const { return state_.species; }
+
+    // --- particles ---
+    // Adds a sphere; returns its slot. Radius must be positive and the species must exist.
+    std::size_t addParticle(const Vec3& position, double radius, std::size_t species,
+                            const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
+    // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
+    std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
+    // Superquadric particles (Theory/Superquadrics.md): a shape added once, then particles of it. The particle's
+    // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
+    // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
+    std::size_t addShape(const Superquadric& shape);
+    std::size_t addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                const Quat& orientation = Quat::Identity(), const Vec3& velocity = Vec3::Zero(),
+                                const Vec3& angularVelocity = Vec3::Zero());
+    // A fixed superquadric: never integrated, still collides; follows motion if motion >= 0 (its
+    // orientation turns with the motion).
+    std::size_t addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
+                                     const Quat& orientation = Quat::Identity(), int motion = -1);
+    const std::vector<Superquadric>& shapes() const { return state_.shapes; }
+    void removeParticle(std::size_t slot);
+    // Moves a particle by a jump (a boundary's wrap, like the maser's): the neighbour list then
+    // relists its pairs rather than being built anew.
+    void moveParticleBy(std::size_t slot, const Vec3& jump);
+    // Under MPI (Parallel/DomainSplit.h, Documentation/Parallel.md) the store holds this rank's
+    // particles (slots below particles().owned()) and then ghosts: whole-scene numbers come from
+    // Kernel/Sampling. Without MPI owned() == size().
+    ParticleStore& particles() { return state_.particles; }
+    const ParticleStore& particles() const { return state_.particles; }
+    // The current slot of the particle with global id `id` (ids count from 0 in the order of
+    // addParticle/addFixedParticle), of an owned one or (ghosts) of a ghost too. A linear search:
+    // for drivers and tests, not inner loops.
+    std::size_t slotOf(std::uint64_t id, bool ghosts = false) const;
+
+    // --- walls, motions, boundaries ---
+    std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
+    // The inside of a cylinder (a drum's mantle, Walls/Wall.h) of the given radius about the axis
+    // through axisPoint along axisDirection; a drum turns with a motion whose centre is on the
+    // axis and whose angular velocity is along it (addMotion).
+    std::size_t addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius, std::size_t species,
+                                int motion = -1);
+    const std::vector<Wall>& walls() const { return state_.walls; }
+    std::size_t addMotion(const PrescribedMotion& motion);
+    // A motion's velocities may change during a run (a drum spun up); the moving walls and fixed
+    // particles follow from the next step.
+    std::vector<PrescribedMotion>& motions() { return state_.motions; }
+    const std::vector<PrescribedMotion>& motions() const { return state_.motions; }
+    // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
+    // boundaries register themselves, in their constructors. Not owned: it must outlive the run.
+    void addBoundary(Boundary& boundary) { boundaries_.push_back(&boundary); }
+    const std::vector<Boundary*>& boundaries() const { return boundaries_; }
+
+    // The run's random generator (kept by the restart file): for insertion and the like.
+    std::mt19937_64& random() { return state_.random; }
+
+    // --- checks ---
+    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is.
+    double shortestCollisionTime(std::string* which = nullptr) const;
+    // The whole scene, before a run starts: the species, the walls' species, and a time step
+    // of at most a tenth of the shortest collision time (Theory/Integration.md).
+    void validate(double timeStep) const;
+
+private:
+    void requireMotion(int motion, const std::string& what) const;
+    std::size_t fixParticle(std::size_t slot, int motion);
+
+    SimulationState& state_;
+    SceneRanks& ranks_;
+    std::vector<Boundary*> boundaries_;
+};
+
+}  // namespace talus
