@@ -3,16 +3,16 @@
 // finishes must give the scalar answer (point, multiplier, normal, overlap, contact point), and
 // every lane the scalar solve would take further (more than one iteration, a pair apart) must be
 // left to it.
-#include <gtest/gtest.h>
-
 #include <random>
 
+#include "LaneFormTest.h"
 #include "Contacts/EllipsoidContactBatch.h"
 #include "SuperquadricReference.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
-TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
+TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
     std::mt19937_64 random(20261201);
     std::uniform_real_distribution<double> uniform(-1, 1);
     const double tolerance = SuperquadricContactSettings{}.tolerance;

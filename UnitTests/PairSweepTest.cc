@@ -4,15 +4,15 @@
 // pending contact), in order, with their separations to the bit, whether the lanes (AVX-512, or
 // AVX2 without it) or the scalar loop decide (both forms are swept; without either in the build
 // both are the loop); from the whole list and from a near list.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <limits>
 #include <random>
 
-#include "Contacts/PairSweep.h"
+#include "LaneFormTest.h"
+#include "Contacts/PairSweepLanes.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
 namespace {
 
@@ -29,7 +29,7 @@ bool needsWorkDirectly(const Vec3& d, double ri, double rj, ContactHistory::Stat
 
 }  // namespace
 
-TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
+TALUS_LANE_TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> unit(0, 1);
     const Vec3 box(20, 10, 8);
@@ -138,7 +138,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
 // tests it) is picked with the frame as with the speeds, and the frame picks far fewer of the
 // others. The frame is the sampled mean velocity of the mobile spheres, zero without any or if
 // it is not finite.
-TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
+TALUS_LANE_TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> unit(0, 1);
     const Vec3 box(12, 12, 12), common(3, -1, 0.5);

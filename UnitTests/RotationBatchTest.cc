@@ -4,20 +4,20 @@
 // mixed set (triaxial bodies, bodies of revolution, sphere-like bodies, a body at rest, one
 // spinning so fast that a piece of its drift leaves the small-angle series) gets the same
 // orientation, angular momentum and angular velocity, with batches full and partly full.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
 
-#include "Particles/RotationBatch.h"
+#include "LaneFormTest.h"
+#include "Particles/RotationBatchLanes.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
 namespace {
 double worse(double a, double b) { return std::isnan(b) || b > a ? b : a; }  // (a NaN is the worst)
 }  // namespace
 
-TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
+TALUS_LANE_TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
     std::mt19937_64 random(20261202);
     std::uniform_real_distribution<double> uniform(-1, 1);
     const Vec3 inertias[] = {{1, 2, 3}, {0.25, 0.3125, 0.1625}, {0.25, 0.25, 0.1}, {0.4, 0.7, 0.7}, {0.5, 0.5, 0.5}};

@@ -8,8 +8,9 @@
 #include "Contacts/ContactHistory.h"
 #include "Particles/ParticleStore.h"
 #include "Species/LinearSpringDashpot.h"
+#include "Math/LaneNamespace.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 // Contacts inside a lasting contact, gathered in batches of `size` and computed lane by lane in
 // one loop of plain numbers that the compiler vectorises (LinearSpringDashpot::lastingContact):
@@ -109,4 +110,4 @@ struct ContactBatch {
     }
 };
 
-}  // namespace talus
+}  // namespace talus::TALUS_LANES

@@ -24,8 +24,9 @@
 #include "Math/Vector.h"
 #include "Species/ContactKinematics.h"
 #include "Species/LinearSpringDashpot.h"
+#include "Math/LaneNamespace.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 struct EllipsoidContactBatch {
     static constexpr int size = 16;
@@ -200,4 +201,4 @@ struct EllipsoidContactBatch {
     }
 };
 
-}  // namespace talus
+}  // namespace talus::TALUS_LANES

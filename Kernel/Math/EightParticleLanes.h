@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstdint>
 
-namespace talus::lanes {
+#include "Math/LaneNamespace.h"
+
+namespace talus::TALUS_LANES::lanes {
 
 // The rounding that the lanes and the loops they stand in for share, written out: left to the
 // compiler, x + s r is contracted to a fused multiply-add or not depending on the code around it
@@ -26,13 +28,13 @@ inline double multiplyAdd(double s, double r, double x) {
 #endif
 }
 
-}  // namespace talus::lanes
+}  // namespace talus::TALUS_LANES::lanes
 
 #if defined(__AVX512F__) && defined(__AVX512BW__) && defined(__AVX512VL__) && defined(__BMI2__)
 #define TALUS_AVX512_LANES 1
 #include <immintrin.h>
 
-namespace talus::lanes {
+namespace talus::TALUS_LANES::lanes {
 
 // A per-particle value of the block's eight particles (one vector) spread over the three
 // vectors of their coordinates. (The zero-masking form: GCC 12 warns, wrongly, of an
@@ -69,5 +71,5 @@ struct MobileLanes {
     __m512d advance(__m512d x, __m512d s, __m512d r, int c) const { return _mm512_mask3_fmadd_pd(s, r, x, of[c]); }
 };
 
-}  // namespace talus::lanes
+}  // namespace talus::TALUS_LANES::lanes
 #endif

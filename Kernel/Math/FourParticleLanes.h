@@ -22,7 +22,7 @@
 #define TALUS_AVX2_LANES 1
 #include <immintrin.h>
 
-namespace talus::lanes {
+namespace talus::TALUS_LANES::lanes {
 
 // Three vectors in storage order to one per axis.
 inline void toAxes(const __m256d (&stored)[3], __m256d (&axis)[3]) {
@@ -100,5 +100,5 @@ inline std::uint64_t sumOfLanes(__m256i a) {
     return lanes[0] + lanes[1] + lanes[2] + lanes[3];
 }
 
-}  // namespace talus::lanes
+}  // namespace talus::TALUS_LANES::lanes
 #endif

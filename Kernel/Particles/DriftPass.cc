@@ -1,3 +1,4 @@
+// Particles/DriftPass.h in the lanes of one form: compiled once per form (Math/LaneKernels.h).
 #include "Particles/DriftPass.h"
 
 #include <algorithm>
@@ -6,12 +7,14 @@
 #include <cstdint>
 #include <limits>
 
-#include "Contacts/PairSweep.h"
+#include "Contacts/PairSweepLanes.h"
 #include "Math/EightParticleLanes.h"
 #include "Math/FourParticleLanes.h"
-#include "Particles/VelocityVerlet.h"
+#include "Math/LaneKernels.h"
+#include "Math/LaneNamespace.h"
+#include "Particles/VelocityVerletLanes.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 namespace {
 
@@ -395,13 +398,6 @@ double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& refe
     return std::sqrt(std::bit_cast<double>(largest));
 }
 
-DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
-                                        const std::vector<Vec3>* reference, const Vec3& gravity,
-                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points) {
-    startFirstHalf(p, previousForce, points);
-    return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, p.size());
-}
-
 void startFirstHalf(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points) {
     const std::size_t n = p.size();
     previousForce.swap(p.force);  // the last step's forces; p.force is refilled by the pass
@@ -479,4 +475,7 @@ DriftPassResult closeKickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>
                            dt, points, first, last);
 }
 
-}  // namespace talus
+const DriftPassKernels driftPassKernels{positionSum, startFirstHalf, largestDisplacement, kickDriftAndStartForces,
+                                        closeKickDriftAndStartForces};
+
+}  // namespace talus::TALUS_LANES
