@@ -17,7 +17,8 @@
 using namespace talus;
 
 // The cases the lane sources left in their section (the linker names its ends).
-extern "C" const test::LaneTestCase __start_talus_lane_tests[], __stop_talus_lane_tests[];
+extern "C" const test::LaneTestCase* const __start_talus_lane_tests[];
+extern "C" const test::LaneTestCase* const __stop_talus_lane_tests[];
 
 namespace {
 
@@ -44,15 +45,18 @@ private:
 };
 
 const bool registered = [] {
-    for (const test::LaneTestCase* c = __start_talus_lane_tests; c != __stop_talus_lane_tests; ++c)
+    for (const test::LaneTestCase* const* entry = __start_talus_lane_tests; entry != __stop_talus_lane_tests; ++entry) {
+        const test::LaneTestCase* c = *entry;
         ::testing::RegisterTest(c->suite, (std::string(c->name) + "/" + laneFormName(c->form)).c_str(), nullptr,
                                 nullptr, c->file, c->line, [c]() -> ::testing::Test* { return new InLaneForm(*c); });
+    }
     return true;
 }();
 
 // The forms this processor runs by the flags the operating system reports in /proc/cpuinfo
 // (what it has enabled), read independently of the library's own test: the x86-64-v3 and v4
-// levels of the forms' -march (Kernel/CMakeLists.txt), and BMI2 for the AVX-512 lanes.
+// levels of the forms' -march (Kernel/CMakeLists.txt; LZCNT left out: some virtual machines do
+// not report it as "abm" though they run it), and BMI2 for the AVX-512 lanes.
 std::set<LaneForm> formsByCpuinfo() {
     std::ifstream in("/proc/cpuinfo");
     std::string line;
@@ -69,7 +73,7 @@ std::set<LaneForm> formsByCpuinfo() {
         return true;
     };
     std::set<LaneForm> forms{LaneForm::scalar};
-    const bool v3 = has({"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "abm", "movbe", "xsave"});
+    const bool v3 = has({"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "movbe", "xsave"});
     if (v3) forms.insert(LaneForm::avx2);
     if (v3 && has({"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"})) forms.insert(LaneForm::avx512);
     return forms;
@@ -87,12 +91,20 @@ TEST(LaneForms, EveryFormThisProcessorRunsIsTested) {
     EXPECT_EQ(std::set<LaneForm>(found.begin(), found.end()), expected);
     EXPECT_EQ(laneForm(), *expected.rbegin());
     std::map<std::string, std::set<LaneForm>> casesByName;
-    for (const test::LaneTestCase* c = __start_talus_lane_tests; c != __stop_talus_lane_tests; ++c)
-        casesByName[std::string(c->suite) + "." + c->name].insert(c->form);
-    EXPECT_GE(casesByName.size(), 10u);  // (the lane cases of UnitTests/CMakeLists.txt's laneTestSources)
-    for (const auto& [name, forms] : casesByName)
+    for (const test::LaneTestCase* const* c = __start_talus_lane_tests; c != __stop_talus_lane_tests; ++c)
+        casesByName[std::string((*c)->suite) + "." + (*c)->name].insert((*c)->form);
+    // Every case in every form the processor runs (the scalar form has no lane-against-loop
+    // comparisons), and some cases in the vector forms alone: those comparisons are there.
+    std::size_t vectorOnly = 0;
+    for (const auto& [name, forms] : casesByName) {
         for (LaneForm form : expected)
-            if (form != LaneForm::scalar) EXPECT_TRUE(forms.count(form)) << name << " not in " << laneFormName(form);
+            if (form != LaneForm::scalar) {
+                EXPECT_TRUE(forms.count(form)) << name << " not in " << laneFormName(form);
+            }
+        vectorOnly += !forms.count(LaneForm::scalar);
+    }
+    EXPECT_GE(casesByName.size(), 13u);  // (the cases of UnitTests/CMakeLists.txt's laneTestSources)
+    EXPECT_GE(vectorOnly, 2u);           // (VelocityVerlet's lanes against the loop)
     std::printf("[ measured ] lane forms of this processor:");
     for (LaneForm form : found) std::printf(" %s", laneFormName(form));
     std::printf("; %zu lane cases\n", casesByName.size());

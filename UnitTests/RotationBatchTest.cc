@@ -41,9 +41,9 @@ TALUS_LANE_TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
             RotationBatch batch;
             for (int i = 0; i < n; ++i) {
                 batch.add(static_cast<std::uint32_t>(i), p);
-                if (batch.full()) batch.flush(p, kick, drift);
+                if (batch.full()) flushRotationBatch(batch, p, kick, drift);
             }
-            batch.flush(p, kick, drift);
+            flushRotationBatch(batch, p, kick, drift);
             double worstQ = 0, worstL = 0, worstOmega = 0;
             for (int i = 0; i < n; ++i) {
                 Quat q = before.orientation[i];
@@ -59,9 +59,15 @@ TALUS_LANE_TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
                     EXPECT_EQ(p.angularVelocity[i], Vec3::Zero());
                 }
             }
-            EXPECT_LT(worstQ, 1e-15) << n << " particles, drift " << drift;
-            EXPECT_LT(worstL, 1e-15) << n << " particles, drift " << drift;
-            EXPECT_LT(worstOmega, 1e-15) << n << " particles, drift " << drift;
+            // The one-particle calls are inline functions of the kernel that the compiler keeps out
+            // of line, and the program links them from a baseline object (no fused multiply-add),
+            // while the batch here fuses in the avx2 and avx512 forms: measured 1.4e-14 and 2.1e-14
+            // (q), 1.3e-15 (omega) there, against 1e-15 in the scalar form. A lane mixed up with
+            // another is off by O(1).
+            const double tolerance = compiledLaneForm == LaneForm::scalar ? 1e-15 : 1e-13;
+            EXPECT_LT(worstQ, tolerance) << n << " particles, drift " << drift;
+            EXPECT_LT(worstL, tolerance) << n << " particles, drift " << drift;
+            EXPECT_LT(worstOmega, tolerance) << n << " particles, drift " << drift;
         }
     }
 }

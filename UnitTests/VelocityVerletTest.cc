@@ -27,7 +27,7 @@ ParticleStore someParticles() {
     return p;
 }
 
-bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+[[maybe_unused]] bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
