@@ -9,14 +9,17 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "Integration/Integrator.h"
+#include "Integration/StepWorkspace.h"
 #include "IO/CommandLine.h"
 #include "IO/OutputFiles.h"
 #include "IO/Progress.h"
 #include "IO/RestartFile.h"
 #include "Parallel/DomainSplit.h"
-#include "Particles/RotationBatch.h"
+#include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
+#include "SimulationHost.h"
 
 namespace talus {
 
@@ -31,6 +34,8 @@ bool isOutputStep(std::uint64_t step, std::uint64_t k, std::uint64_t steps, std:
 }  // namespace
 
 Simulation::~Simulation() = default;
+
+const ContactSummary& Simulation::contactSummary() const { return work_->summary; }
 
 // --- settings ---
 
@@ -135,7 +140,7 @@ void Simulation::addTextFlag(const std::string& name, const std::string& help, s
 
 Energies Simulation::energies() const {
     Energies e = particleEnergies(state_.particles, state_.gravity);
-    e.elastic = elasticEnergy_;
+    e.elastic = work_->elasticEnergy;
     if (!onRanks()) return e;
     const Vec3 moment = e.mass > 0 ? Vec3(e.mass * e.centreOfMass) : Vec3::Zero();
     std::vector<double> sums = {e.gravitational, e.kinetic, e.rotational, e.mass, moment.x(), moment.y(), moment.z()};
@@ -215,36 +220,24 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
-    stepsInWaves_ = waveNearRunsFound_ = waveNearGivenUp_ = 0;
+    integrator_->startRun();
+    if (steps > 0) integrator_->describeChoice(*host_, out, name());
     for (std::uint64_t k = 1; k <= steps; ++k) {
-        if (waveAllowed(steps - k + 1, every) && !waveHasRoom(lastDisplacement_, state_.pairList.reach))
-            buildListForWave();  // (instead of single steps until the list needs a build)
-        if (waveFits(steps - k + 1, every)) {  // several steps in one pass (SimulationWaves.cc)
-            const auto waveSteps = static_cast<std::uint64_t>(state_.settings.waveSteps);
-            const std::uint64_t last = k + waveSteps - 1;
-            const bool savingLast = isOutputStep(state_.step + waveSteps, last, steps, every);
-            actionsBeforeTimeStep();
-            const std::uint64_t done = integrateWave(savingLast);
-            k += done - 1;
-            actionsAfterTimeStep();
-            if (k == last && savingLast) {
-                writeOutput();
-                records_.release();
-            }
-            progress.update(state_.time, k, mobile);
-            continue;
-        }
-        const bool saving = isOutputStep(state_.step + 1, k, steps, every);
+        // A step, or a wave of several (Integration/Integrator.h); output after its last step.
+        const std::uint64_t advance = integrator_->stepsNext(*host_, steps - k + 1, every);
+        const std::uint64_t last = k + advance - 1;
+        const bool saving = isOutputStep(state_.step + advance, last, steps, every);
         actionsBeforeTimeStep();
-        integrate(saving);
+        integrator_->advance(*host_, saving);
+        k = last;
         actionsAfterTimeStep();
         if (saving) {
             writeOutput();
-            records_.release();  // (the next output step records anew)
+            work_->records.release();  // (the next output step records anew)
         }
-        // Boundaries may add and delete particles: count again when the number changed (on
-        // ranks, where that takes all ranks, every 256 steps).
-        if (onRanks() ? (k & 255) == 0 : state_.particles.size() != counted) {
+        // Boundaries may add and delete particles (waves run without them): count again when the
+        // number changed (on ranks, where that takes all ranks, every 256 steps).
+        if (advance == 1 && (onRanks() ? (k & 255) == 0 : state_.particles.size() != counted)) {
             counted = state_.particles.size();
             mobile = mobileParticleCount();
         }
@@ -252,8 +245,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     }
     progress.finish(state_.time, steps);
     if (steps > 0) {
-        if (onRanks()) positionsChangedBetweenSteps_ = static_cast<std::uint64_t>(sumOverRanks(
-                           static_cast<double>(positionsChangedBetweenSteps_)));
+        std::uint64_t& positionsChanged = work_->positions.changedBetweenSteps;
+        if (onRanks()) positionsChanged = static_cast<std::uint64_t>(sumOverRanks(static_cast<double>(positionsChanged)));
         // Rebuilds cost a full neighbour search; boundaries that delete particles force one,
         // those that add or move a few have their pairs relisted.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
@@ -265,11 +258,11 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
         if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
-        if (positionsChangedBetweenSteps_ > 0 && state_.pairList.nearSkinFraction > 0)
-            out << "; particles moved between steps (by hand) found at " << positionsChangedBetweenSteps_
-                << (positionsChangedBetweenSteps_ == 1 ? " step" : " steps") << ": the near list made anew";
+        if (positionsChanged > 0 && state_.pairList.nearSkinFraction > 0)
+            out << "; particles moved between steps (by hand) found at " << positionsChanged
+                << (positionsChanged == 1 ? " step" : " steps") << ": the near list made anew";
         out << std::endl;
-        reportWaves(out, steps);
+        integrator_->report(*host_, out, name(), steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
     actionsAfterSolve();
@@ -313,15 +306,15 @@ void Simulation::initialise(bool restarted) {
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
     state_.species.validate();
     if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
-        laws_ = state_.species.table<LinearSpringDashpot>();
+        work_->laws = state_.species.table<LinearSpringDashpot>();
     else
-        laws_ = state_.species.table<HertzMindlin>();
+        work_->laws = state_.species.table<HertzMindlin>();
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
     split_ = std::make_unique<DomainSplit>(worldCommunicator());
     if (rankGrid_[0] > 0) split_->setGrid(rankGrid_);
-    grid_ = HGrid(c.cellSizeRatio);
+    work_->grid = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
         double rmin = INFINITY;
         for (double r : state_.particles.radius) rmin = std::min(rmin, r);
@@ -340,44 +333,26 @@ void Simulation::initialise(bool restarted) {
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
     if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
     if (onRanks()) splitScene();
-    positionsChangedBetweenSteps_ = 0;
+    PositionWatch& positions = work_->positions;
+    positions.changedBetweenSteps = 0;
     if (restarted) {
-        continueWavesAfterRestart();
-        notePositionsLeft(positionSum(state_.particles, state_.particles.owned()));
+        integrator_->afterRestart(*host_);
+        positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
         return;
     }
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
-    computeForces(&records_, OverlapCheck::none);
+    computeForces(/*recordContacts*/ true, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
-    notePositionsLeft(positionSum(state_.particles, state_.particles.owned()));
+    positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
     writeOutput();
-    records_.release();
+    work_->records.release();
 }
 
-// The near list (NearPairs) holds while the particles move by the steps' drifts alone: a step
-// that finds the positions other than the last step left them (a driver's hook moved particles
-// by hand) unmakes it, to be made anew at the positions as they are. (The neighbour list
-// itself measures the particles' real displacements: PairList::needsRebuild.)
-void Simulation::notePositionsLeft(std::uint64_t sum) {
-    positionsLeft_ = sum;
-    particlesLeft_ = state_.particles.owned();
-}
-
-void Simulation::checkPositionsFound(std::uint64_t found) {
-    if (positionsLeft_ && *positionsLeft_ == found) return;
-    PairList& list = state_.pairList;
-    // (Counted where the near list would have been swept: particles added, removed or moved by
-    // moveParticleBy change the list, which makes it anew anyway.)
-    if (state_.particles.owned() == particlesLeft_ && list.noted().empty() &&
-        nearPairsAreCurrent(list, list.nearSkinFraction * list.skin))
-        ++positionsChangedBetweenSteps_;
-    list.near.made = false;
-    positionsChangedThisStep_ = true;  // (on ranks, the ghosts of the moved particles moved too)
-}
-
-void Simulation::computeForces(ContactRecords* records, OverlapCheck check, const DriftPassResult* drifted) {
+void Simulation::computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted) {
+    StepWorkspace& work = *work_;
+    ContactRecords* records = recordContacts ? &work.records : nullptr;
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
@@ -390,40 +365,39 @@ void Simulation::computeForces(ContactRecords* records, OverlapCheck check, cons
                           : list.needsRebuild(p, state_.domain, state_.time, state_.settings.timeStep);
         if (rebuild && state_.settings.reorderParticles) reorderParticles(/*withPreviousForces*/ drifted != nullptr);
     }
-    // The forces of the last step become previousForce_ by a swap (no copy: at 10^6 particles a
+    // The forces of the last step become previousForce by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity (done by
     // the drift pass if there was one).
     if (!drifted) {
-        previousForce_.swap(p.force);
+        work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }
     if (rebuild && onRanks())
-        list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep, std::move(carried));
+        list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, std::move(carried));
     else if (rebuild)
-        list.rebuild(p, state_.domain, state_.walls, grid_, state_.settings.timeStep);
+        list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep);
     const bool idOrdered = state_.settings.idOrderedSums;
-    if (rebuild && idOrdered) idOrderedForceSums_.rebuild(list, p);
-    if (rebuild) lastDisplacement_ = 0;  // (the positions are the new reference)
-    if (rebuild && state_.settings.waveSteps > 1) makeWaveSchedule();
-    PairContribution* perPair = idOrdered ? idOrderedForceSums_.contributions(list.pairs.size()).data() : nullptr;
-    summary_ = ContactSummary{};
+    if (rebuild && idOrdered) work.idOrderedForceSums.rebuild(list, p);
+    if (rebuild) integrator_->afterListBuild(*host_);  // (the wave schedule of the new list)
+    PairContribution* perPair = idOrdered ? work.idOrderedForceSums.contributions(list.pairs.size()).data() : nullptr;
+    work.summary = ContactSummary{};
     if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
     std::visit(
         [&](const auto& laws) {
             addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
-                             state_.settings.timeStep, state_.pairList.maxSpeed, previousForce_, summary_, records,
-                             &state_.shapes, perPair);
+                             state_.settings.timeStep, state_.pairList.maxSpeed, work.previousForce, work.summary,
+                             records, &state_.shapes, perPair);
         },
-        laws_);
-    if (idOrdered) idOrderedForceSums_.addTo(p);
+        work.laws);
+    if (idOrdered) work.idOrderedForceSums.addTo(p);
     if (records) {
-        elasticEnergy_ = records->elasticEnergy();
-        recordedContacts_ = records->count();
+        work.elasticEnergy = records->elasticEnergy();
+        work.recordedContacts = records->count();
         if (onRanks()) {  // (one reduction for both)
-            std::vector<double> totals{elasticEnergy_, static_cast<double>(recordedContacts_)};
+            std::vector<double> totals{work.elasticEnergy, static_cast<double>(work.recordedContacts)};
             sumOverRanks(totals);
-            elasticEnergy_ = totals[0];
-            recordedContacts_ = static_cast<std::size_t>(totals[1]);
+            work.elasticEnergy = totals[0];
+            work.recordedContacts = static_cast<std::size_t>(totals[1]);
         }
     }
     if (check != OverlapCheck::none)
@@ -451,7 +425,7 @@ void Simulation::reorderParticles(bool withPreviousForces) {
     // With waves, the order of their cells (Contacts/WaveSchedule.h), where the box has them.
     // (the reach the coming build takes: PairList::rebuild)
     const std::optional<WaveCells> cells =
-        waveCellsForBuild(state_.pairList.reachOfNextBuild(state_.settings.timeStep), nullptr);
+        integrator_->cellsForBuild(*host_, state_.pairList.reachOfNextBuild(state_.settings.timeStep));
     const std::vector<std::size_t> order =
         cells ? cells->order(p.position)
               : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);
@@ -462,113 +436,10 @@ void Simulation::reorderParticles(bool withPreviousForces) {
     if (withPreviousForces) {  // (the drift pass has made them the last step's already)
         std::vector<Vec3> sorted;
         sorted.reserve(order.size());
-        for (std::size_t k : order) sorted.push_back(previousForce_[k]);
-        previousForce_.swap(sorted);
+        for (std::size_t k : order) sorted.push_back(work_->previousForce[k]);
+        work_->previousForce.swap(sorted);
     }
     state_.pairList.followPermutation(order);
-}
-
-void Simulation::moveWithPrescribedMotion() {
-    const double dt = state_.settings.timeStep;
-    if (state_.motions.empty()) return;
-    std::vector<Mat3> rotation;
-    for (const PrescribedMotion& m : state_.motions) rotation.push_back(m.stepRotation(dt));
-    ParticleStore& p = state_.particles;
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        if (p.motion[i] < 0) continue;
-        const PrescribedMotion& m = state_.motions[p.motion[i]];
-        p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
-    }
-    for (Wall& w : state_.walls) {
-        if (w.motion < 0) continue;
-        w.point = state_.motions[w.motion].moved(w.point, rotation[w.motion], dt);
-        w.normal = (rotation[w.motion] * w.normal).normalized();
-    }
-    if (p.hasShapes())
-        for (std::size_t i = 0; i < p.owned(); ++i)
-            if (p.motion[i] >= 0 && p.shape[i] >= 0)
-                p.orientation[i] = Quat(rotation[p.motion[i]] * p.orientation[i].toRotationMatrix()).normalized();
-    for (PrescribedMotion& m : state_.motions) m.advanceCentre(dt);
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        if (p.motion[i] < 0) continue;
-        const PrescribedMotion& m = state_.motions[p.motion[i]];
-        p.velocity[i] = m.pointVelocity(p.position[i]);
-        p.angularVelocity[i] = m.angularVelocity;
-    }
-}
-
-Vec3 Simulation::sweepFrame() const {
-    if (!state_.pairList.sweepInFlowFrame) return Vec3::Zero();
-    return driftFrame_ ? *driftFrame_ : sweepFrameVelocity(state_.particles);
-}
-
-// Velocity Verlet (SPEC.md 1): half kick, drift, forces at the new positions, half kick.
-void Simulation::integrate(bool recordContacts) {
-    ParticleStore& p = state_.particles;
-    const double dt = state_.settings.timeStep;
-    const double half = 0.5 * dt;
-    const std::size_t owned = p.owned();  // ghosts are their owners' business
-    std::optional<DriftPassResult> drifted;
-    if (driftsInOnePass()) {
-        PairList& list = state_.pairList;
-        const Vec3 frame = sweepFrame();
-        drifted = kickDriftAndStartForces(p, previousForce_, state_.domain,
-                                          list.comparable(p) ? &list.referencePosition : nullptr, state_.gravity,
-                                          frame, dt, list.sweepPointScratch);
-        checkPositionsFound(drifted->positionsBefore);
-        list.sweepPointsGrowth = drifted->growth;
-        driftFrame_ = drifted->meanVelocity;
-        lastDisplacement_ = std::sqrt(drifted->moves.displacement2);
-    } else {
-        checkPositionsFound(positionSum(p, owned));
-        driftFrame_.reset();
-        halfKickAndDrift(p, owned, half, dt);
-        if (p.hasShapes()) turnShapedParticles(half, dt);
-        moveWithPrescribedMotion();
-        if (state_.domain.anyPeriodic()) state_.domain.wrap(p.position.data(), owned);
-    }
-    state_.time += dt;
-    ++state_.step;
-    for (Boundary* b : boundaries_) b->afterDrift(*this);
-    computeForces(recordContacts ? &records_ : nullptr,
-                  recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep, drifted ? &*drifted : nullptr);
-    halfKick(p, p.owned(), half);
-    if (p.hasShapes()) turnShapedParticles(half, 0);
-    notePositionsLeft(drifted ? drifted->positionsAfter : positionSum(p, p.owned()));
-}
-
-// Particles/DriftPass.h: where nothing but the particles' own motion happens between the drift
-// and the forces, and the pair list's sweep is the one of one rank.
-bool Simulation::driftsInOnePass() const {
-    const ParticleStore& p = state_.particles;
-    return driftInOnePass_ && !onRanks() && p.ghostCount == 0 && !p.hasShapes() && state_.motions.empty() &&
-           boundaries_.empty() && !state_.domain.oneWay.active && state_.pairList.noted().empty();
-}
-
-bool Simulation::defaultDriftInOnePass() {
-    static const bool onePass = [] {
-        const char* text = std::getenv("TALUS_DRIFT_PASS");
-        if (!text) return true;
-        const std::string value = text;
-        require(value == "on" || value == "off", "TALUS_DRIFT_PASS must be 'on' or 'off', got '" + value + "'");
-        return value == "on";
-    }();
-    return onePass;
-}
-
-// The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half
-// kick of the angular momentum by the torque, then (drift > 0) the torque-free turn of the
-// orientation over the step; the angular velocity the contacts see follows from both. In
-// batches of lanes (Particles/RotationBatch.h).
-void Simulation::turnShapedParticles(double kick, double drift) {
-    ParticleStore& p = state_.particles;
-    RotationBatch batch;
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        if (p.fixed[i] || p.shape[i] < 0) continue;
-        batch.add(static_cast<std::uint32_t>(i), p);
-        if (batch.full()) batch.flush(p, kick, drift);
-    }
-    batch.flush(p, kick, drift);
 }
 
 void Simulation::writeOutput() {
@@ -577,7 +448,7 @@ void Simulation::writeOutput() {
     // Particles added since the forces (a driver's actionsAfterTimeStep) are relisted now, in the
     // run that goes on and, through the restart file, in the one that restarts from here.
     state_.pairList.relist(state_.particles, state_.domain, state_.walls);
-    files_->writeFrame(state_, records_.each(), recordedContacts_, elasticEnergy_);
+    files_->writeFrame(state_, work_->records.each(), work_->recordedContacts, work_->elasticEnergy);
     saveKeptValues();
     files_->writeRestart(state_);
 }

@@ -1,8 +1,8 @@
-// talus::Simulation, the base class of every driver (DESIGN.md "The driver contract").
+// talus::Simulation, the base class of every driver (Documentation/Architecture.md "The driver contract").
 //
 // A driver sets species, particles, walls and boundaries in setupInitialConditions() and may
 // override the hooks; main() sets the name, time step and end time and calls solve(argc, argv).
-// The time loop is velocity Verlet (SPEC.md 1): half kick, drift, prescribed motions, periodic
+// The time loop is velocity Verlet (Theory/Integration.md eq. (3)-(6)): half kick, drift, prescribed motions, periodic
 // wrap, boundaries (addBoundary), neighbour-list update when needed, forces, half kick.
 #pragma once
 
@@ -16,19 +16,19 @@
 #include <vector>
 
 #include "Boundaries/Boundary.h"
-#include "Contacts/ContactForces.h"
-#include "Contacts/HGrid.h"
+#include "Contacts/ContactReport.h"
 #include "Error.h"
-#include "Particles/DriftPass.h"
+#include "Integration/StepHost.h"
 #include "Particles/Energies.h"
-#include "Particles/RigidBodyRotation.h"
 #include "SimulationState.h"
 
 namespace talus {
 
 class CommandLine;
 class DomainSplit;
+class Integrator;
 class OutputFiles;
+struct StepWorkspace;
 
 class Simulation {
 public:
@@ -52,29 +52,10 @@ public:
     // Particles/SpaceFillingCurve.h). Slots then change during a run: find a particle by its id.
     void setParticleReordering(bool on) { state_.settings.reorderParticles = on; }
     void setVtuOutput(bool on) { state_.settings.writeVtu = on; }
-    // The first half of each step in one pass over the particles where the scene allows it
-    // (Particles/DriftPass.h; default on, TALUS_DRIFT_PASS=off for measurements): the same
-    // trajectories as the pass-by-pass step, for tests that compare the two.
-    void setDriftInOnePass(bool on) { driftInOnePass_ = on; }
-    bool driftsInOnePass() const;  // whether the next step will
-    // Several steps per pass over the particles (time skewing, Contacts/WaveSchedule.h,
-    // Documentation/TimeSkewing.md): waves of `steps` steps (1, the default: one step per pass)
-    // in strips of about `stripColumns` cells, where the scene allows them (spheres in a box
-    // periodic along x and y, one rank, nothing but the particles' own motion between steps, no
-    // output within the wave). The same physics as single steps, the forces summed in another
-    // order (round-off); actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
-    // Without stripColumns, the width set before, else 8 columns per step of the wave (64 for
-    // waves of 8: strips of 64-128 columns measured fastest, Documentation/TimeSkewing.md "Using it").
-    void setWaves(int steps, int stripColumns);
-    void setWaves(int steps);
-    int waveStripColumns() const {
-        const RunSettings& c = state_.settings;
-        return c.waveStripColumns > 0 ? c.waveStripColumns : 8 * c.waveSteps;
-    }
-    // Steps taken in waves since the start of the last solve (for tests and the benchmark).
-    std::uint64_t stepsInWaves() const { return stepsInWaves_; }
-    std::uint64_t wavesOffTheNearList() const { return waveNearGivenUp_; }  // (given up mid-wave)
     void setFileOutput(bool on);  // all of .data, .fstat, .ene, .vtu and .restart
+    // The run settings, with settings().stepper the steppers' tuning (Integration/StepperTuning.h:
+    // waves of several steps per pass, Documentation/TimeSkewing.md; the drift pass). With waves,
+    // actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
     RunSettings& settings() { return state_.settings; }
 
     // A driver's own flag --name VALUE, listed by --help, parsed before setupInitialConditions.
@@ -109,7 +90,7 @@ public:
                             const Vec3& velocity = Vec3::Zero(), const Vec3& angularVelocity = Vec3::Zero());
     // A fixed particle: never integrated, still collides; follows motion if motion >= 0.
     std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
-    // Superquadric particles (SPEC.md 4): a shape added once, then particles of it. The particle's
+    // Superquadric particles (Theory/Superquadrics.md): a shape added once, then particles of it. The particle's
     // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
     // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
     std::size_t addShape(const Superquadric& shape);
@@ -151,9 +132,9 @@ public:
     void sumOverRanks(std::vector<double>& values) const;
     // The domain split of the run (after solve has set it up; one rank without mpirun).
     const DomainSplit* domainSplit() const { return split_.get(); }
-    // A driver whose hooks are rank-aware (they loop over owned() particles, sum over ranks and
-    // write files on rank 0 only) says so; any other refuses to start on more than one rank
-    // rather than measure only the particles of one rank.
+    // Drivers run on ranks by default: their measurements go through Kernel/Sampling (whole-scene
+    // sums, files and messages written once). A driver whose hooks read particles() directly for
+    // whole-scene numbers says setRunsOnRanks(false) and then refuses to start on more ranks.
     void setRunsOnRanks(bool on) { runsOnRanks_ = on; }
     // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
     // done at the start and after every save anyway.
@@ -188,13 +169,16 @@ public:
 
     // Energies of the mobile particles; elastic energy of the last force evaluation.
     Energies energies() const;
-    const ContactSummary& contactSummary() const { return summary_; }
-    // The shortest collision time over the species pairs present (SPEC.md 1), and what it is.
+    const ContactSummary& contactSummary() const;
+    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is.
     double shortestCollisionTime(std::string* which = nullptr) const;
 
     SimulationState& state() { return state_; }
     const SimulationState& state() const { return state_; }
     const PairList& pairList() const { return state_.pairList; }
+    // The steppers (Integration/Integrator.h): which took the steps of the last solve, and their
+    // statistics (integrator().statistics()).
+    const Integrator& integrator() const { return *integrator_; }
 
 protected:
     // --- hooks ---
@@ -206,43 +190,17 @@ protected:
     virtual void actionsAfterSolve() {}
 
 private:
+    class Host;  // the StepHost the steppers advance (Simulation.cc)
     void initialise(bool restarted);
     void refuseContradictions(const RunSettings& saved, const std::string& restartFile) const;
     void checkTimeStep() const;
-    // How computeForces checks the overlaps against their limit: not at all (the caller checks),
-    // agreed by all ranks at once, or (on ranks) agreed with the next step's neighbourhood: one
-    // collective per step instead of two. Output steps and the last step agree at once, so that
-    // no file holds a state past a blow-up that a rank has found.
-    enum class OverlapCheck { none, now, withNextStep };
-    // drifted: what the step's drift pass measured (Particles/DriftPass.h), which has also made the
-    // sweep's points and started the forces; null: computeForces measures and starts them itself.
-    void computeForces(ContactRecords* records, OverlapCheck check = OverlapCheck::now,
-                       const DriftPassResult* drifted = nullptr);
+    // The forces at the positions now, the neighbour list updated first (StepHost::computeForces).
+    void computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted = nullptr);
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);
     std::size_t slotOf(std::uint64_t id, bool ghosts) const;
-    void integrate(bool recordContacts);
-    // The frame velocity of the sweep's growths (PairSweep.h) for a drift pass: the mean velocity
-    // the last pass measured, or a sample's; zero when the list sweeps in the box's frame.
-    Vec3 sweepFrame() const;
-    void moveWithPrescribedMotion();
-    void turnShapedParticles(double kick, double drift);
     void requireMotion(int motion, const std::string& what) const;
     std::size_t fixParticle(std::size_t slot, int motion);
     void reorderParticles(bool withPreviousForces);
-    // Waves (SimulationWaves.cc).
-    bool waveFits(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
-    bool waveAllowed(std::uint64_t stepsLeft, std::uint64_t saveEvery) const;
-    bool waveHasRoom(double displacement, double reach) const;
-    void buildListForWave();
-    // Returns the steps it took; recordContacts: at its last step.
-    std::uint64_t integrateWave(bool recordContacts);
-    void makeWaveSchedule();
-    const PlaceRun* nearPairsForWave(const Vec3& frame);
-    void continueWavesAfterRestart();
-    void checkPositionsFound(std::uint64_t found);
-    void notePositionsLeft(std::uint64_t sum);
-    void reportWaves(std::ostream& out, std::uint64_t steps) const;
-    std::optional<WaveCells> waveCellsForBuild(double reach, std::string* why) const;
     std::uint64_t saveEvery() const;
 
     // On more than one rank (Parallel/SimulationOnRanks.cc).
@@ -255,37 +213,12 @@ private:
     std::string overlapsToAgree_;  // this rank's overlap blow-up, for the next step's agreement
     void writeGatheredOutput();
 
-    using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;
-
     SimulationState state_;
-    HGrid grid_;
-    LawTables laws_;
-    ContactSummary summary_;
-    double elasticEnergy_ = 0;
-    ContactRecords records_;        // of the last output step (each contact only with .fstat)
-    std::size_t recordedContacts_ = 0;  // their number (on ranks, over all ranks)
-    bool driftInOnePass_ = defaultDriftInOnePass();
-    std::optional<Vec3> driftFrame_;  // the last drift pass's mean velocity (DriftPassResult)
-    static bool defaultDriftInOnePass();
-    IdOrderedForceSums idOrderedForceSums_;  // used with settings().idOrderedSums
-    std::vector<Vec3> previousForce_;  // the forces of the last step (ContactKinematics::otherAcceleration)
-    WaveSchedule waveSchedule_;               // over every listed pair
-    std::uint64_t waveScheduleBuild_ = 0;     // the list build it was made for (0: none)
-    std::string waveScheduleRefusal_;         // why the last build has none
-    double waveLargestRadius_ = 0;            // at that build
-    std::vector<PlaceRun> waveNearRuns_;    // per run of the schedule, its pairs' places in the near list
-    std::uint64_t waveNearRunsMake_ = 0;     // the near list they were found in (NearPairs::makes)
-    std::uint64_t waveNearRunsFound_ = 0;         // found in the run
-    std::uint64_t waveNearGivenUp_ = 0;       // waves of the run that went on over the whole list
-    double lastDisplacement_ = 0;          // the largest since the build, of the positions now
-    // positionSum (Particles/DriftPass.h) of the positions the last step or the set-up left (of
-    // that many owned particles), and the steps that found other positions of as many particles
-    // (moved by hand between steps: the near list unmade).
-    std::optional<std::uint64_t> positionsLeft_;
-    std::size_t particlesLeft_ = 0;
-    std::uint64_t positionsChangedBetweenSteps_ = 0;
-    bool positionsChangedThisStep_ = false;  // (on ranks, for all ranks to unmake their near lists)
-    std::uint64_t stepsInWaves_ = 0;
+    // Outside the saved state: the force loop's scratch and what the steppers keep between steps
+    // (Integration/StepWorkspace.h), the steppers, and the host they advance.
+    std::unique_ptr<StepWorkspace> work_;
+    std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<Host> host_;
     std::unique_ptr<CommandLine> commandLine_;
     struct KeptValue {
         std::string name;
@@ -308,7 +241,7 @@ private:
     // request, and every rebalanceInterval_ of simulated time.
     double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
     std::array<int, 3> rankGrid_{0, 0, 0};  // --rank-grid; zeros: all ranks along x
-    bool runsOnRanks_ = false;
+    bool runsOnRanks_ = true;
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     RunStatistics lastRun_;

@@ -1,7 +1,9 @@
-// What stops a run before it goes wrong (DESIGN.md, "never silently wrong"): a time step too
+// What stops a run before it goes wrong (Documentation/Reliability.md): a time step too
 // large for the stiffest contact present, and overlaps beyond a sane fraction of the radius, at
 // the start (bad input) and during the run (a blow-up). Part of talus::Simulation.
 #include <sstream>
+
+#include "Integration/StepWorkspace.h"
 
 #include "Simulation.h"
 
@@ -72,7 +74,7 @@ void Simulation::checkTimeStep() const {
 // are bad input, during the run a blow-up.
 void Simulation::checkOverlaps(double limit, bool initial, bool agreeNow) {
     std::string diagnosis;
-    if (summary_.maxOverlapFraction > limit) {
+    if (work_->summary.maxOverlapFraction > limit) {
         std::ostringstream m;
         auto at = [this](std::uint64_t id) {
             std::ostringstream where;
@@ -80,12 +82,12 @@ void Simulation::checkOverlaps(double limit, bool initial, bool agreeNow) {
             return where.str();
         };
         if (initial)
-            m << "initial conditions: particle id " << summary_.worstA;
+            m << "initial conditions: particle id " << work_->summary.worstA;
         else
-            m << "blow-up at t = " << state_.time << ": particle id " << summary_.worstA << at(summary_.worstA);
-        m << " and " << (summary_.worstIsWall ? "wall " : "particle id ") << summary_.worstB
-          << (summary_.worstIsWall || initial ? std::string() : at(summary_.worstB)) << " overlap by "
-          << 100 * summary_.maxOverlapFraction << "% of the smaller radius (limit " << 100 * limit;
+            m << "blow-up at t = " << state_.time << ": particle id " << work_->summary.worstA << at(work_->summary.worstA);
+        m << " and " << (work_->summary.worstIsWall ? "wall " : "particle id ") << work_->summary.worstB
+          << (work_->summary.worstIsWall || initial ? std::string() : at(work_->summary.worstB)) << " overlap by "
+          << 100 * work_->summary.maxOverlapFraction << "% of the smaller radius (limit " << 100 * limit;
         if (initial)
             m << "%, settings().maxInitialOverlapFraction); place them further apart or make them smaller";
         else

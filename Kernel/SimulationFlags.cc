@@ -5,11 +5,18 @@
 
 #include "IO/CommandLine.h"
 #include "IO/OutputFiles.h"     // (complete types for the members the constructor may have to destroy)
+#include "Integration/Integrator.h"
+#include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
+#include "SimulationHost.h"
 
 namespace talus {
 
-Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
+Simulation::Simulation()
+    : work_(std::make_unique<StepWorkspace>()),
+      integrator_(std::make_unique<Integrator>()),
+      host_(std::make_unique<Host>(*this)),
+      commandLine_(std::make_unique<CommandLine>()) {
     RunSettings& c = state_.settings;
     CommandLine& cl = *commandLine_;
     cl.add("end-time", "T", "simulated time at which the run stops",
@@ -35,9 +42,13 @@ Simulation::Simulation() : commandLine_(std::make_unique<CommandLine>()) {
     cl.add("wave-steps", "N",
            "advance stretches of the bed N steps at a time while they are cached (time skewing; 1: a step per pass, "
            "the default); periodic x and y, spheres, one rank",
-           [this](const std::string& v) { setWaves(CommandLine::toInt("wave-steps", v)); });
+           [&c](const std::string& v) { c.stepper.setWaves(CommandLine::toInt("wave-steps", v)); });
     cl.add("wave-strip", "C", "columns of cells per strip of the waves (default 8 per step of the waves: 64 for 8)",
-           [this, &c](const std::string& v) { setWaves(c.waveSteps, CommandLine::toInt("wave-strip", v)); });
+           [&c](const std::string& v) { c.stepper.setWaves(c.stepper.waveSteps, CommandLine::toInt("wave-strip", v)); });
+    cl.add("drift-pass", "on|off",
+           "the first half of each step in one pass over the particles where the scene allows it (on, the default), "
+           "or pass by pass: the same trajectories, for measurements",
+           [&c](const std::string& v) { c.stepper.driftPass = CommandLine::toBool("drift-pass", v); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("fstat", "on|off",

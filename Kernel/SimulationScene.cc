@@ -1,10 +1,11 @@
-// Building and editing the scene (DESIGN.md): the box, species, particles, walls and prescribed
+// Building and editing the scene (Documentation/Architecture.md "The driver contract"): the box, species, particles, walls and prescribed
 // motions a driver sets up, and the particles it adds, moves or removes during a run. Part of
 // talus::Simulation.
 #include <algorithm>
 #include <cmath>
 
 #include "Parallel/DomainSplit.h"
+#include "Particles/RigidBodyRotation.h"
 #include "Simulation.h"
 
 namespace talus {

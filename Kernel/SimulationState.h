@@ -10,6 +10,7 @@
 
 #include "Boundaries/Domain.h"
 #include "Contacts/PairList.h"
+#include "Integration/StepperTuning.h"
 #include "Particles/ParticleStore.h"
 #include "Shapes/Superquadric.h"
 #include "Species/SpeciesTable.h"
@@ -34,8 +35,9 @@ struct RunSettings {
     // keeps them: Documentation/FileFormats/restart.md):
     bool idOrderedSums = false;  // in the order of partners' ids (--id-ordered-sums, IdOrderedForceSums.h)
     bool relist = true;          // pairs of added or moved particles relisted (--relist; PairList::maxRelisted)
-    int waveSteps = 1;           // steps per wave (--wave-steps; Simulation::setWaves)
-    int waveStripColumns = 0;    // columns per strip of the waves (--wave-strip; 0: 8 per wave step)
+    // How the steppers advance the run (waves: --wave-steps, --wave-strip; --drift-pass); the
+    // restart file keeps the waves' steps and strip width, not the drift pass.
+    StepperTuning stepper;
 };
 
 // How far each output file got: its byte size after the last saved frame, so that a restart

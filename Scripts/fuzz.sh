@@ -2,11 +2,14 @@
 # Fuzzes the readers with libFuzzer (SelfTests/Fuzz): builds the targets with clang under
 # AddressSanitizer and UndefinedBehaviorSanitizer in their own build folder, seeds each with the
 # repository's files (SelfTests/Fuzz/Seeds, Regressions) and with cuts of the MercuryDPM and
-# peer files in ../shared when present, runs each for the given minutes, and writes a summary:
+# peer files in $FUZZ_SHARED when present, runs each for the given minutes, and writes a summary:
 # executions, corpus size and new findings per target.
 #   Scripts/fuzz.sh [minutes per target, default 2] [target ...]
 #   targets: lammps-data talus-restart cg-data cg-fstat cg-restart command-line (default: all)
-# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default <repo>/../shared).
+# Environment: FUZZ_BUILD (default <repo>/build-fuzz), FUZZ_SHARED (default: the folder
+# 'shared' next to the repository, which holds the peers' start files), FUZZ_JOBS (targets
+# fuzzed at once, default 1; each uses one core), FUZZ_PROGRESS (seconds between progress lines,
+# default 60).
 # Each finding (a crash, a hang, running out of memory, or a reader that accepted garbage) is a
 # file in $FUZZ_BUILD/findings/TARGET/: reproduce it with $FUZZ_BUILD/SelfTests/Fuzz/fuzz-TARGET
 # FILE, fix the reader, and commit the file to SelfTests/Fuzz/Regressions/TARGET/ under a name
@@ -63,19 +66,23 @@ for lammps in "$shared"/peers/data/*.data "$shared"/reference/mercury/*.data; do
 done
 
 summary=$build/fuzz-summary.txt
+jobs=${FUZZ_JOBS:-1}
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: FUZZ_JOBS must be a positive integer, got '$jobs'"; exit 2; }
 {
-  echo "Fuzzing $(date -u +%Y-%m-%dT%H:%MZ), $seconds s per target, commit $(git -C "$top" rev-parse --short HEAD)"
+  echo "Fuzzing $(date -u +%Y-%m-%dT%H:%MZ), $seconds s per target, $jobs at once, commit $(git -C "$top" rev-parse --short HEAD)"
   printf '%-14s %12s %10s %8s %9s\n' target executions "exec/s" corpus findings
 } >"$summary"
-status=0
-for t in "${targets[@]}"; do
-  corpus=$build/corpus/$t
-  findings=$build/findings/$t
+
+# Fuzzes one target and writes its summary line to $build/TARGET.summary.
+fuzz_target() {
+  local t=$1
+  local corpus=$build/corpus/$t findings=$build/findings/$t
   mkdir -p "$corpus" "$findings"
+  local before
   before=$(ls "$findings" | wc -l)
-  inputs=("$corpus" "$top/SelfTests/Fuzz/Seeds/$t" "$seeds/$t")
+  local inputs=("$corpus" "$top/SelfTests/Fuzz/Seeds/$t" "$seeds/$t")
   [ -d "$top/SelfTests/Fuzz/Regressions/$t" ] && inputs+=("$top/SelfTests/Fuzz/Regressions/$t")
-  dict=()
+  local dict=()
   [ -f "$top/SelfTests/Fuzz/$t.dict" ] && dict=(-dict="$top/SelfTests/Fuzz/$t.dict")
   echo "fuzz: $t for $minutes min"
   # -close_fd_mask=1: the targets' stdout (none of their messages) is not the report's.
@@ -85,12 +92,49 @@ for t in "${targets[@]}"; do
     -print_final_stats=1 -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
     >"$build/$t.log" 2>&1 || true
   # (fork mode reports its progress as "#N: cov: ..."; the last is the total)
+  local executions
   executions=$( (grep -oE '^#[0-9]+' "$build/$t.log" || true) | tail -1 | tr -d '#')
+  local after
   after=$(ls "$findings" | wc -l)
-  new=$((after - before))
-  [ "$new" -gt 0 ] && status=1
   printf '%-14s %12s %10s %8s %9s\n' "$t" "${executions:-0}" "$(( ${executions:-0} / seconds ))" \
-    "$(ls "$corpus" | wc -l)" "$new" >>"$summary"
+    "$(ls "$corpus" | wc -l)" "$((after - before))" >"$build/$t.summary"
+}
+
+# Every FUZZ_PROGRESS seconds, the latest progress line of each target still running: its
+# executions, coverage and corpus so far, and the seconds it has run.
+progress=${FUZZ_PROGRESS:-60}
+[[ "$progress" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: FUZZ_PROGRESS must be a positive integer, got '$progress'"; exit 2; }
+report_progress() {
+  while sleep "$progress"; do
+    for t in "${targets[@]}"; do
+      [ -f "$build/$t.log" ] && [ ! -f "$build/$t.summary" ] || continue
+      line=$( (grep -E '^#[0-9]+' "$build/$t.log" || true) | tail -1)
+      [ -n "$line" ] && echo "fuzz: $t ${line%% oom/*} (of ${seconds} s)"
+    done
+  done
+}
+for t in "${targets[@]}"; do rm -f "$build/$t.summary" "$build/$t.log"; done
+report_progress &
+reporter=$!
+trap 'kill "$reporter" 2>/dev/null || true' EXIT
+
+pids=()
+for t in "${targets[@]}"; do
+  if [ "${#pids[@]}" -ge "$jobs" ]; then
+    wait -n "${pids[@]}" || true
+    alive=()
+    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && alive+=("$p"); done
+    pids=("${alive[@]}")
+  fi
+  fuzz_target "$t" &
+  pids+=($!)
+done
+wait "${pids[@]}" || true
+kill "$reporter" 2>/dev/null || true
+status=0
+for t in "${targets[@]}"; do
+  cat "$build/$t.summary" >>"$summary"
+  [ "$(awk '{ print $5 }' "$build/$t.summary")" -gt 0 ] && status=1
 done
 cat "$summary"
 echo "logs: $build/TARGET.log; findings: $build/findings/TARGET/"

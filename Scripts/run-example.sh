@@ -14,7 +14,7 @@ rm -f PeriodicBidisperseChute.series
 "$top/build/Drivers/Chute/PeriodicBidisperseChute" --large 200 --small 400 --length 10 --width 5 \
   --end-time 30 --output-interval 1 --sample-interval 0.2 --window 50
 /usr/bin/python3 "$top/Tools/Plot/plotChuteSeries.py" PeriodicBidisperseChute.series PeriodicBidisperseChute-series.png
-# Depth profiles (SPEC.md 6): Lucy kernel of width 0.5, averaged over x and y and over the frames
+# Depth profiles (Theory/CoarseGraining.md eq. (2)): Lucy kernel of width 0.5, averaged over x and y and over the frames
 # of t = 15..30, the fixed base left out of the particle fields (its contacts still carry stress).
 "$top/build/Tools/CG/talus-cg" PeriodicBidisperseChute --coordinates Z -n 150 -z -1 14 -w 0.5 --fixed exclude \
   --time-min 15 --time-average -o PeriodicBidisperseChute-profile.csv

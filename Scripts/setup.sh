@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs every Debian package Talus needs to build, test and plot (DESIGN.md "Dependencies").
+# Installs every Debian package Talus needs to build, test and plot (README.md, Documentation/Architecture.md).
 # Safe to run again; needs root (or sudo).
 set -euo pipefail
 SUDO=""

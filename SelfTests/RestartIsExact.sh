@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Self-test: a run restarted from its .restart file writes bitwise the same files as the
-# uninterrupted run (DESIGN.md "Determinism").
+# uninterrupted run (Documentation/Architecture.md "Determinism").
 #   RestartIsExact.sh <driver> <work-dir> <end-time> <restart-time> [driver flags...]
 # With TALUS_LAUNCH set (for example "mpirun -np 2") every run is started by it.
 set -euo pipefail

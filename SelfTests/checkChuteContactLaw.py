@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the pair laws that MaserFedChute prints against SPEC.md 1 and the thesis's Table 3.C.1.
+"""Checks the pair laws that MaserFedChute prints against Theory/ContactLaws.md "Bidisperse mixtures" and the thesis's Table 3.C.1.
 
 usage: checkChuteContactLaw.py LOG SIZE_RATIO BASE_DIAMETER
 

@@ -1,4 +1,4 @@
-// The chute base class (Kernel/Chute/Chute.h, SPEC.md 2) and the chute diagnostics
+// The chute base class (Kernel/Chute/Chute.h, Theory/Chutes.md "The rough base") and the chute diagnostics
 // (Kernel/Chute/ChuteStatistics.h).
 #include <gtest/gtest.h>
 

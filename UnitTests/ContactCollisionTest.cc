@@ -1,6 +1,6 @@
 // Head-on collisions of two spheres and of a sphere with a wall, without gravity, driven through
 // talus::Simulation: restitution, contact duration and energy against the analytic values of
-// SPEC.md 1 (linear spring-dashpot) and of Hertz theory.
+// Theory/ContactLaws.md eq. (10)-(11) (linear spring-dashpot) and of Hertz theory.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@ using namespace talus::test;
 
 namespace {
 
-// The production time step of SPEC.md 1 (Table 3.C.1: dt about tc/50).
+// The production time step of Theory/Chutes.md eq. (2)-(4) (Table 3.C.1: dt about tc/50).
 constexpr double stepsPerCollision = 50;
 // Where the first touch falls between two steps; the discrete result depends on it, so every
 // check runs over several phases and holds for the worst one.
@@ -25,7 +25,7 @@ struct WorstError {
 };
 
 // Runs a linear spring-dashpot collision built with fromCollision(tc, e, m*) over all entry
-// phases and returns the worst relative errors against tc and e. By SPEC.md 1 the solution of
+// phases and returns the worst relative errors against tc and e. By Theory/ContactLaws.md eq. (10)-(11) the solution of
 // m* x'' = -kn x - gn x' from x = 0, x' = v is x = v/w exp(-gn t/(2 m*)) sin(w t) with
 // w = sqrt(kn/m* - (gn/(2 m*))^2): the overlap returns to 0 at t = pi/w = tc, with velocity
 // -v exp(-gn tc/(2 m*)) = -e v. The law has no cut-off of attractive forces, so the contact
@@ -61,7 +61,7 @@ void expectSpecRestitutionAndDuration(bool withWall) {
 
 }  // namespace
 
-// SPEC.md 1: unequal spheres (radii 0.5 and 0.4, so m* = 0.512/1.512) meet with restitution e
+// Theory/ContactLaws.md eq. (10)-(11): unequal spheres (radii 0.5 and 0.4, so m* = 0.512/1.512) meet with restitution e
 // and collision time tc at dt = tc/50.
 TEST(HeadOnCollision, TwoSpheresReboundWithSpecRestitutionAndDuration) { expectSpecRestitutionAndDuration(false); }
 

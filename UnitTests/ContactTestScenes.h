@@ -11,7 +11,7 @@
 
 namespace talus::test {
 
-// Density that gives a sphere of diameter 1 unit mass (SPEC.md preamble: m = 1 for d = 1).
+// Density that gives a sphere of diameter 1 unit mass (Theory/Chutes.md "Units and axes": m = 1 for d = 1).
 inline constexpr double unitMassDensity = 6 / pi;
 
 inline double sphereMass(double radius, double density = unitMassDensity) {

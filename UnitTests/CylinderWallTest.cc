@@ -1,5 +1,5 @@
 // The inside of a cylinder as a wall (Walls/Wall.h): a drum's mantle for spheres and for
-// superquadrics (SPEC.md 4-5).
+// superquadrics (Theory/Superquadrics.md "Walls").
 #include <gtest/gtest.h>
 
 #include <algorithm>

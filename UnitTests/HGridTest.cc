@@ -243,7 +243,7 @@ TEST(HGrid, FindsPairsAcrossFacesAndCorners) {
     EXPECT_EQ(gridPairs(packing, 0.0, grid), (std::vector<Pair>{{0, 1}, {2, 3}, {4, 5}}));
 }
 
-// The nearest image is unique only if no pair spans half a period (DESIGN.md, SPEC.md 1).
+// The nearest image is unique only if no pair spans half a period (Theory/ContactLaws.md eq. (1)).
 TEST(HGrid, RejectsPeriodicBoxShorterThanTwoInteractionDiameters) {
     const double skin = 0.2;
     for (int axis = 0; axis < 3; ++axis) {

@@ -21,7 +21,7 @@ using test::SceneSimulation;
 
 namespace {
 
-// Seed Table 3.C.1 (SPEC.md 1): d = 1 and d = 2^(-1/3), density 6/pi, so m = 8 r^3: 1 and 1/2.
+// The thesis's table 3.C.1 (Theory/ContactLaws.md "Bidisperse mixtures"): d = 1 and d = 2^(-1/3), density 6/pi, so m = 8 r^3: 1 and 1/2.
 const double largeRadius = 0.5;
 const double smallRadius = 0.5 * std::cbrt(0.5);
 
@@ -189,7 +189,7 @@ TEST(InsertionBoundary, TouchingIsAllowedAndTheSmallestOverlapIsNot) {
 
 // --- targets ---
 
-// The periodic chute's mixture (SPEC.md 2: 1000 large and 2000 small in 20 x 10), in a layer 30
+// The periodic chute's mixture (Theory/Chutes.md eq. (2)-(4): 1000 large and 2000 small in 20 x 10), in a layer 30
 // deep: their volume 1000 pi/6 + 2000 pi/12 = 1047 is 0.17 of it, which random addition reaches
 // easily (with 1000 attempts per particle it stalls at 0.24-0.28, Documentation/UserGuide/Insertion.md).
 TEST(InsertionBoundary, CountIsMetExactlyWhenFeasible) {
@@ -301,7 +301,7 @@ TEST(InsertionBoundary, InfeasiblePackingFractionReportsHowFarItGot) {
     RecordProperty("reachedPackingFraction", std::to_string(fraction));
 }
 
-// 10^5 particles of the seed mixture at packing fraction 0.2 in a periodic box: all inserted at
+// 10^5 particles of the thesis's mixture at packing fraction 0.2 in a periodic box: all inserted at
 // the stated fraction. (It takes about 0.15 s with the cell grid; an all-pairs search would
 // take minutes. Speed is not asserted here: Documentation/UserGuide/Insertion.md has it.)
 TEST(InsertionBoundary, HundredThousandParticlesInsert) {

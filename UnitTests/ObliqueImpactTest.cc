@@ -1,6 +1,6 @@
 // Oblique impact of a sphere on a flat wall, in the spirit of Chung & Ooi (2011) tests 4 and 6:
 // elastic normal contact (e = 1), no tangential damping, kt = 2/7 kn, Coulomb friction mu,
-// no gravity. Driven through talus::Simulation (SPEC.md 1 contact law).
+// no gravity. Driven through talus::Simulation (Theory/ContactLaws.md eq. (7)-(8) contact law).
 //
 // The wall is z = 0 with normal +z; the sphere (radius r, mass m, inertia I = 2/5 m r^2) comes
 // in with velocity (vt0, 0, -vn0) and no spin. The contact point sits at b = -r z from the

@@ -1,5 +1,5 @@
 // Restart files: writing then reading gives back every field of the run state bitwise, and a
-// restarted run continues exactly as the uninterrupted one (DESIGN.md "Determinism").
+// restarted run continues exactly as the uninterrupted one (Documentation/Architecture.md "Determinism").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -228,7 +228,7 @@ TEST(RestartFile, ReadingReplacesThePreviousState) {
     expectSameState(empty, s.state());
 }
 
-// DESIGN.md: a restart continues bitwise identically to an uninterrupted run.
+// Documentation/Architecture.md: a restart continues bitwise identically to an uninterrupted run.
 TEST(RestartFile, RestartedRunContinuesBitwise) {
     SceneSimulation first;
     runRichScene(first, "restartfile_continue", 40);

@@ -1,4 +1,4 @@
-// Species table: collision helpers of SPEC.md 1 invert each other, mixing and validation.
+// Species table: collision helpers of Theory/ContactLaws.md eq. (10)-(12) invert each other, mixing and validation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 
 using namespace talus;
 
-// kn, gn from (tc, e, m) must give back tc and e through the forward formulas of SPEC.md 1.
+// kn, gn from (tc, e, m) must give back tc and e through the forward formulas of Theory/ContactLaws.md eq. (10)-(11).
 TEST(LinearSpringDashpot, CollisionHelpersInvertEachOther) {
     for (double e : {0.1, 0.5, 0.88, 1.0}) {
         const double tc = 0.005, m = 0.37;
@@ -19,7 +19,7 @@ TEST(LinearSpringDashpot, CollisionHelpersInvertEachOther) {
     }
 }
 
-// Seed Table 3.C.1: kn = 2e5, gn = 25 between two unit masses (m* = 1/2) gives tc = 4.97e-3, e = 0.883.
+// The thesis's table 3.C.1: kn = 2e5, gn = 25 between two unit masses (m* = 1/2) gives tc = 4.97e-3, e = 0.883.
 TEST(LinearSpringDashpot, SeedTableParameters) {
     LinearSpringDashpot law{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
     EXPECT_NEAR(law.collisionTime(0.5), 4.97e-3, 0.005e-3);
@@ -54,7 +54,7 @@ TEST(SpeciesTable, RejectsBadParametersByName) {
     EXPECT_THROW(table.validate(), Error);  // two kinds of law in one simulation
 }
 
-// SPEC.md 1 bidisperse rule on the seed Table 3.C.1 mixture (dL = 1, dS = 2^(-1/3), density 6/pi,
+// Theory/ContactLaws.md "Bidisperse mixtures" bidisperse rule on the thesis's table 3.C.1 mixture (dL = 1, dS = 2^(-1/3), density 6/pi,
 // so mL = 1, mS = 1/2): every pair type rebounds with the same e, and tc/sqrt(d) is the same for
 // LL, SS and LS (d = (dL + dS)/2), each with its own reduced mass.
 #include "Species/BidisperseRule.h"
@@ -78,7 +78,7 @@ TEST(BidisperseRule, SameRestitutionAndScaledCollisionTimes) {
         EXPECT_DOUBLE_EQ(law.friction, p.friction);
         EXPECT_DOUBLE_EQ(law.tangentialStiffness, 2.0 / 7.0 * law.normalStiffness);
     }
-    // And the LL pair is the seed's kn = 2e5, gn = 25 (to the 3 digits of tc and e given there).
+    // And the LL pair is the thesis's kn = 2e5, gn = 25 (to the 3 digits of tc and e given there).
     const auto ll = std::get<LinearSpringDashpot>(table.pairLaw(large, large));
     EXPECT_NEAR(ll.normalStiffness / 2e5, 1, 2e-3);
     EXPECT_NEAR(ll.normalDamping / 25, 1, 2e-3);

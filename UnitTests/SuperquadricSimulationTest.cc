@@ -99,7 +99,7 @@ TEST(SuperquadricSimulation, ElasticEllipsoidBouncingOnAPlaneConservesEnergy) {
 
 TEST(SuperquadricSimulation, CentralEllipsoidCollisionAlongAPrincipalAxisHasTheLawsRestitution) {
     // Along the long axis, the normal stays on the line of centres and nothing turns: the linear
-    // law's restitution of SPEC.md 1, here stepped plainly (O(dt) error, so dt = tc/1000).
+    // law's restitution of Theory/ContactLaws.md eq. (10)-(11), here stepped plainly (O(dt) error, so dt = tc/1000).
     for (double e : {0.5, 0.88}) {
         SceneSimulation s;
         const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.2);

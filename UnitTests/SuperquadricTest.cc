@@ -108,7 +108,7 @@ TEST(Superquadric, BoundingRadiusBoundsEverySurfacePointAndIsReached) {
         if (s.isEllipsoid()) {
             EXPECT_DOUBLE_EQ(s.boundingRadius(), s.semiAxes().maxCoeff());
         }
-        EXPECT_LE(s.boundingRadius(), s.semiAxes().norm());  // the loose bound of SPEC.md 4
+        EXPECT_LE(s.boundingRadius(), s.semiAxes().norm());  // the loose bound of Theory/Superquadrics.md "Volume, inertia, bounding radius"
     }
 }
 

@@ -144,7 +144,7 @@ TEST(WaveSchedule, EveryAdvanceFindsItsPairsComputedAtItsStep) {
 // is still cached: each seam region (row u at level t) comes within a few regions after the
 // interior region of the same row and level of the strip after the seam (for the seam between the
 // last strip and the first, of the last; with one strip, of the strip itself), not in a wave of
-// its own after all strips (as until 2026-12-04: a hundred regions and more later here).
+// its own after all strips (as they once did: a hundred regions and more later here).
 TEST(WaveSchedule, SeamsAdvanceBesideTheStripAfterThem) {
     for (const int stripColumns : {40, 12, 8}) {  // of 31 columns: one strip, two of 15-16, three of 10-11
         const Bed b = randomBed(40, 38, 1, 1.2, 11);

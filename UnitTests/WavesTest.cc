@@ -1,4 +1,4 @@
-// Several steps per pass (Simulation::setWaves, Contacts/WaveSchedule.h) change no physics: a
+// Several steps per pass (StepperTuning::setWaves, Contacts/WaveSchedule.h) change no physics: a
 // chute advanced in waves follows the trajectory of single steps to round-off (the forces of a
 // particle are summed in another order), through list builds, the periodic faces, fixed
 // particles, wall candidates and the seams between strips.
@@ -12,13 +12,14 @@
 
 #include "ContactTestScenes.h"
 #include "IO/LammpsDataFile.h"
+#include "Integration/Integrator.h"
 
 using namespace talus;
 using namespace talus::test;
 
 namespace {
 
-// The benchmark's chute (SPEC.md 2, Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
+// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
 // the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
 // along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
 void benchmarkChute(Scene& s, const std::string& file) {
@@ -60,6 +61,8 @@ Difference largestDifference(const Scene& a, const Scene& b) {
 
 // The slots whose position, velocity or spin differ in any bit between two runs (with the same
 // particles in the same slots; every slot if their numbers differ).
+std::uint64_t stepsInWaves(const Scene& s) { return s.integrator().statistics().waves.stepsInWaves; }
+
 std::size_t slotsThatDiffer(const Scene& one, const Scene& other) {
     const ParticleStore &a = one.particles(), &b = other.particles();
     if (a.size() != b.size()) return std::max(a.size(), b.size());
@@ -76,16 +79,16 @@ void expectSameTrajectory(const std::string& file, int steps, int stripColumns, 
     Scene waves, single;
     waves.setup = single.setup = [file](Scene& s) { benchmarkChute(s, file); };
     waves.setSkin(0.2), single.setSkin(0.2);
-    waves.setWaves(steps, stripColumns);
+    waves.settings().stepper.setWaves(steps, stripColumns);
     waves.run(dt, run * dt);
     single.run(dt, run * dt);
     const Difference d = largestDifference(waves, single);
     std::printf("[ measured ] %s, waves of %d steps, strips of %d columns: %llu of %d steps in waves, %llu list builds; "
                 "largest difference from single steps: position %.2e, velocity %.2e, angular velocity %.2e\n",
-                file.c_str(), steps, stripColumns, static_cast<unsigned long long>(waves.stepsInWaves()), run,
+                file.c_str(), steps, stripColumns, static_cast<unsigned long long>(stepsInWaves(waves)), run,
                 static_cast<unsigned long long>(waves.pairList().builds), d.position, d.velocity,
                 d.angularVelocity);
-    EXPECT_GT(waves.stepsInWaves(), static_cast<std::uint64_t>(run / 2)) << "most steps should be in waves";
+    EXPECT_GT(stepsInWaves(waves), static_cast<std::uint64_t>(run / 2)) << "most steps should be in waves";
     EXPECT_GE(waves.pairList().builds, leastBuilds) << "the test needs list builds between waves";
     EXPECT_GT(single.contactSummary().contacts, 2000u) << "and the spheres in contact";
     // Round-off grows through the collisions of 1000 steps; a pair computed at the wrong step, or
@@ -115,25 +118,25 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
         benchmarkChute(s, "chute_B_flowing.data");
         s.state().pairList.nearSkinFraction = 0;  // (no near list)
     };
-    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->setWaves(4, 8), s->run(dt, 1000 * dt);
+    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 1000 * dt);
     EXPECT_GT(overNear.pairList().near.makes, 2u) << "the test needs the near list remade between waves";
     EXPECT_EQ(overAll.pairList().near.makes, 0u);
     EXPECT_GE(overNear.pairList().builds, 3u);
-    EXPECT_GT(overNear.stepsInWaves(), 900u);
-    EXPECT_EQ(overNear.stepsInWaves(), overAll.stepsInWaves());
+    EXPECT_GT(stepsInWaves(overNear), 900u);
+    EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the schedules";
 }
 
 // Where the list has no room left for the next wave, it is built anew ahead of it
-// (Simulation::buildListForWave): the flow goes on in waves through its list builds, where until
-// 2026-12-04 the last steps before each build were single steps (980 of 1000 here in waves).
+// (WaveStepper::stepsNext): the flow goes on in waves through its list builds, rather than in
+// single steps until each build (980 of 1000 steps here in waves).
 TEST(Waves, TheListIsBuiltAnewAheadOfAWaveItCannotHold) {
     const double dt = 1e-4;
     Scene s;
     s.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
-    s.setSkin(0.2), s.setWaves(4, 8), s.run(dt, 1000 * dt);
+    s.setSkin(0.2), s.settings().stepper.setWaves(4, 8), s.run(dt, 1000 * dt);
     EXPECT_GE(s.pairList().builds, 3u) << "the test needs list builds within the run";
-    EXPECT_EQ(s.stepsInWaves(), 1000u);
+    EXPECT_EQ(stepsInWaves(s), 1000u);
 }
 
 // ... but not where a new list would have no room for a wave either (a skin too thin for the
@@ -143,10 +146,10 @@ TEST(Waves, ASkinTooThinForWavesLeavesTheBuildsToSingleSteps) {
     Scene waves, single;
     waves.setup = single.setup = [](Scene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
     waves.setSkin(0.002), single.setSkin(0.002);
-    waves.setWaves(4, 8);
+    waves.settings().stepper.setWaves(4, 8);
     waves.run(dt, 200 * dt);
     single.run(dt, 200 * dt);
-    EXPECT_EQ(waves.stepsInWaves(), 0u);
+    EXPECT_EQ(stepsInWaves(waves), 0u);
     EXPECT_GT(single.pairList().builds, 10u) << "the test needs a skin that takes frequent builds";
     EXPECT_LE(waves.pairList().builds, single.pairList().builds + single.pairList().builds / 10);
 }
@@ -173,9 +176,10 @@ TEST(Waves, OverTheNearListFollowParticlesMovedByHand) {
         benchmarkChute(s, "chute_B_flowing.data");
         s.state().pairList.nearSkinFraction = 0;  // (no near list)
     };
-    for (Scene* s : {&overNear, &overAll}) s->afterStep = jiggle, s->setSkin(0.2), s->setWaves(4, 8), s->run(dt, 600 * dt);
-    EXPECT_GT(overNear.stepsInWaves(), 500u);
-    EXPECT_EQ(overNear.stepsInWaves(), overAll.stepsInWaves());
+    for (Scene* s : {&overNear, &overAll})
+        s->afterStep = jiggle, s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 600 * dt);
+    EXPECT_GT(stepsInWaves(overNear), 500u);
+    EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
 }
 
@@ -204,10 +208,10 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
     Scene overNear, overAll;
     overNear.setup = [&](Scene& s) { scene(s, 0.01); };
     overAll.setup = [&](Scene& s) { scene(s, 0); };
-    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->setWaves(4, 8), s->run(dt, 200 * dt);
-    EXPECT_GT(overNear.wavesOffTheNearList(), 0u) << "the test needs a wave to outrun the near list";
-    EXPECT_GT(overNear.stepsInWaves(), 100u);
-    EXPECT_EQ(overNear.stepsInWaves(), overAll.stepsInWaves());
+    for (Scene* s : {&overNear, &overAll}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8), s->run(dt, 200 * dt);
+    EXPECT_GT(overNear.integrator().statistics().waves.offTheNearList, 0u) << "the test needs a wave to outrun the near list";
+    EXPECT_GT(stepsInWaves(overNear), 100u);
+    EXPECT_EQ(stepsInWaves(overNear), stepsInWaves(overAll));
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
 }
 
@@ -215,20 +219,20 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
 // "Using it": waves of 8 were measured fastest in strips of 64-128 columns, slower in 32-50).
 TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
     Scene s;
-    s.setWaves(8);
-    EXPECT_EQ(s.waveStripColumns(), 64);
-    s.setWaves(12);
-    EXPECT_EQ(s.waveStripColumns(), 96);
-    s.setWaves(12, 40);
-    EXPECT_EQ(s.waveStripColumns(), 40);
-    s.setWaves(8);  // (the width asked for stays)
-    EXPECT_EQ(s.waveStripColumns(), 40);
+    s.settings().stepper.setWaves(8);
+    EXPECT_EQ(s.settings().stepper.stripColumns(), 64);
+    s.settings().stepper.setWaves(12);
+    EXPECT_EQ(s.settings().stepper.stripColumns(), 96);
+    s.settings().stepper.setWaves(12, 40);
+    EXPECT_EQ(s.settings().stepper.stripColumns(), 40);
+    s.settings().stepper.setWaves(8);  // (the width asked for stays)
+    EXPECT_EQ(s.settings().stepper.stripColumns(), 40);
 }
 
 TEST(Waves, RefuseBadSettings) {
     Scene s;
-    expectError([&] { s.setWaves(0); }, {"waves of 1 to 255 steps"});
-    expectError([&] { s.setWaves(4, 0); }, {"strips of waves need at least one column"});
+    expectError([&] { s.settings().stepper.setWaves(0); }, {"waves of 1 to 255 steps"});
+    expectError([&] { s.settings().stepper.setWaves(4, 0); }, {"strips of waves need at least one column"});
 }
 
 // A run in waves restarted from its file continues bitwise as the uninterrupted run: waves start
@@ -244,7 +248,7 @@ TEST(Waves, RestartedRunContinuesBitwise) {
     const auto chute = [](Scene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
     Scene first, restarted, uninterrupted;
     first.setup = uninterrupted.setup = chute;
-    for (Scene* s : {&first, &restarted, &uninterrupted}) s->setSkin(0.2), s->setWaves(4, 8);
+    for (Scene* s : {&first, &restarted, &uninterrupted}) s->setSkin(0.2), s->settings().stepper.setWaves(4, 8);
     first.setName("waves_restart");
     first.settings().progressInterval = 1e9;
     first.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(200), "--vtu", "off", "--fstat", "off"});
@@ -252,7 +256,7 @@ TEST(Waves, RestartedRunContinuesBitwise) {
     restarted.solveOrThrow({"--restart", "waves_restart.restart", "--end-time", endOf(400), "--files", "off"});
     uninterrupted.settings().progressInterval = 1e9;
     uninterrupted.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(400), "--files", "off"});
-    EXPECT_GT(restarted.stepsInWaves(), 150u) << "the restarted run should go on in waves";
-    EXPECT_EQ(restarted.stepsInWaves() + first.stepsInWaves(), uninterrupted.stepsInWaves());
+    EXPECT_GT(stepsInWaves(restarted), 150u) << "the restarted run should go on in waves";
+    EXPECT_EQ(stepsInWaves(restarted) + stepsInWaves(first), stepsInWaves(uninterrupted));
     EXPECT_EQ(slotsThatDiffer(restarted, uninterrupted), 0u) << "particles whose state differs from the uninterrupted run";
 }

@@ -17,8 +17,8 @@
 //            radius, inverse mass, inverse inertia), as Talus's ParticleStore;
 //   records  the same data in two records per particle (position, radius, velocity, inverse
 //            mass, spin and inverse inertia: 96 bytes; force and torque: 48 bytes);
-// each with every pair's partner after i in the particle order (as Talus listed them until
-// 2026-12-03) or before it (since), and with the integration as its own pass or fused into the
+// each with every pair's partner after i in the particle order (as Talus listed them at first)
+// or before it (as it does now), and with the integration as its own pass or fused into the
 // force loop block by block (a block of 128 particles is integrated as soon as its forces are
 // complete: with partners after i, once the block's own pairs are done).
 // Two more columns time the same bed ordered in strips (StripWave.h): records, one step per pass

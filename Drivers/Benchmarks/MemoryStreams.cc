@@ -1,9 +1,8 @@
 // How the memory bandwidth of one core depends on the number of arrays a loop reads at once
 // (Documentation/CacheCliff.md). A structure of arrays makes a pass that
-// needs k quantities per particle read k arrays side by side; on the host of 2026-12-02 this
-// program measured 21-28 GB/s with 4-8 arrays of 16 MB but 7-11 GB/s with 16-32, while the same
-// bytes in one array of k-value records came at 24-25 GB/s for every k. It measures both on the
-// machine at hand, so that a layout decision rests on numbers from it.
+// needs k quantities per particle read k arrays side by side, and on some machines the bandwidth
+// falls with k while the same bytes in one array of k-value records do not (measurements:
+// Documentation/Performance/History.md). It measures both on the machine at hand, so that a layout decision rests on numbers from it.
 //
 //   MemoryStreams [megabytes per array, default 16] [repeats, default 3]
 //

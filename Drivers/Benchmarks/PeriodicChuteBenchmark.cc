@@ -1,4 +1,4 @@
-// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of SPEC.md 1-2 as the
+// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of Theory/Chutes.md eq. (2)-(4) as the
 // peer codes run it (shared/peers/README.md, scenes B and C), timed from a LAMMPS start file.
 //
 // A rough base of fixed spheres (type 1, d = 1) carries 1000 flowing spheres of d = 1 (type 2) and
@@ -19,7 +19,10 @@
 
 #include "Contacts/PairSweep.h"
 #include "IO/LammpsDataFile.h"
-#include "Parallel/DomainSplit.h"
+#include "Integration/Integrator.h"
+#include "Sampling/Messages.h"
+#include "Sampling/ParticleSums.h"
+#include "Sampling/RankReport.h"
 #include "Simulation.h"
 
 using namespace talus;
@@ -54,7 +57,6 @@ public:
         addFlag("perturbation", "add random velocities up to this speed to the flowing spheres", perturbation);
         addFlag("seed", "seed of the random velocities", seed);
         baselineMemory_ = memoryBytes("RssAnon");
-        setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
@@ -102,40 +104,30 @@ public:
                 }
     }
 
-    // Sums over the ranks under mpirun (the particles of this rank are the slots below owned()).
+    // Whole-scene sums (Kernel/Sampling): the same numbers whatever the rank count.
     void actionsAfterSolve() override {
-        const ParticleStore& p = particles();
         // The peak of the memory the run allocated: the peak resident set less the pages of files
-        // and shared memory (code and libraries paged in as the run goes, MPI's segments: 0.6-1.2 MB
-        // at 3000 particles on the Zen 3 host of 2026-12-03, a fifth to a third of the whole
-        // resident growth there; they only grow, so the end's are their peak) and less the
+        // and shared memory (code and libraries paged in as the run goes, MPI's segments: a large
+        // part of the resident growth of a small scene; they only grow, so the end's are their peak) and less the
         // allocations before the set-up.
         const double allocated =
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;
-        std::vector<double> sums = {0, 0, allocated, double(p.owned()),
-                                    double(contactSummary().contacts), double(pairList().pairs.size()),
-                                    domainSplit()->seconds.total(), double(p.ghostCount),
-                                    domainSplit()->seconds.ghosts, domainSplit()->seconds.agreement,
-                                    double(pairList().interiorPairs)};
-        for (std::size_t i = 0; i < p.owned(); ++i)
-            if (!p.fixed[i]) {
-                sums[0] += p.velocity[i].x();
-                sums[1] += 1;
-            }
-        sumOverRanks(sums);
+        // What each process counts for itself (its memory, contacts, listed pairs), and the particles.
+        const std::vector<double> sums = sumOverScene(*this, {allocated, double(contactSummary().contacts),
+            double(pairList().pairs.size()), double(pairList().interiorPairs)});
+        const double particleCount = totalsOver(*this, allParticles()).count;
+        const std::vector<double> flowing = sumsOver(*this, mobileParticles(), {
+            [](const ParticleStore& p, std::size_t i) { return p.velocity[i].x(); },
+            [](const ParticleStore&, std::size_t) { return 1.0; }});
+        const std::string ranks = describeRanks(*this);
         const RunStatistics& run = lastRun();
-        if (rank() != 0) return;
-        std::printf("benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
-                    "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f (%.0f interior)  rebuilds %llu  "
-                    "ranks %d  communication %.1f%%  ghosts %.0f  (ghost exchange %.1f%%, agreement %.1f%%)  sweep %s  "
-                    "in-waves %llu\n",
-                    sums[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
-                    sums[2] / sums[3], sums[0] / sums[1], sums[4], sums[5], sums[10],
-                    static_cast<unsigned long long>(pairList().builds), ranks(),
-                    100 * sums[6] / ranks() / std::max(run.wallSeconds, 1e-300), sums[7],
-                    100 * sums[8] / ranks() / std::max(run.wallSeconds, 1e-300),
-                    100 * sums[9] / ranks() / std::max(run.wallSeconds, 1e-300),
-                    sweepFormName(sweepForm()), static_cast<unsigned long long>(stepsInWaves()));
+        say(*this, "benchmark: flowing %.0f  steps %llu  wall %.3f s  %.4g particle-steps/s  "
+            "peak memory %.0f bytes/particle  mean vx %.6g  contacts %.0f  listed pairs %.0f (%.0f interior)  rebuilds %llu  "
+            "%s  sweep %s  in-waves %llu\n",
+            flowing[1], static_cast<unsigned long long>(run.steps), run.wallSeconds, run.particleStepsPerSecond(),
+            sums[0] / particleCount, flowing[0] / flowing[1], sums[1], sums[2], sums[3],
+            static_cast<unsigned long long>(pairList().builds), ranks.c_str(), sweepFormName(sweepForm()),
+            static_cast<unsigned long long>(integrator().statistics().waves.stepsInWaves));
     }
 
 private:

@@ -11,7 +11,7 @@ binary before a change, to compare two versions of the code run for run).
 
 e.g. (the developed flow at 3000 particles in single steps against 108000 in waves of 8):
 
-    D=../shared/peers/data/chute_B_flowing.data
+    D=$TALUS_SHARED_DIR/peers/data/chute_B_flowing.data
     Drivers/Benchmarks/interleavedRounds.py 5 "3k|--nx 1 --ny 1 --data $D --end-time 0.2" \\
         "108k waves|--nx 6 --ny 6 --data $D --end-time 0.04 --wave-steps 8 --wave-strip 32"
 """

@@ -8,7 +8,7 @@
 #
 # Every size runs the same number of steps, n and 2n (default n = 200), from the same start, so
 # that every size does the same physics: the bed starts to flow and dilates, and a run of 5000
-# steps of the small scene (as this script did until 2026-12-02) ends with a quarter fewer contacts per
+# steps of the small scene ends with a quarter fewer contacts per
 # particle than a run of 200 steps of the large one (Documentation/Performance.md "Scaling and
 # memory"). Each run is repeated `repeats` times (default 3) and the fastest kept (the host's
 # speed changes by a third from minute to minute). ns_per_particle_step is the whole loop of the

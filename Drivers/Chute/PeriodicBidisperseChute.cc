@@ -1,11 +1,11 @@
-// The periodic calibration chute of SPEC.md 2 with the mixture of seed Table 3.C.1.
+// The periodic calibration chute of Theory/Chutes.md eq. (2)-(4) with the mixture of the thesis's table 3.C.1.
 //
 // Methods. A chute inclined at 24 degrees, periodic in x (length 20) and y (width 10), has a
 // disordered rough base of fixed spheres of diameter 1 (--base-diameter). 1000 large spheres
 // (d = 1) and 2000 small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random above it and
 // flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with Coulomb
 // friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same e and
-// tc ~ sqrt(d) for every pair type (SPEC.md 1), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
+// tc ~ sqrt(d) for every pair type (Theory/ContactLaws.md "Bidisperse mixtures"), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
 // 0.25 (SS), 0.375 (LS); the base is of the large material. dt = 1e-4.
 // Every time unit the run samples the kinetic energy and the mass flux; once both have been on
 // a plateau for the last 200 samples (their trend over them below 2% of their mean) the flow
@@ -15,15 +15,12 @@
 // (The statistics are the driver's own: a restarted run starts them afresh.)
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <tuple>
 #include <vector>
 
-#include "Boundaries/InsertionBoundary.h"
 #include "Chute/Chute.h"
 #include "Chute/ChuteStatistics.h"
-#include "IO/DurableFile.h"
-#include "IO/SeriesFile.h"
+#include "Sampling/Sampling.h"
 #include "Species/BidisperseRule.h"
 
 using namespace talus;
@@ -44,10 +41,7 @@ public:
         addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         addFlag("window", "samples on a plateau that make the flow steady", window);
         addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
-        setRunsOnRanks(true);  // under mpirun: sums over ranks, files and messages from rank 0
         // A restarted run goes on detecting the plateau and averaging where it stopped.
-        keepInRestart("run.plateau", [this] { return plateau_.state(); },
-                      [this](const std::vector<double>& v) { plateau_.restore(v); });
         keepInRestart("run.steadySamples", [this] { return snapshotNumbers(steadySamples_); },
                       [this](const std::vector<double>& v) { steadySamples_ = snapshotsFromNumbers(v); });
         keepInRestart("run.profile", [this] { return profile_.state(); },
@@ -61,7 +55,7 @@ public:
         require(large >= 0 && small >= 0 && large + small > 0, "--large and --small: at least one sphere");
         setChuteAngle(angle);
         setChuteGeometry({.length = length, .width = width, .height = 60, .periodicEnds = true});
-        // Seed Table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the others.
+        // The thesis's table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the others.
         const LinearSpringDashpot largeLaw{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
         const double density = 6 / pi;
         largeSpecies_ = addSpecies("large", density, largeLaw);
@@ -75,33 +69,24 @@ public:
         random().seed(static_cast<std::uint64_t>(seed));
         const double volume = large * pi / 6 + small * pi / 6 * std::pow(smallDiameter, 3);
         const double top = 1 + volume / (0.2 * length * width);
-        for (auto [count, species, diameter] : {std::tuple{large, largeSpecies_, 1.0}, {small, smallSpecies_, smallDiameter}}) {
-            InsertionBoundary box(Vec3(0, 0, 1), Vec3(length, width, top),
-                                  SizeDistribution::byNumber().add(species, diameter / 2));
-            const InsertionReport report = box.insertCount(*this, static_cast<std::size_t>(count));
-            if (rank() == 0) std::printf("%s\n", report.describe().c_str());
-            require(report.complete, "could not place the start configuration: " + report.describe());
-        }
-        plateau_ = PlateauDetector(static_cast<std::size_t>(window), tolerance);
+        for (auto [count, species, diameter] : {std::tuple{large, largeSpecies_, 1.0}, {small, smallSpecies_, smallDiameter}})
+            insertAtRest(static_cast<std::size_t>(count), species, diameter / 2, Vec3(0, 0, 1), Vec3(length, width, top),
+                         "the start configuration");
+        plateau_.reset(static_cast<std::size_t>(window), tolerance);
         profile_ = profileOfThisChute();
     }
 
     void actionsAfterTimeStep() override {
-        // At the multiples of the sample interval (so also after a restart).
-        if (std::abs(time() - sampleInterval * std::round(time() / sampleInterval)) > 0.5 * timeStep()) return;
+        if (!clock_.every(sampleInterval)) return;
         const ChuteSnapshot s = measureChute(*this, length, width, smallSpecies_);
-        std::ostringstream line;
-        line << s.time << ' ' << s.kineticEnergy << ' ' << s.massFlux << ' ' << s.meanVelocity << ' ' << s.height << ' '
-             << s.smallConcentration << '\n';
-        series_.append(line.str());
+        series_.write({s.time, s.kineticEnergy, s.massFlux, s.meanVelocity, s.height, s.smallConcentration});
         // No sphere may pass through the base (its centres lie within +-0.25 of z = 0).
-        for (std::size_t i = 0; i < particles().owned(); ++i)
-            if (!particles().fixed[i] && particles().position[i].z() < -0.5)
-                throw Error("particle id " + std::to_string(particles().id[i]) + " fell through the base (z = " +
-                            std::to_string(particles().position[i].z()) + " at t = " + std::to_string(time()) + ")");
+        const double lowest = minOver(*this, mobileParticles(), [](const ParticleStore& p, std::size_t i) { return p.position[i].z(); });
+        requireOnAllRanks(*this, !(lowest < -0.5), "a sphere fell through the base (z = " + str(lowest) + " at t = " +
+                                                       str(time()) + ")");
         if (!plateau_.steady()) {
-            if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}) && rank() == 0)
-                std::printf("%s: steady flow at t = %g (kinetic energy %.4g and mass flux %.4g per unit area and width "
+            if (plateau_.add(time(), {s.kineticEnergy, s.massFlux}))
+                say(*this, "%s: steady flow at t = %g (kinetic energy %.4g and mass flux %.4g per unit area and width "
                             "on a plateau for %d samples)\n", name().c_str(), time(), s.kineticEnergy, s.massFlux, window);
             return;
         }
@@ -111,8 +96,7 @@ public:
 
     void actionsAfterSolve() override {
         if (steadySamples_.empty()) {
-            if (rank() == 0)
-                std::printf("%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
+            say(*this, "%s: the flow did not become steady by t = %g (%zu samples); run longer (--end-time)\n",
                         name().c_str(), time(), plateau_.samples());
             return;
         }
@@ -125,14 +109,13 @@ public:
         }
         const MeanAndError u = batchMean(velocity), h = batchMean(height), q = batchMean(flux);
         profile_.write(name() + ".profile", this);
-        if (rank() != 0) return;
-        replaceFile(name() + ".steady", [&](std::ostream& out) {
+        writeFileOnce(*this, name() + ".steady", [&](std::ostream& out) {
             out << "# steady since t = " << plateau_.steadySince() << ", " << steadySamples_.size()
                 << " samples until t = " << time() << "; mean and standard error (5 batch means)\n";
             out << "meanVelocity " << u.mean << ' ' << u.error << "\nheight " << h.mean << ' ' << h.error
                 << "\nmassFlux " << q.mean << ' ' << q.error << '\n';
         });
-        std::printf("%s: steady from t = %g; over %zu samples: mean velocity %.4f +- %.4f, height %.3f +- %.3f, "
+        say(*this, "%s: steady from t = %g; over %zu samples: mean velocity %.4f +- %.4f, height %.3f +- %.3f, "
                     "mass flux %.4f +- %.4f (NAME.steady, depth profiles in NAME.profile)\n",
                     name().c_str(), plateau_.steadySince(), steadySamples_.size(), u.mean, u.error, h.mean, h.error,
                     q.mean, q.error);
@@ -143,10 +126,11 @@ private:
 
     static constexpr double smallDiameter = 0.79370052598409979;  // 2^(-1/3): half the volume
     std::size_t largeSpecies_ = 0, smallSpecies_ = 1;
-    PlateauDetector plateau_{200, 0.02};
+    SteadyDetector plateau_{*this, "run.plateau", 200, 0.02};
+    SamplingClock clock_{*this, "samples"};
     std::vector<ChuteSnapshot> steadySamples_;
-    SeriesFile series_{*this, "series",
-                       "# t kineticEnergy massFlux meanVelocity height smallConcentration (per unit area/width)\n"};
+    SeriesFile series_{*this, "series", {"t", "kineticEnergy", "massFlux", "meanVelocity", "height", "smallConcentration"},
+                       "(per unit area/width)"};
     DepthProfile profile_{0.25, 40, 20, 10, 1};
 };
 

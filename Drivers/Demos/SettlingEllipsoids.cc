@@ -1,12 +1,12 @@
 // Demo 4 (Documentation/Superquadrics/SettlingEllipsoids.md): ellipsoids of aspect ratio 2
-// settling in a box (issue 6; SPEC.md 4).
+// settling in a box (issue 6; Theory/Superquadrics.md).
 //
 // Methods. N prolate ellipsoids of semi-axes a = 0.5 and b = c = a/aspect (--aspect, default 2),
 // density 6/pi, start on a loose lattice at random orientations with small random velocities in a square box
 // with a floor and four side walls, and settle under gravity g = 1. The linear spring-dashpot
 // law has tc = 0.005 and e = 0.5 for two ellipsoids (its stiffness and damping from their
 // reduced mass), kt = 2/7 kn and sliding friction 0.5; contacts are found by the exact stage of
-// SPEC.md 4 (Contacts/SuperquadricContact.h) and the ellipsoids turn as rigid bodies
+// Theory/Superquadrics.md eq. (5)-(8) (Contacts/SuperquadricContact.h) and the ellipsoids turn as rigid bodies
 // (Particles/RigidBodyRotation.h). With --blockiness e < 1 the particles are superquadric blocks
 // of the same semi-axes (e1 = e2 = e). The .ene file shows the kinetic energy decaying to rest;
 // ParaView shows the .pvd file with the ShapeTensor glyphs (Documentation/FileFormats/vtu.md).
@@ -26,7 +26,6 @@ public:
     int spheres = 0;  // 1: spheres of the same volume instead (for the cost comparison)
 
     SettlingEllipsoids() {
-        setRunsOnRanks(true);  // nothing of its own to sum: it runs under mpirun as it is
         addFlag("particles", "number of particles", particleCount);
         addFlag("width", "width of the square box", width);
         addFlag("aspect", "ratio of the long semi-axis to the two short ones", aspect);

@@ -18,7 +18,6 @@ public:
     double width = 10;  // of the square box, in mean diameters
 
     SettlingPacking() {
-        setRunsOnRanks(true);  // nothing of its own to sum: it runs under mpirun as it is
         addFlag("particles", "number of spheres", particleCount);
         addFlag("width", "width of the square box", width);
     }

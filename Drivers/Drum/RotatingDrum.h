@@ -1,4 +1,4 @@
-// The rotating drum of SPEC.md 5 (seed:7025-7270): spheres and prolate ellipsoids of equal volume
+// The rotating drum of Theory/RotatingDrum.md (Denissen 2019, sec. 5.2): spheres and prolate ellipsoids of equal volume
 // mixing or segregating in a drum turning about its horizontal axis y.
 //
 // Methods. Half of N particles are spheres of diameter 1, half prolate ellipsoids of semi-axes
@@ -8,10 +8,10 @@
 // drum (radius r, --radius) is periodic along its axis y (length L, --length). Its wall is one
 // layer of fixed spheres of diameter 0.5, a disordered flat rough base of length 2 pi r (the
 // chute's, Chute::addBase) wrapped onto the cylinder: angle x/r, X = (r + z) cos(x/r),
-// Z = (r + z) sin(x/r) (SPEC.md 5; the seed drops the /r); or, with --wall smooth, the plain
+// Z = (r + z) sin(x/r) (Theory/RotatingDrum.md eq. (2); the thesis drops the /r); or, with --wall smooth, the plain
 // cylinder wall of radius r. N follows from --fill, the fraction of the drum's cross-section the
 // bed fills (taken at packing fraction 0.6), unless --particles is given.
-// Filling (SPEC.md 5): the particles are placed one by one at random places in the drum where
+// Filling (Theory/RotatingDrum.md "Filling"): the particles are placed one by one at random places in the drum where
 // their bounding spheres overlap nothing; after 1000 failed tries in a row the bed settles and the rest are tried again, up to
 // --insertion-rounds rounds. When all are in (or the rounds are used up: the run says how many
 // of each kind are missing) and the bed is at rest, the drum starts turning at Froude number
@@ -22,16 +22,19 @@
 // dynamic angle of repose.
 #pragma once
 
+#include <cmath>
 #include <string>
 
+#include "DrumAnalysis.h"
 #include "IO/SeriesFile.h"
+#include "Sampling/SamplingClock.h"
 #include "Simulation.h"
 
 namespace talus {
 
 class RotatingDrum : public Simulation {
 public:
-    // Flags (SPEC.md 5's full scale is --radius 15; the defaults are a scaled-down drum).
+    // Flags (the thesis's full scale is --radius 15, Theory/RotatingDrum.md; the defaults are a scaled-down drum).
     double radius = 6, length = 6, aspect = 2, fill = 0.4, froude = 0.01;
     double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1;
     int particleCount = 0, seed = 1, insertionRounds = 20;
@@ -39,15 +42,17 @@ public:
 
     static constexpr double collisionTime = 0.05, restitution = 0.1, friction = 0.5;
     static constexpr double wallDiameter = 0.5;
+    static constexpr double particleVolume = pi / 6;  // d = 1 spheres and the ellipsoids of Theory/RotatingDrum.md eq. (1)
+    static constexpr double bedPackingFraction = 0.6;  // of the settled bed, to turn --fill into a count
 
     RotatingDrum();
 
     // Angular speed of the drum from the Froude number, w = sqrt(F g / r).
-    double angularSpeed() const;
+    double angularSpeed() const { return std::sqrt(froude * gravity().norm() / radius); }
     bool rotating() const { return rotationStart_ >= 0; }
     double rotationStartTime() const { return rotationStart_; }
     // Drum turns since the rotation started.
-    double rotations() const;
+    double rotations() const { return rotating() ? angularSpeed() * (time() - rotationStart_) / (2 * pi) : 0.0; }
     int particlesToInsert() const { return targetCount_; }
     int particlesInserted() const { return insertedSpheres_ + insertedEllipsoids_; }
     // Distance from the axis within which the bed's bounding spheres must lie.
@@ -67,15 +72,18 @@ private:
     void startRotation();
     void checkBed() const;
     void writeSample();
+    drum::MixingIndices mixingOf(const ParticleStore& bed) const;
+    double bedEnergy() const;
 
     std::size_t shape_ = 0;
     // The run's progress, kept in the restart file.
     int targetCount_ = 0, insertedSpheres_ = 0, insertedEllipsoids_ = 0, rounds_ = 0;
     double lastInsertion_ = 0, rotationStart_ = -1, innerRadius_ = 0, angleSum_ = 0;
     int angleSamples_ = 0;
+    SamplingClock clock_{*this, "samples"};
     SeriesFile series_{*this, "series",
-                       "# t rotations kineticEnergy mixingIndex segregationIndex reposeAngleDegrees"
-                       " (energy: translational + rotational of the bed; angle nan while filling)\n"};
+                       {"t", "rotations", "kineticEnergy", "mixingIndex", "segregationIndex", "reposeAngleDegrees"},
+                       "(energy: translational + rotational of the bed; angle nan while filling)"};
 };
 
 }  // namespace talus

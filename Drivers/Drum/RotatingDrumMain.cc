@@ -1,10 +1,10 @@
-// The rotating drum of SPEC.md 5 (Documentation/Drums/RotatingDrum.md); the study is RotatingDrum.h.
+// The rotating drum of Theory/RotatingDrum.md (Documentation/Drums/RotatingDrum.md); the study is RotatingDrum.h.
 #include "RotatingDrum.h"
 
 int main(int argc, char** argv) {
     talus::RotatingDrum drum;
     drum.setName("RotatingDrum");
-    drum.setTimeStep(talus::RotatingDrum::collisionTime / 50);  // SPEC.md 5: tc = 0.05
+    drum.setTimeStep(talus::RotatingDrum::collisionTime / 50);  // Theory/RotatingDrum.md eq. (1): tc = 0.05
     drum.setEndTime(400);
     drum.setOutputInterval(10);
     return drum.solve(argc, argv);

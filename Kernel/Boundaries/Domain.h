@@ -1,4 +1,4 @@
-// The simulation box: its extent along x, y, z, and which axes are periodic (SPEC.md 2 uses
+// The simulation box: its extent along x, y, z, and which axes are periodic (Theory/Chutes.md eq. (1) uses
 // x and y). Along a periodic axis positions are kept in [lo, hi) and pair separations use the
 // nearest image; along the other axes the extent only frames the output.
 #pragma once
@@ -14,7 +14,7 @@
 namespace talus {
 
 // A box along x that is periodic one way inside a domain that is open along x: the activated
-// maser of SPEC.md 3 (Boundaries/MaserBoundary.h). Mobile particles of its species near the
+// maser of Theory/Maser.md (Boundaries/MaserBoundary.h). Mobile particles of its species near the
 // upstream face (lo) feel the particles of its species near the downstream face (hi) through
 // their images shifted by -(hi - lo); those near the downstream face do not feel the upstream
 // ones. Listed as PairList::oneWayPairs.

@@ -1,5 +1,5 @@
 // Insertion: fills a box with spheres drawn from a size distribution at random positions where
-// they overlap nothing (issue 4; SPEC.md 5 "Filling"). Random sequential addition: each drawn
+// they overlap nothing (issue 4; Theory/RotatingDrum.md "Filling"). Random sequential addition: each drawn
 // particle gets up to maxAttemptsPerParticle random centres; the first that overlaps no particle
 // (fixed or mobile, nearest periodic image) and no plane wall is taken. When a particle fails
 // every attempt, insertion stops and the report says how far it got, so a region is never
@@ -32,7 +32,7 @@ struct SizeClass {
 // A mixture of size classes. The weights are by number (byNumber: class k is drawn with
 // probability w_k / sum w) or by volume (byVolume: with probability proportional to
 // w_k / meanVolume_k, so that the classes fill volumes in the ratio of their weights). The
-// bidisperse mixture of seed Table 3.C.1 (equal volumes of d = 1 and d = 0.7937) is
+// bidisperse mixture of the thesis's table 3.C.1 (equal volumes of d = 1 and d = 0.7937) is
 //   SizeDistribution::byVolume().add(large, 0.5).add(small, 0.5 * 0.7937)
 class SizeDistribution {
 public:

@@ -1,4 +1,4 @@
-// The maser inflow boundary of SPEC.md 3 (seed 3.C.5): a periodic box upstream of an open chute
+// The maser inflow boundary of Theory/Maser.md (Denissen 2019, app. 3.C.5): a periodic box upstream of an open chute
 // that first develops a flow of its own and then, once activated, feeds a copy of every particle
 // that leaves it through its downstream face into the chute.
 //

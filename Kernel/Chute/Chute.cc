@@ -6,7 +6,10 @@
 #include <vector>
 
 #include "Boundaries/Domain.h"
+#include "Boundaries/InsertionBoundary.h"
 #include "Error.h"
+#include "Sampling/Messages.h"
+#include "Sampling/ParticleSums.h"
 
 namespace talus {
 
@@ -113,6 +116,27 @@ std::size_t Chute::addBase(ChuteBase type, double diameter, std::size_t species,
     // The safety floor: below every base particle.
     addWall(Vec3::UnitZ(), Vec3(0, 0, -0.5 * (1 + roughness) * diameter), species);
     return centres.size();
+}
+
+double Chute::continueBase(std::size_t from, std::size_t to, double period, double xFrom, double xTo) {
+    require(period > 0, "continueBase: the period must be positive");
+    double added = 0;
+    forEachSelected(*this, ofSpecies(from), [&](std::size_t i) {
+        if (!particles().fixed[i]) return;
+        const Vec3 x = particles().position[i];
+        const double r = particles().radius[i];
+        for (int k = 1; x.x() + k * period < xTo; ++k)
+            if (x.x() + k * period >= xFrom) addFixedParticle(x + Vec3(k * period, 0, 0), r, to), ++added;
+    });
+    return sumOverRanks(added);
+}
+
+void Chute::insertAtRest(std::size_t count, std::size_t species, double radius, const Vec3& lo, const Vec3& hi,
+                         const std::string& what) {
+    InsertionBoundary box(lo, hi, SizeDistribution::byNumber().add(species, radius));
+    const InsertionReport report = box.insertCount(*this, count);
+    say(*this, "%s\n", report.describe().c_str());
+    require(report.complete, "could not place " + what + ": " + report.describe());
 }
 
 }  // namespace talus

@@ -1,4 +1,4 @@
-// talus::Chute, the base class of chute-flow drivers (SPEC.md 2): x downslope, y across, z normal
+// talus::Chute, the base class of chute-flow drivers (Theory/Chutes.md eq. (1)): x downslope, y across, z normal
 // to the base, gravity g (sin t, 0, -cos t) at inclination t, a rough base of fixed particles.
 //
 // A driver sets the geometry and the base in setupInitialConditions():
@@ -44,7 +44,7 @@ public:
     void setChuteGeometry(const ChuteGeometry& geometry);
     const ChuteGeometry& chuteGeometry() const { return geometry_; }
 
-    // The rough base (SPEC.md 2), of the given species. For the particle bases also a flat
+    // The rough base (Theory/Chutes.md "The rough base"), of the given species. For the particle bases also a flat
     // safety floor half a diameter below the base (nothing should reach it; the peers' scripts
     // have the same). Returns the number of base particles (0 for a flat base).
     //  - disordered: centres uniform in x and y and within +-roughness diameter/2 of z = 0, placed
@@ -55,6 +55,18 @@ public:
     //    allow (never closer), centres at z = 0.
     std::size_t addBase(ChuteBase type, double diameter, std::size_t species, std::uint64_t seed = 1,
                         double roughness = 0.5);
+
+    // The base continued downstream: copies of the fixed particles of species `from`, shifted along
+    // x by whole multiples of `period`, whose centres fall in [xFrom, xTo), added as fixed
+    // particles of species `to` (a maser's base laid along the chute it feeds). Each rank copies
+    // the particles it owns. Returns the number of copies in the whole scene.
+    // A start configuration: `count` spheres of the species and radius, at rest at random places
+    // in the box [lo, hi] (Boundaries/InsertionBoundary.h, random numbers from random()); prints
+    // the insertion's report once and stops with an error naming `what` unless all were placed.
+    void insertAtRest(std::size_t count, std::size_t species, double radius, const Vec3& lo, const Vec3& hi,
+                      const std::string& what);
+
+    double continueBase(std::size_t from, std::size_t to, double period, double xFrom, double xTo);
 
 private:
     ChuteGeometry geometry_;

@@ -1,4 +1,4 @@
-// What a chute-flow driver measures while it runs (SPEC.md 2): bulk quantities of the flowing
+// What a chute-flow driver measures while it runs (Theory/Chutes.md eq. (7)): bulk quantities of the flowing
 // particles, the plateau of their time series (a steady flow), and depth profiles.
 // These are quick diagnostics for running a study; the coarse-graining tool (Tools/CG) gives
 // the proper continuum fields afterwards.
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Particles/ParticleStore.h"
+#include "Sampling/SteadyDetector.h"
 
 namespace talus {
 
@@ -42,32 +43,8 @@ std::vector<ChuteSnapshot> snapshotsFromNumbers(const std::vector<double>& numbe
 ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies,
                            double xMin = -INFINITY, double xMax = INFINITY);
 
-// The plateau of time series sampled at equal intervals: steady once, over the last `window`
-// samples, the least-squares line through each series changes by at most `tolerance` times the
-// series' mean magnitude from the first sample of the window to the last (and it stays steady
-// from then on). A trend, not a comparison of half-window means: a flow that still accelerates
-// by 0.1% per sample passed a 2% test on half-window means of 20 samples, but not this one on
-// 100 samples.
-class PlateauDetector {
-public:
-    PlateauDetector(std::size_t window, double tolerance);
-    // Adds one sample of every series (the same number of series each time); returns steady().
-    bool add(double time, const std::vector<double>& values);
-    bool steady() const { return steadySince_ >= 0; }
-    double steadySince() const { return steadySince_; }  // time of the sample that made it steady
-    std::size_t samples() const { return samples_; }
-    // Everything it knows as numbers (window, tolerance, samples, steady time, the last window
-    // of samples), for a restart file (Simulation::keepInRestart), and back.
-    std::vector<double> state() const;
-    void restore(const std::vector<double>& state);
-
-private:
-    std::size_t window_;
-    double tolerance_;
-    std::vector<std::vector<double>> history_;  // the last window_ samples
-    std::size_t samples_ = 0;
-    double steadySince_ = -1;
-};
+// The plateau detector of the chutes is the general one (Sampling/SteadyDetector.h).
+using PlateauDetector = SteadyDetector;
 
 // Mean and standard error of the mean of samples, from the means of `batches` consecutive
 // batches (batch means remove most of the correlation between neighbouring samples).

@@ -50,7 +50,7 @@ struct ContactBatch {
     // The rest of every lane's input, from the particle arrays and the histories, in one loop of
     // its own before compute: in the contact pass, among its branches, the same loads and stores
     // left the compiler short of registers (their 30 loads and stores a contact were most of the
-    // pass's instructions; cachegrind and perf, settled bed, 2026-12-04).
+    // pass's instructions in a profile of the settled bed).
     void gather(const ParticleStore& p, const std::vector<Vec3>& previousForce, const ContactHistories& history) {
         const double* __restrict velocity = p.velocity[0].data();
         const double* __restrict spin = p.angularVelocity[0].data();
@@ -77,7 +77,7 @@ struct ContactBatch {
         }
     }
 
-    // The kinematics of contactKinematics (SPEC.md 1: arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
+    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
     // and the law's lasting-contact step, for every lane.
     [[gnu::noinline]] void compute(double dt) {
         for (int l = 0; l < count; ++l) {

@@ -1,7 +1,7 @@
 // The force loop: contact forces and torques of every listed pair and wall candidate, compiled
 // once per contact law (no dispatch, search or allocation per contact) and once per lane form
 // (Math/LaneKernels.h; the entry point is Contacts/ContactForces.h).
-// Geometry and kinematics follow SPEC.md 1: n from j to i, dn = ri + rj - rij, branch vectors
+// Geometry and kinematics follow Theory/ContactLaws.md eq. (1)-(3): n from j to i, dn = ri + rj - rij, branch vectors
 // bij = -(ri - dn/2) n and bji = (rj - dn/2) n to the middle of the overlap.
 #pragma once
 
@@ -31,7 +31,7 @@
 
 namespace talus::TALUS_LANES {
 
-// Kinematics of particle i against a partner at distance rij along the unit normal n (SPEC.md 1);
+// Kinematics of particle i against a partner at distance rij along the unit normal n (Theory/ContactLaws.md eq. (1)-(3));
 // overlap = ri + rj - rij may be negative for a pair that just separated. The branch vectors are
 // bij = -armI n and bji = armJ n with arms ri - dn/2 and rj - dn/2 (rj = 0 for walls), so the
 // spin part of the tangential velocity, wi x bij - wj x bji, is -(armI wi + armJ wj) x n.
@@ -228,7 +228,7 @@ public:
         list.history.set(k, history);
     }
 
-    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, SPEC.md 3):
+    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, Theory/Maser.md eq. (3)):
     // the scalar path with j's image, and the force on i alone. They are few (one layer of the
     // face), so they never enter a batch; they write no .fstat records (a force without its
     // reaction would break the stress of coarse graining).
@@ -333,7 +333,7 @@ private:
             c.inverseReducedMass = p_.invMass[i];
             c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
             // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
-            // direction only, the mean curvature of the gap, 1/r - 1/(2R) (SPEC.md 4).
+            // direction only, the mean curvature of the gap, 1/r - 1/(2R) (Theory/Superquadrics.md eq. (12)).
             c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
             const Law& law = laws_(p_.species[i], wall.species);
             const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
@@ -345,7 +345,7 @@ private:
         }
     }
 
-    // --- non-spherical particles (SPEC.md 4): defined, with their comments, in
+    // --- non-spherical particles (Theory/Superquadrics.md): defined, with their comments, in
     // Contacts/ShapedContactForces.h ---
     [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                       double dy, double dz);
@@ -433,7 +433,7 @@ private:
             const ContactForce f = law.separationForce(c, history, dt_);
             apply(i, j, f, c.normal, arms);
             normalForce = f.normalForce;
-            history = ContactHistory{};  // SPEC.md 1: the spring lives from the first time of contact
+            history = ContactHistory{};  // Theory/ContactLaws.md eq. (13): the spring lives from the first time of contact
         }
         const double push = law.approachForce(c, history, dt_);
         if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
@@ -461,7 +461,7 @@ private:
     // noted, nothing else. Through plain pointers that the compiler knows apart (they do not
     // alias: separate arrays), so that a lane costs its loads, additions and stores: with the
     // vectors' own accessors, and the rare cases' branches in the loop, it took 88 instructions
-    // a contact (cachegrind, settled bed, 2026-12-04), a fifth of the settled step's.
+    // a contact in a profile of the settled bed, a fifth of the settled step's.
     void applyBatch(PairList& list) {
         const ContactBatch& b = batch_;
         double* __restrict force = p_.force[0].data();

@@ -9,7 +9,7 @@
 namespace talus {
 
 // What a pair remembers from step to step: whether it touches, the tangential spring of
-// SPEC.md 1, and the normal force it applied at the last step (to tell its own part of the
+// Theory/ContactLaws.md eq. (13), and the normal force it applied at the last step (to tell its own part of the
 // particles' last forces from the rest, ContactKinematics::otherAcceleration). A pair that is apart but will touch within the next step is "approaching"
 // (LinearSpringDashpot::approachForce); it has no spring then, and the same three numbers hold
 // the push applied ahead of the touch, the approach speed and the overlap (minus the gap) then.

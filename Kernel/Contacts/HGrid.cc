@@ -29,7 +29,7 @@ void HGrid::buildLevels(const ParticleStore& particles, const Domain& domain, do
             level.cell[a] = level.size;
             if (!domain.periodic[a]) continue;
             const double L = domain.length(a);
-            // SPEC.md 1 pairs use the nearest image, which is unique only if no pair spans half the box.
+            // Theory/ContactLaws.md eq. (1)-(3) pairs use the nearest image, which is unique only if no pair spans half the box.
             require(L >= 2 * maxDiameter, "periodic length along " + std::string(1, "xyz"[a]) + " (" +
                                               std::to_string(L) + ") must be at least twice the largest interaction "
                                               "diameter 2r + skin (" + std::to_string(maxDiameter) + ")");

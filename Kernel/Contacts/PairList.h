@@ -2,7 +2,7 @@
 //
 // Pairs closer than ri + rj + reach are listed by the HGrid, where reach = skin + 2 vmax dt
 // looks one step ahead (vmax the largest particle speed); the list stays valid while no particle
-// can have moved reach/2 by the end of the next step (DESIGN.md "Data layout"). So every pair
+// can have moved reach/2 by the end of the next step (Documentation/Architecture.md "Data layout"). So every pair
 // that can touch within the next step is listed, even with skin 0.
 // Each listed pair and each particle-wall candidate carries its tangential spring; a rebuild
 // carries the springs of touching pairs over by the particles' global ids, so rebuilding

@@ -14,13 +14,12 @@
 // separations, bit for bit (the same operations in the same order).
 //
 // With AVX2 (and so with AVX-512 too) lanes take four pairs at a time without gathers
-// (sweepInFourPairLanes): on the AMD Zen 3 host of 2026-12-03 3-5% faster for the whole step;
-// on the Zen 4 host of 2026-12-04, where the gathers lost to the scalar loop, 2% (settled bed)
-// and 9% (developed flow) for the near list alone.
+// (sweepInFourPairLanes): faster than the scalar loop on AVX2 processors, and than the
+// gathers where those are slow (Documentation/Performance/History.md has the measurements).
 //
 // Which runs is decided per process by timing (chooseSweepForm): the gathers are fast on some
-// processors and slow on others (on the AMD Zen 5 hosts of 2026-12-01 the scalar loop made the
-// whole step 6-7% faster; on the Intel-like host before, the gathers made the sweep 1.5x faster).
+// processors and slow on others (on some the scalar loop made the whole step
+// 6-7% faster; on an Intel processor the gathers made the sweep 1.5x faster).
 #pragma once
 
 #include <algorithm>

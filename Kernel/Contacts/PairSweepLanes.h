@@ -119,9 +119,8 @@ inline std::size_t sweepInFourPairLanes(PairAt pairAt, std::size_t begin, std::s
     for (; m + 4 <= end; m += 4) {
         // (The pairs and places go into vectors from registers: stored one by one and loaded
         // whole, the load cannot take the stores' data on the way and waits for them, the
-        // hottest instruction of the wave's force loop in a profile at 108000 particles. Measured
-        // 3% faster at 3000 in single steps, 6% at 12000 in waves, unchanged at 108000: best of
-        // 5-7 interleaved runs on the Zen 3 host, 2026-12-04.)
+        // hottest instruction of the wave's force loop in a profile at 108000 particles. Measured:
+        // 3% faster at 3000 in single steps, 6% at 12000 in waves, unchanged at 108000.)
         long long pair[4];
         std::uint32_t index[4];
         __m256d d[4];  // xi - xj, yi - yj, zi - zj, ri + rj

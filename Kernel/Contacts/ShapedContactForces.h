@@ -1,5 +1,5 @@
 // The members of the force loop (ContactForceLoopInLanes, Contacts/ContactForceLoop.h) for pairs and wall
-// contacts with superquadric particles (SPEC.md 4), which only scenes with shapes reach: kept
+// contacts with superquadric particles (Theory/Superquadrics.md), which only scenes with shapes reach: kept
 // apart from the sphere path. Included at the end of ContactForceLoop.h.
 #pragma once
 
@@ -10,7 +10,7 @@ namespace talus::TALUS_LANES {
 // A pair with a superquadric: the exact contact (warm-started), then the law on the
 // kinematics of the contact point, with the branch vectors from the centres to it. The ends
 // of a contact are not treated (the law's plain step), and the tangential spring is turned
-// into the new tangent plane with its length kept (seed:8339-8449).
+// into the new tangent plane with its length kept (Denissen 2019, app. 5.A.3).
 // A pair apart keeps a lower bound of its gap (ShapedContactGeometry::gapBound) and lowers it
 // each step by how far the two bodies can have closed in (relative speed of the centres plus
 // each spin times its bounding radius, with a margin of half for the change of speed within

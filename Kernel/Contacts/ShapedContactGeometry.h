@@ -1,5 +1,5 @@
 // Where and how deep a non-spherical particle touches another particle or a plane wall: the
-// geometry the force loop needs (Contacts/ContactForces.h), from the exact stage of SPEC.md 4.
+// geometry the force loop needs (Contacts/ContactForces.h), from the exact stage of Theory/Superquadrics.md eq. (5)-(8).
 #pragma once
 
 #include <algorithm>
@@ -26,7 +26,7 @@ struct ShapedContactGeometry {
 };
 
 // The radius of curvature 1/|K| of a body's surface at x, from the mean curvature
-// K = (g^T H g - |g|^2 tr H) / (2 |g|^3) of its shape function (SPEC.md 4), capped at ten bounding
+// K = (g^T H g - |g|^2 tr H) / (2 |g|^3) of its shape function (Theory/Superquadrics.md eq. (12)), capped at ten bounding
 // radii so that a flat face does not make a Hertzian contact infinitely stiff.
 inline double curvatureRadius(const PlacedSuperquadric& body, const Vec3& x) {
     const ShapeValue v = body.at(x);

@@ -103,7 +103,7 @@ Vec4 newtonStep(const PlacedSuperquadric& i, const PlacedSuperquadric& j, const 
     return Eigen::PartialPivLU<Mat4>(jacobian).solve(-r.phi);
 }
 
-// The damped Newton solve of SPEC.md 4 from `start`.
+// The damped Newton solve of Theory/Superquadrics.md eq. (5)-(8) from `start`.
 template <class Bodies>
 NewtonResult solveFor(const PlacedSuperquadric& i, const PlacedSuperquadric& j, SuperquadricContactPoint start,
                       const SuperquadricContactSettings& settings, double scale) {
@@ -239,7 +239,7 @@ SuperquadricContact findContact(const PlacedSuperquadric& i, const PlacedSuperqu
     }
     if (i.shape->isSphere() && j.shape->isSphere()) {
         // Closed form: Fi = Fj on the line of centres where it divides them as ri : rj, and
-        // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (SPEC.md 1).
+        // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (Theory/ContactLaws.md eq. (1)-(3)).
         contact.converged = true;
         contact.touching = true;
         const double distance = std::sqrt(distance2);

@@ -1,4 +1,4 @@
-// Contact detection between two convex superquadrics, the exact stage of SPEC.md 4 (after the
+// Contact detection between two convex superquadrics, the exact stage of Theory/Superquadrics.md eq. (5)-(8) (after the
 // neighbour grid and the bounding spheres).
 //
 // The contact point Xc minimises Fi + Fj subject to Fi = Fj (F the lab-frame shape functions),
@@ -9,7 +9,7 @@
 // warm-starts from its last Xc and mu; a new one from the bounding spheres' contact point with
 // mu = 1. If Newton fails, the shapes are morphed from their bounding spheres to the true
 // shapes in 4, then 8, then 16 stages, each stage's solution starting the next (the thesis's
-// "plan B", seed:8125-8215).
+// "plan B", Denissen 2019, app. 5.A.2).
 #pragma once
 
 #include <cmath>
@@ -33,7 +33,7 @@ struct PlacedSuperquadric {
         if (s->isEllipsoid()) quadric = r * s->semiAxes().cwiseInverse().cwiseAbs2().asDiagonal() * r.transpose();
     }
 
-    // F, grad F and the Hessian in the lab frame (SPEC.md 4: A grad f, A H A^T).
+    // F, grad F and the Hessian in the lab frame (Theory/Superquadrics.md eq. (2): A grad f, A H A^T).
     ShapeValue at(const Vec3& x) const;
     double valueAt(const Vec3& x) const {
         if (shape->isEllipsoid()) {
@@ -86,7 +86,7 @@ struct SuperquadricContact {
     bool converged = false;     // the answer is certain: apart bounding spheres, or Newton (or plan B) found the point
     bool touching = false;      // Fi(Xc) = Fj(Xc) < 0
     SuperquadricContactPoint solution;
-    Vec3 normal = Vec3::Zero();        // unit, from j to i (the kernel's convention, SPEC.md 1): -grad Fi/|grad Fi|
+    Vec3 normal = Vec3::Zero();        // unit, from j to i (the kernel's convention, Theory/ContactLaws.md eq. (1)-(3)): -grad Fi/|grad Fi|
     double overlap = 0;                // di + dj with Fi(Xc - di normal) = 0, Fj(Xc + dj normal) = 0
     Vec3 contactPoint = Vec3::Zero();  // middle of the overlap along the normal (the sphere path's point)
     int iterations = 0;                // Newton iterations in all, plan B included

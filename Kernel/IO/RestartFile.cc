@@ -175,7 +175,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
                        << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
         w.key("summation") << std::uint64_t(c.idOrderedSums) << std::uint64_t(c.relist)
-                           << std::uint64_t(c.waveSteps) << std::uint64_t(c.waveStripColumns); w.end();
+                           << std::uint64_t(c.stepper.waveSteps) << std::uint64_t(c.stepper.waveStripColumns); w.end();
         w.key("time") << s.time << s.step; w.end();
         w.key("gravity") << s.gravity; w.end();
         w.key("domain") << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
@@ -282,9 +282,9 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     r.expect("summation");
     c.idOrderedSums = r.flag("id-ordered sums flag");
     c.relist = r.flag("relist flag");
-    c.waveSteps = static_cast<int>(r.count("wave steps", 255));
-    if (c.waveSteps < 1) r.fail("wave steps must be 1 to 255, got 0");
-    c.waveStripColumns = static_cast<int>(r.count("wave strip columns", 1u << 30));
+    c.stepper.waveSteps = static_cast<int>(r.count("wave steps", 255));
+    if (c.stepper.waveSteps < 1) r.fail("wave steps must be 1 to 255, got 0");
+    c.stepper.waveStripColumns = static_cast<int>(r.count("wave strip columns", 1u << 30));
     r.expect("time");
     t.time = r.real("time");
     t.step = r.count("step");

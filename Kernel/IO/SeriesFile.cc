@@ -1,6 +1,7 @@
 #include "IO/SeriesFile.h"
 
 #include <cerrno>
+#include <sstream>
 
 #include "Error.h"
 #include "IO/DurableFile.h"
@@ -12,6 +13,42 @@ SeriesFile::SeriesFile(Simulation& simulation, std::string suffix, std::string h
     : simulation_(simulation), suffix_(std::move(suffix)), header_(std::move(header)) {
     simulation_.keepInRestart("file." + suffix_, [this] { return save(); },
                               [this](const std::vector<double>& saved) { restore(saved); });
+}
+
+namespace {
+// "# name name ... note\n"
+std::string tableHeader(const std::string& suffix, const std::vector<std::string>& columns, const std::string& note) {
+    require(!columns.empty(), "series file '" + suffix + "': no columns");
+    std::string header = "#";
+    for (const std::string& c : columns) header.append(" ").append(c);
+    if (!note.empty()) header.append(" ").append(note);
+    return header.append("\n");
+}
+}  // namespace
+
+SeriesFile::SeriesFile(Simulation& simulation, std::string suffix, const std::vector<std::string>& columns,
+                       const std::string& note)
+    : SeriesFile(simulation, suffix, tableHeader(suffix, columns, note)) {
+    columns_ = columns.size();
+}
+
+void SeriesFile::write(std::initializer_list<Value> row) {
+    require(row.size() == columns_, "series file '" + suffix_ + "': a row of " + std::to_string(row.size()) +
+                                        " values for " + std::to_string(columns_) + " columns");
+    if (simulation_.rank() != 0) return;
+    std::ostringstream line;
+    line.precision(precision_);
+    const char* separator = "";
+    for (const Value& v : row) {
+        line << separator;
+        if (v.isInteger)
+            line << v.integer;
+        else
+            line << v.number;
+        separator = " ";
+    }
+    line << '\n';
+    append(line.str());
 }
 
 SeriesFile::~SeriesFile() {

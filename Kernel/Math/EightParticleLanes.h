@@ -4,7 +4,7 @@
 // The coordinates are stored particle after particle (x y z, x y z, ...), so eight particles'
 // fill three vectors of eight lanes: lane l of vector c holds coordinate (8c + l) mod 3 of particle
 // (8c + l) / 3 of the block. GCC's own vectorisation of such loops shuffled every vector into
-// place and took about 4 ns per particle and pass on the Zen 5 host (15% of the developed chute
+// place and took about 4 ns per particle and pass on an AVX-512 processor (15% of the developed chute
 // flow's step, Documentation/Performance.md); written by hand a pass takes about 1.5 ns. The
 // helpers here do the same operations as the scalar loops they stand in for (the results are
 // the same to the bit).

@@ -7,7 +7,7 @@
 // Element-wise work (kicks, drifts, the box test) stays in that order, with per-particle
 // values spread over it; what needs a particle's three coordinates together (a norm, a sweep
 // point) turns the three vectors into one per axis, (x0 x1 x2 x3) (y0 ...) (z0 ...), with six
-// shuffles. On the AMD Zen 3 host of 2026-12-03 the scalar loop of the drift pass took about
+// shuffles. On an AVX2 processor the scalar loop of the drift pass took about
 // 30 ns per particle, a fifth of the settled chute's step (Documentation/Performance.md).
 // The helpers do the same operations as the scalar loops they stand in for (the same results
 // to the bit).

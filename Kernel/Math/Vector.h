@@ -1,4 +1,4 @@
-// Small fixed-size linear algebra used throughout the kernel (DESIGN.md "Kernel/Math").
+// Small fixed-size linear algebra used throughout the kernel (Documentation/Architecture.md "Data layout").
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-// The ranks of a run and what they say to each other (DESIGN.md "Parallel").
+// The ranks of a run and what they say to each other (Documentation/Architecture.md "Parallel").
 //
 // One interface, two implementations: MPI_COMM_WORLD when the program was started by mpirun
 // (and the build has MPI, TALUS_WITH_MPI), and a single rank otherwise. The domain split

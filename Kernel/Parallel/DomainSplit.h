@@ -1,4 +1,4 @@
-// The MPI domain split (DESIGN.md "Parallel", Documentation/Parallel.md): the ranks form a
+// The MPI domain split (Documentation/Architecture.md "Parallel", Documentation/Parallel.md): the ranks form a
 // Cartesian grid of gx x gy x gz cells (all along x unless set otherwise: a long chute splits
 // along its flow); each rank owns the particles in its cell of the domain, and holds as ghosts
 // copies of the particles of other ranks within the ghost width (the largest interaction

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "IO/OutputFiles.h"
+#include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
 #include "Simulation.h"
 
@@ -63,10 +64,11 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
     // A rebalance that is due (the same step on every rank) needs a list build to act.
     const bool due = rebalanceInterval_ > 0 && state_.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
     // (And whether a rank found its particles moved by hand since the last step: their ghosts
-    // on other ranks moved too, and every rank's near list is made anew: checkPositionsFound.)
+    // on other ranks moved too, and every rank's near list is made anew: PositionWatch::checkFound.)
+    bool& positionsChanged = work_->positions.changedThisStep;
     double agreed[4] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
-                        positionsChangedThisStep_ ? 1.0 : 0.0};
-    positionsChangedThisStep_ = false;
+                        positionsChanged ? 1.0 : 0.0};
+    positionsChanged = false;
     {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
         split_->communicator().allReduce(agreed, 4, Communicator::Reduction::max);
@@ -195,7 +197,7 @@ void Simulation::writeGatheredOutput() {
     renumberNewParticles();
     ParticleStore& p = state_.particles;
     ParticleStore gathered = split_->gatherParticles(p);
-    const ContactRecordList records = split_->gatherRecords(p, records_.each(), gathered);
+    const ContactRecordList records = split_->gatherRecords(p, work_->records.each(), gathered);
     const std::vector<CarriedHistory> histories =
         split_->gatherHistories(state_.pairList.carriedHistories(p, /*firstOwned*/ true));
     if (rank() == 0 && files_) {
@@ -207,7 +209,7 @@ void Simulation::writeGatheredOutput() {
             std::swap(state_.pairList, saved);
         };
         try {
-            files_->writeFrame(state_, records, recordedContacts_, elasticEnergy_);
+            files_->writeFrame(state_, records, work_->recordedContacts, work_->elasticEnergy);
             files_->writeRestart(state_);
         } catch (...) {
             swapBack();

@@ -17,10 +17,11 @@ struct Energies {
     double total() const { return gravitational + kinetic + rotational + elastic; }
 };
 
+// Over the owned particles only: on ranks the ghosts after them are other ranks' particles.
 inline Energies particleEnergies(const ParticleStore& p, const Vec3& gravity) {
     Energies e;
     Vec3 moment = Vec3::Zero();
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.fixed[i]) continue;
         e.kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
         // T = L.omega/2 for a rigid body, which for a sphere is |omega|^2 I/2.

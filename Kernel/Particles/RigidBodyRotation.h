@@ -1,4 +1,4 @@
-// Rotation of a non-spherical rigid particle (SPEC.md 4: "the full rigid-body equations, not
+// Rotation of a non-spherical rigid particle (Theory/Integration.md eq. (7)-(10): "the full rigid-body equations, not
 // scalar"); Documentation/Superquadrics/RigidBodyRotation.md derives what is written here.
 //
 // State of one particle:
@@ -61,7 +61,7 @@ inline void kickAngularMomentum(Vec3& angularMomentum, const Vec3& torque, doubl
     angularMomentum += duration * torque;
 }
 
-// Lab inertia tensor A I A^T (SPEC.md 4).
+// Lab inertia tensor A I A^T (Theory/Superquadrics.md eq. (4)).
 inline Mat3 labInertia(const Quat& orientation, const Vec3& principalInertia) {
     const Mat3 A = orientation.toRotationMatrix();
     return A * principalInertia.asDiagonal() * A.transpose();

@@ -1,5 +1,5 @@
 // The kicks and the drift of the velocity Verlet (kick-drift-kick) step of the mobile particles
-// (Documentation/Theory/Integration.md): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v. Fixed
+// (Documentation/Theory/Integration.md eq. (3)-(6)): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v. Fixed
 // particles are left alone (prescribed motions move them elsewhere). Each pass runs in the lanes
 // of the form in use (Math/LaneForm.h; the passes themselves: Particles/VelocityVerletLanes.h).
 #pragma once

@@ -108,7 +108,7 @@ Vec3 Superquadric::principalInertia(double density) const {
 // symmetry, signs restored at the end) with N = (a|nx|, b|ny|, c|nz|) the task is to maximise
 // N.(X, Y, Z) on (X^p + Y^p)^r + Z^q = 1 (p = 2/e2, q = 2/e1, r = e2/e1). Lagrange's condition
 // gives Y/X = alpha = (Ny/Nx)^(1/(p-1)) and Z/X = beta = ((1 + alpha^p)^(r-1) Nz/Nx)^(1/(q-1)),
-// and the constraint X = ((1 + alpha^p)^r + beta^q)^(-1/q) (seed eqs. 5.46-5.50, whose extracted
+// and the constraint X = ((1 + alpha^p)^r + beta^q)^(-1/q) (the thesis's eqs. 5.46-5.50, whose extracted
 // exponents are garbled). The in-plane axis with the larger N is the reference, so alpha <= 1;
 // for beta > 1 the same equation is solved for Z first, so that nothing overflows when n is
 // nearly along z.

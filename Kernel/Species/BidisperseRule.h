@@ -1,4 +1,4 @@
-// The bidisperse collision rule of SPEC.md 1 (seed:6370-6436): in a mixture of large spheres
+// The bidisperse collision rule of Theory/ContactLaws.md "Bidisperse mixtures" (Denissen 2019, app. 3.C.2): in a mixture of large spheres
 // (diameter dL) and small ones (dS), every pair type has the same restitution e, and the
 // collision time scales with the square root of the pair's diameter, tc(d) = tcL sqrt(d/dL),
 // with d = dL, dS and (dL + dS)/2 for LL, SS and LS contacts; kt = 2/7 kn and gt = gn.

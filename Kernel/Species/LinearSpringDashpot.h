@@ -1,5 +1,5 @@
 // Linear spring-dashpot normal force with a tangential spring and Coulomb sliding friction
-// (SPEC.md 1): fn = kn dn - gn vn, ft = -kt xi - gt vt, |ft| <= mu |fn|.
+// (Theory/ContactLaws.md eq. (7)-(8)): fn = kn dn - gn vn, ft = -kt xi - gt vt, |ft| <= mu |fn|.
 // The damping coefficient gn is absolute (force per velocity, Luding's convention).
 #pragma once
 
@@ -27,7 +27,7 @@ struct LinearSpringDashpot {
     static constexpr const char* name = "LinearSpringDashpot";
     static constexpr bool usesEffectiveRadius = false;
 
-    // SPEC.md 1 inverse formulas for a central collision of reduced mass m:
+    // Theory/ContactLaws.md eq. (12) inverse formulas for a central collision of reduced mass m:
     // kn = m (pi^2 + ln(e)^2) / tc^2, gn = -2 m ln(e) / tc; and kt = 2/7 kn, gt = gn.
     static LinearSpringDashpot fromCollision(double collisionTime, double restitution, double reducedMass) {
         require(collisionTime > 0, "collision time must be positive, got " + std::to_string(collisionTime));
@@ -45,12 +45,12 @@ struct LinearSpringDashpot {
 
     LinearSpringDashpot& withFriction(double mu) { friction = mu; return *this; }
 
-    // SPEC.md 1: tc = pi / sqrt(kn/m - (gn/(2m))^2); infinite when overdamped.
+    // Theory/ContactLaws.md eq. (10)-(11): tc = pi / sqrt(kn/m - (gn/(2m))^2); infinite when overdamped.
     double collisionTime(double reducedMass) const {
         const double w2 = normalStiffness / reducedMass - std::pow(normalDamping / (2 * reducedMass), 2);
         return w2 > 0 ? pi / std::sqrt(w2) : INFINITY;
     }
-    // SPEC.md 1: e = exp(-tc gn / (2m)).
+    // Theory/ContactLaws.md eq. (10)-(11): e = exp(-tc gn / (2m)).
     double restitution(double reducedMass) const {
         return std::exp(-collisionTime(reducedMass) * normalDamping / (2 * reducedMass));
     }
@@ -143,7 +143,7 @@ struct LinearSpringDashpot {
     struct Lane {
         double nx, ny, nz, overlap;             // normal, overlap
         double vx, vy, vz, normalVelocity;      // relative velocity of the centres, its normal part
-        double tx, ty, tz;                      // tangential velocity vt (SPEC.md 1)
+        double tx, ty, tz;                      // tangential velocity vt (Theory/ContactLaws.md eq. (4))
         double otherAcceleration, inverseReducedMass, inverseDistance;  // (ContactKinematics)
         double sx, sy, sz;                      // spring, advanced in place
         double normalForce, fx, fy, fz;         // out: fn and the tangential force
@@ -158,13 +158,13 @@ struct LinearSpringDashpot {
         c.normalForce = elastic - normalDamping * speedNow;
         tangentialStep(c, dt);
     }
-    // SPEC.md 1 as plain velocity Verlet evaluates it: the half-step velocities, no treatment of
+    // Theory/ContactLaws.md eq. (7)-(8) as plain velocity Verlet evaluates it: the half-step velocities, no treatment of
     // the contact's ends (superquadric contacts, see plainForce; batched in EllipsoidContactBatch.h).
     [[gnu::always_inline]] void plainContact(Lane& c, double dt) const {
         c.normalForce = normalStiffness * c.overlap - normalDamping * c.normalVelocity;
         tangentialStep(c, dt);
     }
-    // The spring advanced, the tangential force, the Coulomb limit (SPEC.md 1).
+    // The spring advanced, the tangential force, the Coulomb limit (Theory/ContactLaws.md eq. (14)).
     [[gnu::always_inline]] void tangentialStep(Lane& c, double dt) const {
         advanceTangentialSpring(c.sx, c.sy, c.sz, c.nx, c.ny, c.nz, c.vx, c.vy, c.vz, c.tx, c.ty, c.tz, c.inverseDistance,
                                 dt);

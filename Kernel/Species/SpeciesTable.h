@@ -3,7 +3,7 @@
 // Each species has a density and a contact law; a pair of different species uses the law's
 // mixing rule unless the driver sets the pair's parameters explicitly (setPair). All species of
 // one simulation use the same kind of law, so the force loop is compiled once per kind and
-// reads a dense table (PairTable) with no dispatch per contact (DESIGN.md "Data layout").
+// reads a dense table (PairTable) with no dispatch per contact (Documentation/Architecture.md "Data layout").
 #pragma once
 
 #include <cstddef>

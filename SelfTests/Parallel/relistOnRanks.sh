@@ -8,7 +8,7 @@
 # spheres, and their last frames agree to round-off (tolerance 1e-6). The two save every 0.1
 # (a save on ranks builds the list anew and rebalances), and stop at t = 21: the flow is chaotic,
 # and the round-off of another order of force sums, once it shows, grows about 30 times per 0.1
-# time units (in the sanitizer build of 2026-12-02: first seen at t = 21.6 at 1e-10, 1.2e-5 at
+# time units (in a sanitizer build: first seen at t = 21.6 at 1e-10, 1.2e-5 at
 # t = 22; over a whole time unit without saves it reached 0.07 by t = 22, in serial runs too).
 # Usage: relistOnRanks.sh MPIRUN MASERFEDCHUTE compareRuns.py
 set -euo pipefail

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Draws a width scan of talus-cg (--width-scan) as heat maps, one panel per point, in the
-manner of the thesis's figure 4.5 (seed:6823-6840; Documentation/CoarseGraining.md "Choosing
+manner of the thesis's figure 4.5 (Denissen 2019, sec. 4.2.2; Documentation/CoarseGraining.md "Choosing
 the widths"): log w_a against log w_b, colour = the field, white where no particle contributes
 (zero density), the point's
 insensitive width pairs outlined in black, the plateau common to all points as a red

@@ -193,6 +193,8 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             fitSpeciesToFrame(options, inputs, frame);
             grainer = CoarseGrainer(setup);
             layout = grainer.layout();
+            // The first frame's sources before any output is opened: its input errors leave no file.
+            grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
             if (options.mixingSpecies && layout.species < 2) {
                 throw InputError("--mixing: needs a mixture of at least 2 species, the run has " + std::to_string(layout.species));
             }
@@ -254,7 +256,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             }
             if (options.mixingSpecies) {
                 std::vector<std::string> mixingComments = comments;
-                mixingComments.push_back("mixing index M and segregation index S (SPEC.md 5) of species " +
+                mixingComments.push_back("mixing index M and segregation index S (Theory/CoarseGraining.md eq. (13)-(16)) of species " +
                                          std::to_string(*options.mixingSpecies) +
                                          "; SpeciesAtCore 1 when its mean distance from the centre of mass is below the material's (Fields/MixingIndex.h)");
                 mixingWriter = std::make_unique<CsvWriter>(
@@ -268,7 +270,8 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             firstTime = time;
         }
 
-        grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
+        if (framesUsed > 0)
+            grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
         grainer.evaluate(points, sums);
         if (options.timeAverage) {
             for (std::size_t k = 0; k < sums.size(); ++k) average[k] += sums[k];

@@ -1,4 +1,4 @@
-// HDF5 output of talus-cg with an XDMF companion file (DESIGN.md "Files": ParaView-readable
+// HDF5 output of talus-cg with an XDMF companion file (Documentation/FileFormats/vtu.md: ParaView-readable
 // HDF5 with XDMF; layout in Documentation/CoarseGraining.md "Output formats"):
 //
 //   NAME.h5   /grid/x, /grid/y, /grid/z   cell-centre coordinates per axis (a grid; length 1 and

@@ -289,7 +289,7 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
     if (o.widthScan) {
         const int ranges = int(o.scanRange[0].has_value()) + int(o.scanRange[1].has_value()) + int(o.scanRange[2].has_value());
         if (ranges == 0) {
-            // The thesis's scan of a chute (seed:6820-6823): wx 0.1..1000, wz 0.1..10; fewer steps.
+            // The thesis's scan of a chute (Denissen 2019, sec. 4.2.2): wx 0.1..1000, wz 0.1..10; fewer steps.
             o.scanRange[0] = WidthScanRange{0.1, 1000, 41};
             o.scanRange[2] = WidthScanRange{0.1, 10, 21};
         } else if (ranges != 2) {
@@ -313,7 +313,7 @@ std::string usage() {
     return R"(usage: talus-cg NAME [options]     (reads NAME.data, and NAME.fstat, NAME.restart when present)
 
 Coarse-grains DEM output (.data/.fstat of Talus or MercuryDPM) into continuum fields
-(SPEC.md 6; Documentation/CoarseGraining.md): density, volume fraction, momentum, velocity,
+(Documentation/CoarseGraining.md, Documentation/Theory/CoarseGraining.md): density, volume fraction, momentum, velocity,
 kinetic stress, contact stress, per-species density and concentration.
 
 input:
@@ -362,11 +362,11 @@ derived (Documentation/CoarseGraining.md "Depth averages", "Mixing and segregati
                           instead of the fields; z must be resolved and its range cover the flow
   --bulk-density RHO      bulk density for the height h = mass per area / RHO (default: the
                           mass-weighted mean density of the column)
-  --mixing K              mixing index M and segregation index S (SPEC.md 5) with species K as the
+  --mixing K              mixing index M and segregation index S (Theory/CoarseGraining.md) with species K as the
                           spheres, for every frame written (or the time average)
   --mixing-output FILE    where M and S go (default: the output file with .mixing.csv for .csv)
 
-width scan (Documentation/CoarseGraining.md "Choosing the widths"; SPEC.md 6):
+width scan (Documentation/CoarseGraining.md "Choosing the widths"):
   --width-scan            scan diagonal widths of two directions on a log grid at the scan points, write
                           the field and its sensitivity per width pair, and choose the widths at the
                           centre of the largest plateau of insensitivity common to all points

@@ -1,4 +1,4 @@
-// talus-cg: coarse-grains .data/.fstat files into continuum fields (SPEC.md 6,
+// talus-cg: coarse-grains .data/.fstat files into continuum fields (Theory/CoarseGraining.md eq. (5)-(10),
 // Documentation/CoarseGraining.md). Usage: talus-cg NAME [options]; talus-cg --help.
 #include <iostream>
 

@@ -53,15 +53,28 @@ CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
     }
 }
 
+long periodicImagesEachSide(double reach, double cutoff, double length, int axis, const std::string& where) {
+    if (!(reach <= maxReachInPeriodicLengths * length)) {
+        const std::string letter(1, axisLetter(axis));
+        throw InputError(where + ": along the periodic " + letter + " axis the kernel reaches " + str(reach) +
+                         " from a particle (cut off at " + str(cutoff) + " times the width), " + str(reach / length) +
+                         " times the periodic length " + str(length) + " of the domain; at most " +
+                         str(maxReachInPeriodicLengths) +
+                         " periodic lengths are supported (every one adds two images of each particle): average over " +
+                         letter + " (--coordinates), narrow the kernel (--width) or check the domain in the file");
+    }
+    return static_cast<long>(std::ceil(reach / length)) + 1;
+}
+
 void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox& box,
                                 std::vector<Vec3>& shifts) const {
     shifts.assign(1, Vec3{0, 0, 0});
     for (int k = 0; k < 3; ++k) {
-        const double length = box.length(k);
-        if (!setup_.periodic[k] || !setup_.coordinates.resolves(k) || !(length > 0)) continue;
+        if (imagesEachSide_[k] == 0) continue;
         // Every image whose support overlaps the periodic box (a kernel wider than the box
         // needs several).
-        const long reach = static_cast<long>(std::ceil(halfExtent_[k] / length)) + 1;
+        const double length = box.length(k);
+        const long reach = imagesEachSide_[k];
         std::vector<Vec3> next;
         for (const Vec3& shift : shifts) {
             for (long n = -reach; n <= reach; ++n) {
@@ -90,6 +103,13 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                          std::to_string(n) + " particles, but the restart file describes " +
                          std::to_string(setup_.excluded.size()) +
                          ": its fixed particles cannot be matched (drop --fixed exclude)");
+    }
+    for (int k = 0; k < 3; ++k) {
+        const double length = frame.box.length(k);
+        const bool images = setup_.periodic[k] && setup_.coordinates.resolves(k) && length > 0;
+        imagesEachSide_[k] = images ? periodicImagesEachSide(halfExtent_[k], profile_.cutoff(), length, k,
+                                                             lineOf(dataPath, frame.headerLine))
+                                    : 0;
     }
     position_.clear();
     velocity_.clear();
@@ -181,7 +201,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              ": the .fstat and .data files do not describe the same particles");
         }
         // Branch b from the far end to x_i: the partner's centre (its image next to i: the
-        // normal points from j to i) for pairs, the contact point for walls (SPEC.md 6).
+        // normal points from j to i) for pairs, the contact point for walls (Theory/CoarseGraining.md eq. (10)).
         Vec3 b;
         double weight = 1;
         if (c.isWall()) {

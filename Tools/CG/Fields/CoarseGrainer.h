@@ -1,5 +1,5 @@
 // Evaluates the coarse-grained sums (FieldSums.h) of one frame at any list of points
-// (SPEC.md 6: evaluation needs no grid). One code path for every point set: a grid is just a
+// (Theory/CoarseGraining.md "Fields": evaluation needs no grid). One code path for every point set: a grid is just a
 // list of points, so identical points give bitwise identical values.
 //
 // Set up once with the kernel (shape, width matrix, coordinates); then per frame setFrame()
@@ -58,6 +58,7 @@ private:
     std::unique_ptr<CylindricalCoarseGrainer> cylindrical_;  // set for RZ and R only
     FieldSums layout_;
     Vec3 halfExtent_{};  // support half-extent per lab axis (zero on averaged axes)
+    std::array<long, 3> imagesEachSide_{};  // of the current frame per lab axis (0: no images)
     double scale_ = 1;   // c_d det(A) / (lengths of the averaged directions) of the current frame
 
     // Particle sources of the current frame (images included), structure of arrays.

@@ -75,6 +75,9 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
     const int across1 = (axis_ + 1) % 3, across2 = (axis_ + 2) % 3;  // (across1, across2, axis) right-handed
     const double length = frame.box.length(axis_);
     const bool periodicAxis = resolvesAxial && setup_.periodic[axis_] && length > 0;
+    const long reach = periodicAxis ? periodicImagesEachSide(reachAlong, profile_.cutoff(), length, axis_,
+                                                             dataPath + " line " + std::to_string(frame.headerLine))
+                                    : 0;
     std::vector<Vec3> boxLo, boxHi;
     for (std::size_t p = 0; p < n; ++p) {
         const int s = frame.species[p];
@@ -94,8 +97,6 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
         const Vec3 u{v[across1] * cosine + v[across2] * sine, -v[across1] * sine + v[across2] * cosine, v[axis_]};
         const double volume = 4.0 / 3.0 * std::numbers::pi * frame.radius[p] * frame.radius[p] * frame.radius[p];
         // Images along a periodic axis whose support overlaps the box.
-        long reach = 0;
-        if (periodicAxis) reach = static_cast<long>(std::ceil(reachAlong / length)) + 1;
         for (long image = -reach; image <= reach; ++image) {
             const double si = x[axis_] + double(image) * length;
             if (periodicAxis && !(si - reachAlong < frame.box.hi[axis_] && si + reachAlong > frame.box.lo[axis_])) continue;

@@ -1,7 +1,7 @@
-// Coarse-grained fields in cylindrical coordinates about a drum axis (SPEC.md 5 rotating drums,
-// SPEC.md 6 fields; derivation in Documentation/CoarseGraining.md "Cylindrical coordinates").
+// Coarse-grained fields in cylindrical coordinates about a drum axis (Theory/RotatingDrum.md rotating drums,
+// Theory/CoarseGraining.md eq. (5)-(10) fields; derivation in Documentation/CoarseGraining.md "Cylindrical coordinates").
 //
-// The fields are the Cartesian fields of SPEC.md 6 (densities per unit volume) averaged over the
+// The fields are the Cartesian fields of Theory/CoarseGraining.md eq. (5)-(10) (densities per unit volume) averaged over the
 // angle theta around the axis: rho(r, s) = (1/2 pi) int rho(r, theta, s) dtheta, so that
 // int rho 2 pi r dr ds is the mass. For a kernel W(x) = c_d/(wp^2 wa) f(u^2) that is isotropic
 // across the axis (width wp) with width wa along it, the average of one particle's kernel over the

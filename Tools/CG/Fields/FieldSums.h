@@ -1,4 +1,4 @@
-// The additive coarse-grained sums evaluated at each point (SPEC.md 6; Goldhirsch 2010;
+// The additive coarse-grained sums evaluated at each point (Theory/CoarseGraining.md; Goldhirsch 2010;
 // Weinhart et al. 2012), stored as one row of doubles per point:
 //
 //   Density            rho      = sum_i m_i W(r - r_i)

@@ -14,7 +14,7 @@ namespace {
 constexpr double notANumber = std::numeric_limits<double>::quiet_NaN();
 
 // Particle centres of a frame inside the support |A (x - r)| < R of a diagonal kernel with
-// widths w (zero on averaged axes), periodic images included (SPEC.md 6: the same sources as
+// widths w (zero on averaged axes), periodic images included (Theory/CoarseGraining.md: the same sources as
 // CoarseGrainer::setFrame).
 long particlesInSupport(const ParticleFrame& frame, const std::vector<bool>& excluded, const Vec3& point, const Vec3& w,
                         double cutoff, const std::array<bool, 3>& periodic) {
@@ -23,7 +23,7 @@ long particlesInSupport(const ParticleFrame& frame, const std::vector<bool>& exc
         shifts[k] = {0.0};
         const double length = frame.box.length(k);
         if (w[k] > 0 && periodic[k] && length > 0) {
-            const long reach = static_cast<long>(std::ceil(cutoff * w[k] / length)) + 1;
+            const long reach = periodicImagesEachSide(cutoff * w[k], cutoff, length, k, "width scan");
             for (long n = 1; n <= reach; ++n) {
                 shifts[k].push_back(double(n) * length);
                 shifts[k].push_back(-double(n) * length);

@@ -1,4 +1,4 @@
-// Automatic choice of anisotropic widths (SPEC.md 6, seed:6790-6852, the thesis's figure 4.5):
+// Automatic choice of anisotropic widths (Theory/CoarseGraining.md eq. (1), Denissen 2019, sec. 4.2.2, the thesis's figure 4.5):
 // a field is evaluated at a few points for every pair (wa, wb) of diagonal widths of two
 // directions on a log grid; where it does not change with the widths it is a property of the
 // flow, not of the kernel. The rule (Documentation/CoarseGraining.md "Choosing the widths"):

@@ -1,5 +1,5 @@
 // The one error type of the coarse-graining tool: a problem with an input file or a parameter.
-// Messages name the file and line (DESIGN.md "Files": every reader rejects malformed input with
+// Messages name the file and line (Documentation/Reliability.md: every reader rejects malformed input with
 // a message naming the file, line and problem), or the offending program option.
 #pragma once
 

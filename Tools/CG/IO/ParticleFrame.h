@@ -1,5 +1,5 @@
 // One saved step of a .data file: the particles as MercuryDPM's 3-D layout describes them
-// (Documentation/FileFormats/data.md). Structure of arrays, as in the kernel (DESIGN.md "Data layout").
+// (Documentation/FileFormats/data.md). Structure of arrays, as in the kernel (Documentation/Architecture.md "Data layout").
 #pragma once
 
 #include <array>

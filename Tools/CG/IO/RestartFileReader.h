@@ -10,7 +10,7 @@
 
 namespace talus::cg {
 
-// A cylinder wall of a Talus restart file (the mantle of a rotating drum, SPEC.md 5): a point of
+// A cylinder wall of a Talus restart file (the mantle of a rotating drum, Theory/RotatingDrum.md eq. (2)): a point of
 // its axis, the axis direction and the radius.
 struct CylinderWall {
     std::array<double, 3> axisPoint{0, 0, 0};

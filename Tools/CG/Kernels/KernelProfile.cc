@@ -20,7 +20,7 @@ std::string lower(std::string text) {
 
 double normalisationOf(KernelShape shape, int d) {
     switch (shape) {
-        case KernelShape::Lucy:  // SPEC.md 6
+        case KernelShape::Lucy:  // Theory/CoarseGraining.md
             return d == 1 ? 5.0 / 4.0 : d == 2 ? 5.0 / pi : 105.0 / (16.0 * pi);
         case KernelShape::Heaviside:  // 1 / volume of the unit ball
             return d == 1 ? 0.5 : d == 2 ? 1.0 / pi : 3.0 / (4.0 * pi);

@@ -1,7 +1,7 @@
-// The width of an anisotropic coarse-graining function (SPEC.md 6): W(r) = det(A) W1(A r) with
+// The width of an anisotropic coarse-graining function (Theory/CoarseGraining.md eq. (1)): W(r) = det(A) W1(A r) with
 // A symmetric positive definite. The user gives the width matrix B = A^{-1}, which has the
 // widths along its eigenvectors: B = w I (isotropic), B = diag(wx, wy, wz) (widths per
-// direction, the "w / lambda_k" of SPEC.md 6), or any symmetric positive definite matrix
+// direction, the "w / lambda_k" of Theory/CoarseGraining.md eq. (1)), or any symmetric positive definite matrix
 // (a kernel stretched along rotated axes). An isotropic kernel is the case A = I/w: one code path.
 //
 // Only the kernel's axes (the coordinates that are not averaged, Coordinates.h) take part: A is

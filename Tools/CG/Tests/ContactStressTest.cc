@@ -1,4 +1,4 @@
-// The contact stress (SPEC.md 6; Weinhart et al. 2012): each contact force spread along the
+// The contact stress (Theory/CoarseGraining.md eq. (10); Weinhart et al. 2012): each contact force spread along the
 // branch between the two centres (centre and contact point for walls) by the line integral of
 // the kernel, compressive positive.
 //

@@ -111,7 +111,7 @@ TEST(CylindricalFields, OnTheAxisEveryKernelGivesItsValueAtTheRingDistance) {
         const int fields = grainer.layout().count();
         for (std::size_t p = 0; p < points.size(); ++p) {
             const double q = std::hypot(r0, points[p][2]) / width;
-            // SPEC.md 6 / KernelProfile.h in 3-D, written out here.
+            // Theory/CoarseGraining.md eq. (5)-(10) / KernelProfile.h in 3-D, written out here.
             double w3 = 0;
             if (shape == KernelShape::Lucy && q < 1) w3 = 105 / (16 * pi) * (1 - 6 * q * q + 8 * q * q * q - 3 * q * q * q * q);
             if (shape == KernelShape::Heaviside && q < 1) w3 = 3 / (4 * pi);

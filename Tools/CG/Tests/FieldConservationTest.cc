@@ -1,4 +1,4 @@
-// SPEC.md 6 "mass and momentum balance hold exactly": the integral of the density field over a
+// Theory/CoarseGraining.md eq. (5)-(6): the integral of the density field over a
 // domain that contains every kernel is the total mass, and that of the momentum field the total
 // momentum, in 3-D, in 2-D and 1-D averaged coordinates, with periodic images, for every kernel.
 //

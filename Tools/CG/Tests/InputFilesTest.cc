@@ -244,3 +244,37 @@ TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
         EXPECT_EQ(errorOf([&] { readRestartFile(c.path); }), c.expected);
     }
 }
+
+// A kernel that reaches over very many periodic lengths (here a .data box 1e-9 long in periodic
+// x, a width of 1): every image of a particle whose support overlaps the box is a source, 2e9 of
+// them for each particle, and building the frame never ended (or ran out of memory). It is an
+// InputError naming the frame's header line, the periodic length and the kernel's reach; a
+// kernel reaching over 20 lengths, the most allowed, still gets its images.
+TEST(BadFiles, KernelReachingOverTooManyPeriodicLengths) {
+    write("thin.data", "1 0 0 0 0 1e-9 1 1\n5e-10 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    const auto thin = readAllDataFrames("thin.data");
+    CoarseGrainingSetup setup;
+    setup.width = WidthMatrix::isotropic(1);
+    setup.periodic = {true, false, false};
+    CoarseGrainer cartesian(setup);
+    const std::string expected =
+        "thin.data line 1: along the periodic x axis the kernel reaches 1 from a particle (cut off at 1 times the "
+        "width), 1000000000 times the periodic length 1e-09 of the domain; at most 20 periodic lengths are supported "
+        "(every one adds two images of each particle): average over x (--coordinates), narrow the kernel (--width) or "
+        "check the domain in the file";
+    EXPECT_EQ(errorOf([&] { cartesian.setFrame(thin[0], nullptr, "thin.data"); }), expected);
+    // The same along the axis of cylindrical coordinates about x.
+    CoarseGrainingSetup drum = setup;
+    drum.coordinates = Coordinates::fromName("RZ");
+    drum.coordinates.setAxis(0, {0, 0.5, 0.5});
+    CoarseGrainer cylindrical(drum);
+    EXPECT_EQ(errorOf([&] { cylindrical.setFrame(thin[0], nullptr, "thin.data"); }), expected);
+    // At the limit: a box of 1/16 and a width of 1.25, reached over 20 times. The images are those
+    // whose support [x - 1.25, x + 1.25], x = 1/32, overlaps [0, 1/16]: n / 16 from n = -20 to 20.
+    write("narrow.data", "1 0 0 0 0 0.0625 1 1\n0.03125 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    const auto narrow = readAllDataFrames("narrow.data");
+    setup.width = WidthMatrix::isotropic(1.25);
+    CoarseGrainer wide(setup);
+    wide.setFrame(narrow[0], nullptr, "narrow.data");
+    EXPECT_EQ(wide.particleSourceCount(), 41u);
+}

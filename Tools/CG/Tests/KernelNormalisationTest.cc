@@ -1,4 +1,4 @@
-// SPEC.md 6: every coarse-graining function integrates to 1, is symmetric and non-negative, in
+// Theory/CoarseGraining.md eq. (2): every coarse-graining function integrates to 1, is symmetric and non-negative, in
 // 1, 2 and 3 dimensions, with isotropic, diagonal and rotated (full) width matrices.
 //
 // The kernel is evaluated as the density field of one particle of mass 1 at the origin (the
@@ -207,7 +207,7 @@ INSTANTIATE_TEST_SUITE_P(
     }()),
     caseName);
 
-// The normalisations written in SPEC.md 6 and KernelProfile.h, value at the centre.
+// The normalisations written in Theory/CoarseGraining.md eq. (2) and KernelProfile.h, value at the centre.
 TEST(KernelProfile, CentreValuesAreTheNormalisations) {
     EXPECT_DOUBLE_EQ(KernelProfile(KernelShape::Lucy, 1).value(0), 5.0 / 4.0);
     EXPECT_DOUBLE_EQ(KernelProfile(KernelShape::Lucy, 2).value(0), 5.0 / pi);

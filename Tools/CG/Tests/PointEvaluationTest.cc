@@ -1,4 +1,4 @@
-// SPEC.md 6 "evaluation needs no grid": a grid is a list of points, so the same point gives
+// Theory/CoarseGraining.md "Fields": a grid is a list of points, so the same point gives
 // bitwise the same values from a grid, from a point file, alone or in another order; and
 // concentrations are fractions in [0, 1] that add up to 1 wherever there is mass.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Automatic width selection (SPEC.md 6, Fields/WidthScan.h) on a packing whose concentration is
+// Automatic width selection (Theory/CoarseGraining.md "Choosing the widths", Fields/WidthScan.h) on a packing whose concentration is
 // known analytically, and the plateau rule on hand-made values.
 //
 // The packing: a jittered simple cubic lattice of spacing 1 in a box 24 x 2 x 16, periodic in x

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Writes NAME.data and NAME.restart of a synthetic rotating drum for talus-cg's cylindrical
-coordinates (Documentation/CoarseGraining.md "Cylindrical coordinates"; SPEC.md 5 sizes):
+coordinates (Documentation/CoarseGraining.md "Cylindrical coordinates"; Theory/RotatingDrum.md "The drum and its wall" sizes):
 a drum of radius 15 along y through the origin, periodic along y (length 3), its lower half
 filled with spheres on a jittered lattice of spacing 1, species 1 (d = 0.7) within r < 8 of the
 axis (the core), species 0 (d = 1) outside; solid-body rotation v = omega e_y x x with omega = 0.1

@@ -1,0 +1,100 @@
+#include "Integration/PlainVerlet.h"
+
+#include "Integration/StepWorkspace.h"
+#include "Particles/DriftPass.h"
+#include "Particles/RotationBatch.h"
+#include "Particles/VelocityVerlet.h"
+#include "SimulationState.h"
+
+namespace talus {
+
+namespace {
+
+// Particles, walls and the turning of fixed superquadrics that follow a prescribed motion, moved
+// over the step; their velocities those of the motion at the new positions.
+void moveWithPrescribedMotion(SimulationState& s) {
+    const double dt = s.settings.timeStep;
+    if (s.motions.empty()) return;
+    std::vector<Mat3> rotation;
+    for (const PrescribedMotion& m : s.motions) rotation.push_back(m.stepRotation(dt));
+    ParticleStore& p = s.particles;
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        if (p.motion[i] < 0) continue;
+        const PrescribedMotion& m = s.motions[p.motion[i]];
+        p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
+    }
+    for (Wall& w : s.walls) {
+        if (w.motion < 0) continue;
+        w.point = s.motions[w.motion].moved(w.point, rotation[w.motion], dt);
+        w.normal = (rotation[w.motion] * w.normal).normalized();
+    }
+    if (p.hasShapes())
+        for (std::size_t i = 0; i < p.owned(); ++i)
+            if (p.motion[i] >= 0 && p.shape[i] >= 0)
+                p.orientation[i] = Quat(rotation[p.motion[i]] * p.orientation[i].toRotationMatrix()).normalized();
+    for (PrescribedMotion& m : s.motions) m.advanceCentre(dt);
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        if (p.motion[i] < 0) continue;
+        const PrescribedMotion& m = s.motions[p.motion[i]];
+        p.velocity[i] = m.pointVelocity(p.position[i]);
+        p.angularVelocity[i] = m.angularVelocity;
+    }
+}
+
+// The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half
+// kick of the angular momentum by the torque, then (drift > 0) the torque-free turn of the
+// orientation over the step; the angular velocity the contacts see follows from both. In
+// batches of lanes (Particles/RotationBatch.h).
+void turnShapedParticles(ParticleStore& p, double kick, double drift) {
+    RotationBatch batch;
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        if (p.fixed[i] || p.shape[i] < 0) continue;
+        batch.add(static_cast<std::uint32_t>(i), p);
+        if (batch.full()) batch.flush(p, kick, drift);
+    }
+    batch.flush(p, kick, drift);
+}
+
+}  // namespace
+
+void PlainVerlet::advance(StepHost& host, bool recordContacts) {
+    SimulationState& s = host.state();
+    StepWorkspace& work = host.workspace();
+    ParticleStore& p = s.particles;
+    const double dt = s.settings.timeStep;
+    const std::size_t owned = p.owned();  // ghosts are their owners' business
+    work.positions.checkFound(positionSum(p, owned), s);
+    work.driftFrame.reset();
+    halfKickAndDrift(p, owned, 0.5 * dt, dt);
+    if (p.hasShapes()) turnShapedParticles(p, 0.5 * dt, dt);
+    moveWithPrescribedMotion(s);
+    if (s.domain.anyPeriodic()) s.domain.wrap(p.position.data(), owned);
+    finishStep(host, recordContacts, nullptr);
+}
+
+void finishStep(StepHost& host, bool recordContacts, const DriftPassResult* drifted) {
+    SimulationState& s = host.state();
+    ParticleStore& p = s.particles;
+    const double half = 0.5 * s.settings.timeStep;
+    s.time += s.settings.timeStep;
+    ++s.step;
+    host.afterDrift();
+    host.computeForces(recordContacts, recordContacts ? OverlapCheck::now : OverlapCheck::withNextStep, drifted);
+    halfKick(p, p.owned(), half);
+    if (p.hasShapes()) turnShapedParticles(p, half, 0);
+    host.workspace().positions.noteLeft(drifted ? drifted->positionsAfter : positionSum(p, p.owned()), p.owned());
+}
+
+void PositionWatch::checkFound(std::uint64_t found, SimulationState& state) {
+    if (left_ && *left_ == found) return;
+    PairList& list = state.pairList;
+    // (Counted where the near list would have been swept: particles added, removed or moved by
+    // moveParticleBy change the list, which makes it anew anyway.)
+    if (state.particles.owned() == particlesLeft_ && list.noted().empty() &&
+        nearPairsAreCurrent(list, list.nearSkinFraction * list.skin))
+        ++changedBetweenSteps;
+    list.near.made = false;
+    changedThisStep = true;  // (on ranks, the ghosts of the moved particles moved too)
+}
+
+}  // namespace talus

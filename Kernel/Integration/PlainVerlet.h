@@ -1,0 +1,22 @@
+// Velocity Verlet pass by pass (Documentation/Theory/Integration.md): half kick, drift, the
+// rigid-body turn of the non-spherical particles, prescribed motions, the periodic wrap, the
+// boundaries, the forces at the new positions, half kick. It takes any scene: the stepper of
+// last resort.
+#pragma once
+
+#include "Integration/Stepper.h"
+
+namespace talus {
+
+class PlainVerlet final : public Stepper {
+public:
+    std::string_view name() const override { return "plain velocity Verlet"; }
+    std::string_view whyNot(const StepHost&) const override { return {}; }
+    void advance(StepHost& host, bool recordContacts) override;
+};
+
+// The end of a single step, whatever its first half was: the time moves on, the boundaries act,
+// the forces are computed (drifted: what a drift pass measured, or null), the second half kick.
+void finishStep(StepHost& host, bool recordContacts, const DriftPassResult* drifted);
+
+}  // namespace talus

@@ -1,0 +1,21 @@
+#include "Sampling/AddedOnce.h"
+
+#include "Simulation.h"
+
+namespace talus {
+
+namespace {
+bool addsHere(const Simulation& simulation) { return !simulation.onRanks() || simulation.rank() == 0; }
+}  // namespace
+
+void addParticleOnce(Simulation& simulation, const Vec3& position, double radius, std::size_t species,
+                     const Vec3& velocity) {
+    if (addsHere(simulation)) simulation.addParticle(position, radius, species, velocity);
+}
+
+void addSuperquadricOnce(Simulation& simulation, const Vec3& position, std::size_t shape, std::size_t species,
+                         const Quat& orientation) {
+    if (addsHere(simulation)) simulation.addSuperquadric(position, shape, species, orientation);
+}
+
+}  // namespace talus

@@ -1,0 +1,16 @@
+// How a run used its ranks, for a benchmark's summary line: the rank count, the share of the
+// time loop's wall time spent on the domain split's communication (its mean over the ranks),
+// of it the ghost exchange and the agreement of all ranks, and the ghosts over all ranks.
+// Collective: every rank calls it; the text is the same on all.
+#pragma once
+
+#include <string>
+
+namespace talus {
+
+class Simulation;
+
+// "ranks N  communication C%  ghosts G  (ghost exchange X%, agreement A%)"
+std::string describeRanks(const Simulation& simulation);
+
+}  // namespace talus
