@@ -158,14 +158,15 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
                 const auto [vj, wj] = halfStepVelocity(j);
                 const Vec3 d = image.nearest(p.position[i] - p.position[j]);
                 const double r = d.norm();
-                Arms arms;
-                const ContactKinematics c = contactKinematics(d / r, p.radius[i] + p.radius[j] - r, p.radius[i],
-                                                              p.radius[j], vi - vj, wi, wj, arms);
+                // The contact point's tangential velocity (Theory/ContactLaws.md eq. (4)): arms
+                // ri - dn/2 and rj - dn/2 along n, vt = v - (v.n) n - (ai wi + aj wj) x n.
+                const Vec3 n = d / r, v = vi - vj;
+                const double halfOverlap = 0.5 * (p.radius[i] + p.radius[j] - r);
+                const Vec3 vt =
+                    v - v.dot(n) * n - ((p.radius[i] - halfOverlap) * wi + (p.radius[j] - halfOverlap) * wj).cross(n);
                 const Vec3& carriedSpring = before.at(key).spring;
-                const double growth =
-                    dt * (c.tangentialVelocity.norm() + c.relativeVelocity.norm() * carriedSpring.norm() / r);
-                const double trialForce =
-                    (kt * carriedSpring + law.tangentialDamping * c.tangentialVelocity).norm() + kt * growth;
+                const double growth = dt * (vt.norm() + v.norm() * carriedSpring.norm() / r);
+                const double trialForce = (kt * carriedSpring + law.tangentialDamping * vt).norm() + kt * growth;
                 const double slip = std::max(0.0, trialForce - law.friction * h.lastNormalForce) / kt;
                 const double bound = (growth + slip) * (1 + 1e-9);
                 EXPECT_LE((h.spring - carriedSpring).norm(), bound)
