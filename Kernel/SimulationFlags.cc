@@ -7,6 +7,7 @@
 #include "IO/OutputFiles.h"     // (complete types for the members the constructor may have to destroy)
 #include "Integration/Integrator.h"
 #include "Integration/StepWorkspace.h"
+#include "Math/LaneForm.h"
 #include "Parallel/DomainSplit.h"
 #include "SimulationHost.h"
 
@@ -49,6 +50,10 @@ Simulation::Simulation()
            "the first half of each step in one pass over the particles where the scene allows it (on, the default), "
            "or pass by pass: the same trajectories, for measurements",
            [&c](const std::string& v) { c.stepper.driftPass = CommandLine::toBool("drift-pass", v); });
+    cl.add("lane-form", "scalar|avx2|avx512",
+           "run the vector passes in this lane form instead of the best one the processor runs: the bits of a run "
+           "on another processor (Installing.md, lane forms)",
+           [](const std::string& v) { setLaneForm(laneFormNamed(v, "--lane-form")); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("fstat", "on|off",
