@@ -215,8 +215,8 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
 }
 
-// Strips eight columns wide per step of the wave unless a width is asked for (TimeSkewing.md
-// "Using it": waves of 8 were measured fastest in strips of 64-128 columns, slower in 32-50).
+// Strips eight columns wide per step of the wave unless a width is asked for (why that width:
+// Documentation/TimeSkewing.md, "Strip width").
 TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
     Scene s;
     s.settings().stepper.setWaves(8);

@@ -1,8 +1,9 @@
 // How the memory bandwidth of one core depends on the number of arrays a loop reads at once
-// (Documentation/CacheCliff.md). A structure of arrays makes a pass that
-// needs k quantities per particle read k arrays side by side, and on some machines the bandwidth
-// falls with k while the same bytes in one array of k-value records do not (measurements:
-// Documentation/Performance/History.md). It measures both on the machine at hand, so that a layout decision rests on numbers from it.
+// (Documentation/CacheCliff.md). A structure of arrays makes a pass that needs k quantities per
+// particle read k arrays side by side, and on some machines the bandwidth falls with k while the
+// same bytes in one array of k-value records do not (measurements: Documentation/CacheCliff.md,
+// "Why"). It measures both on the machine at hand, so that a layout decision rests on numbers
+// from it.
 //
 //   MemoryStreams [megabytes per array, default 16] [repeats, default 3]
 //

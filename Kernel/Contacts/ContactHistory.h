@@ -42,9 +42,9 @@ struct ContactHistory {
 // The histories of a list of pairs: the force loop reads the state of every listed pair each
 // step but the spring only of the few that touch or are about to, so the states are kept apart,
 // one byte each; the spring and the last normal force, read and written together, share one
-// 32-byte record (one memory stream instead of two: on the hosts of 2026-12 a pass that reads
-// 16 or more arrays at once gets under half the bandwidth of one that reads a single array of
-// records; Documentation/CacheCliff.md).
+// 32-byte record (one memory stream instead of two: a pass that reads 16 or more arrays at once
+// can get under half the bandwidth of one that reads a single array of records;
+// Documentation/CacheCliff.md).
 class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }

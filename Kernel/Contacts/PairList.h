@@ -32,8 +32,8 @@ struct WallCandidate {
 // A particle as the force loop's sweep reads it (Contacts/PairSweep.h): its position and its
 // radius as the sweep tests it (grown by the step's reach), in one 32-byte record: one memory
 // stream and half a cache line per particle, where two arrays would be two streams and up to
-// three lines (a pass that reads many arrays side by side gets a fraction of the bandwidth of
-// one reading records on our hosts; Documentation/CacheCliff.md).
+// three lines (a pass that reads many arrays side by side can get a fraction of the bandwidth
+// of one reading records: Documentation/CacheCliff.md).
 struct SweepPoint {
     double x, y, z, radius;
 };
