@@ -19,9 +19,10 @@ using namespace talus::test;
 
 namespace {
 
-// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
-// the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
-// along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
+// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)",
+// Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of the peers (the settled bed or the
+// developed flow, 20 x 10, base spheres fixed) copied twice along y, 24 degrees, on a flat wall
+// just below the base; one linear law for all pairs.
 void benchmarkChute(Scene& s, const std::string& file) {
     const LammpsData bed = readLammpsData(std::string(TALUS_SHARED_DIR) + "/peers/data/" + file);
     const Vec3 size = bed.hi - bed.lo;
