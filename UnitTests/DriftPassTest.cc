@@ -102,8 +102,8 @@ TALUS_LANE_TEST(DriftPass, EqualsThePassesItStandsIn) {
     EXPECT_NE(result.positionsBefore, result.positionsAfter);
 }
 
-// A wave's advance of a region (Integration/WaveStepper.cc): the end of one step and the start of the
-// next in one pass over some of the slots (from an odd slot, so that lanes and the tail both
+// A wave's advance of a region (Integration/WaveStepper.cc): the end of one step and the start of
+// the next in one pass over some of the slots (from an odd slot, so that lanes and the tail both
 // run), against halfKick, the copy of the forces and the pass that kicks with them.
 TALUS_LANE_TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     const Domain domain = someDomain();

@@ -33,11 +33,12 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                     cases.pop_back();
                     continue;
                 }
-                // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a settled
-                // packing: Newton's first step lands within the tolerance), or by up to 1e-4 and
-                // 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a third of the
-                // lanes, not at all, with the warm start of a contact at rest (solved again from
-                // its own solution: its residual is at round-off, and the solve takes no step).
+                // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a
+                // settled packing: Newton's first step lands within the tolerance), or by up to
+                // 1e-4 and 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a
+                // third of the lanes, not at all, with the warm start of a contact at rest (solved
+                // again from its own solution: its residual is at round-off, and the solve takes no
+                // step).
                 const int motion = batch.count % 3;
                 SuperquadricContactPoint start = last.solution;
                 if (motion == 2) {
@@ -63,7 +64,8 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                 apart += !s.touching;
                 if (batch.done[l] == 0) continue;
                 ++done;
-                // A finished lane is a pair the scalar solve finished in one iteration or none, touching.
+                // A finished lane is a pair the scalar solve finished in one iteration or none,
+                // touching.
                 EXPECT_TRUE(oneIteration) << name(kind) << " lane " << l << ": scalar iterations " << s.iterations;
                 const double size = std::min(cases[l].shapeI.semiAxes().minCoeff(), cases[l].shapeJ.semiAxes().minCoeff());
                 worstPoint = std::max(worstPoint, (Vec3(batch.px[l], batch.py[l], batch.pz[l]) - s.solution.point).norm() / size);
@@ -73,7 +75,8 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                 worstMiddle = std::max(worstMiddle, (Vec3(batch.mx[l], batch.my[l], batch.mz[l]) - s.contactPoint).norm() / size);
             }
         }
-        // The same arithmetic up to rounding (the scalar path through Eigen, the lanes on plain numbers).
+        // The same arithmetic up to rounding (the scalar path through Eigen, the lanes on plain
+        // numbers).
         EXPECT_LT(worstPoint, 1e-13) << name(kind);
         EXPECT_LT(worstNormal, 1e-13) << name(kind);
         EXPECT_LT(worstOverlap, 1e-13) << name(kind);

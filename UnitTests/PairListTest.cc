@@ -17,8 +17,8 @@ using namespace talus::test;
 
 namespace {
 
-// A small periodic chute (Theory/Chutes.md "The rough base"): a jittered base of fixed spheres and 150 flowing spheres
-// of two sizes dropped on it with random velocities, inclined at 24 degrees.
+// A small periodic chute (Theory/Chutes.md "The rough base"): a jittered base of fixed spheres and
+// 150 flowing spheres of two sizes dropped on it with random velocities, inclined at 24 degrees.
 LinearSpringDashpot chuteLaw() { return LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25).withFriction(0.5); }
 
 void chuteScene(Scene& s) {
@@ -316,7 +316,8 @@ TEST(PairList, DriftInOnePassChangesNothing) {
 }
 
 // Pairs put in another order (the wave schedule's: PairList::reorderPairs) keep their histories;
-// an order that is not a permutation, or that moves a face pair among the interior ones, is refused.
+// an order that is not a permutation, or that moves a face pair among the interior ones, is
+// refused.
 TEST(PairList, ReorderedPairsKeepTheirHistories) {
     PairList list;
     const std::uint32_t n = 7;

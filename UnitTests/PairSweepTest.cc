@@ -100,7 +100,8 @@ TALUS_LANE_TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         }
         EXPECT_EQ(picked, expected) << n << " particles";
         EXPECT_EQ(separations, expectedSeparations) << n << " particles";
-        // A near list (every pair but each third): its sweep in both forms picks the rule's pairs among them.
+        // A near list (every pair but each third): its sweep in both forms picks the rule's pairs
+        // among them.
         NearPairs near;
         for (std::size_t k = 0; k < pairs.size(); ++k)
             if (k % 3 != 1) near.pairs.push_back({pairs[k], static_cast<std::uint32_t>(k)});
@@ -148,9 +149,9 @@ TALUS_LANE_TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
     domain.periodic = {true, true, true};
     const PeriodicImage image(domain);
     const double dt = 2e-3, fluctuation = 0.2;
-    // Spheres in pairs (2m, 2m + 1), the second at a gap of -0.01 to 0.02 from the first in a random
-    // direction: touching, closing within the step, and apart by up to a few steps' travel at
-    // the common speed (3.3 dt = 0.0066).
+    // Spheres in pairs (2m, 2m + 1), the second at a gap of -0.01 to 0.02 from the first in a
+    // random direction: touching, closing within the step, and apart by up to a few steps' travel
+    // at the common speed (3.3 dt = 0.0066).
     ParticleStore p;
     const std::size_t n = 2000;
     p.forEachArray([n](auto& array) { array.resize(n); });

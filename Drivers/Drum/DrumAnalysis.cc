@@ -10,7 +10,8 @@ namespace talus::drum {
 
 namespace {
 
-// Theory/CoarseGraining.md eq. (2): the 2-D Lucy polynomial, normalised to 1 over the disc of radius w.
+// Theory/CoarseGraining.md eq. (2): the 2-D Lucy polynomial, normalised to 1 over the disc of
+// radius w.
 double lucy2d(double distance, double width) {
     const double s = distance / width;
     if (s >= 1) return 0;

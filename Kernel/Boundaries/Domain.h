@@ -1,6 +1,6 @@
-// The simulation box: its extent along x, y, z, and which axes are periodic (Theory/Chutes.md eq. (1) uses
-// x and y). Along a periodic axis positions are kept in [lo, hi) and pair separations use the
-// nearest image; along the other axes the extent only frames the output.
+// The simulation box: its extent along x, y, z, and which axes are periodic
+// (Theory/Chutes.md eq. (1) uses x and y). Along a periodic axis positions are kept in [lo, hi) and
+// pair separations use the nearest image; along the other axes the extent only frames the output.
 #pragma once
 
 #include <array>

@@ -77,8 +77,8 @@ struct ContactBatch {
         }
     }
 
-    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
-    // and the law's lasting-contact step, for every lane.
+    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2,
+    // vt = v - vn n - (ai wi + aj wj) x n) and the law's lasting-contact step, for every lane.
     [[gnu::noinline]] void compute(double dt) {
         for (int l = 0; l < count; ++l) {
             const double distance = std::sqrt(dx[l] * dx[l] + dy[l] * dy[l] + dz[l] * dz[l]), inverse = 1 / distance;

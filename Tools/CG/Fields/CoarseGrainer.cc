@@ -201,7 +201,8 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              ": the .fstat and .data files do not describe the same particles");
         }
         // Branch b from the far end to x_i: the partner's centre (its image next to i: the
-        // normal points from j to i) for pairs, the contact point for walls (Theory/CoarseGraining.md eq. (10)).
+        // normal points from j to i) for pairs, the contact point for walls
+        // (Theory/CoarseGraining.md eq. (10)).
         Vec3 b;
         double weight = 1;
         if (c.isWall()) {
