@@ -47,7 +47,12 @@ inline constexpr const char* itemIndent = "  ";
 enum TimeField : int { time, step, timeFields };
 
 // `domain lo(3) hi(3) px py pz`
-enum DomainField : int { domainLower, domainUpper = domainLower + 3, periodic = domainUpper + 3, domainFields = periodic + 3 };
+enum DomainField : int {
+    domainLower,
+    domainUpper = domainLower + 3,
+    periodic = domainUpper + 3,
+    domainFields = periodic + 3,
+};
 
 // A species item: `name density law parameters...`.
 enum SpeciesField : int { speciesName, density, law, speciesFieldsAtLeast };

@@ -14,7 +14,8 @@ double InputPlace::real(std::string_view word, std::string_view what) const {
     return x;
 }
 
-std::int64_t InputPlace::integer(std::string_view word, std::string_view what, std::int64_t min, std::int64_t max) const {
+std::int64_t InputPlace::integer(std::string_view word, std::string_view what, std::int64_t min,
+                                 std::int64_t max) const {
     std::int64_t n = 0;
     if (const std::string problem = formats::readInteger(word, what, n, min, max); !problem.empty()) fail(problem);
     return n;

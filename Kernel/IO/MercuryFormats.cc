@@ -76,8 +76,8 @@ void appendFstatFrame(std::string& out, const SimulationState& state, const Cont
         const Vec3 t = ft > 0 ? Vec3(c.tangentialForce / ft) : Vec3::Zero();
         const Vec3 n = sign * c.normal, tt = sign * t;
         // (in the order of formats::fstat::Column)
-        append(out, formats::fstat::contactLine, state.time, static_cast<unsigned long long>(i), j, c.contactPoint.x(), c.contactPoint.y(),
-               c.contactPoint.z(), c.overlap, -c.springLength, c.normalForce, ft, n.x(), n.y(), n.z(), tt.x(), tt.y(),
+        append(out, formats::fstat::contactLine, state.time, static_cast<unsigned long long>(i), j, c.contactPoint.x(),
+               c.contactPoint.y(), c.contactPoint.z(), c.overlap, -c.springLength, c.normalForce, ft, n.x(), n.y(), n.z(), tt.x(), tt.y(),
                tt.z());
     };
     for (const ContactRecord& c : contacts) {

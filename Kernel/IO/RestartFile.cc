@@ -170,7 +170,8 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
     replaceFile(path, [&s](std::ostream& out) {
         Writer w(out);
         const RunSettings& c = s.settings;
-        w.key(formats::restart::magicWords[0]) << std::string(formats::restart::magicWords[1]) << std::uint64_t(formatVersion); w.end();
+        w.key(formats::restart::magicWords[0]) << std::string(formats::restart::magicWords[1])
+                                               << std::uint64_t(formatVersion); w.end();
         w.key(key::name) << c.name; w.end();
         w.key(key::run) << c.timeStep << c.endTime << c.outputInterval << c.skin << c.cellSizeRatio << c.progressInterval
                      << c.maxOverlapFraction << c.maxInitialOverlapFraction << std::uint64_t(c.reorderParticles); w.end();

@@ -48,8 +48,9 @@ bool FstatFileReader::readFrame(ContactFrame& frame) {
             file_.failAtLine(file_.lineNumber() + 1, "file ends inside the header of the frame at t = " +
                                                          str(frame.time) + ": truncated file?");
         }
-        if (!isHeader(line_)) file_.fail("expected header line " + std::to_string(h + 1) + " of " + std::to_string(column::headerLines) +
-                                         " starting with '#'");
+        if (!isHeader(line_))
+            file_.fail("expected header line " + std::to_string(h + 1) + " of " + std::to_string(column::headerLines) +
+                       " starting with '#'");
     }
     frame.contacts.clear();
     while (file_.nextLine(line_)) {

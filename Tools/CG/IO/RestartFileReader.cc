@@ -47,7 +47,8 @@ RestartInfo readTalusRestart(TextFile& file) {
             if (fields.size() != 1 + restart::domainFields)
                 file.fail("expected 'domain' with " + std::to_string(restart::domainFields) + " values, found " +
                           std::to_string(fields.size() - 1));
-            for (int k = 0; k < 3; ++k) info.periodic[k] = parseFlag(fields[1 + restart::periodic + k], file, "a periodic flag");
+            for (int k = 0; k < 3; ++k)
+                info.periodic[k] = parseFlag(fields[1 + restart::periodic + k], file, "a periodic flag");
             sawDomain = true;
         } else if (fields[0] == restart::key::species) {
             if (fields.size() != 2) file.fail("expected 'species COUNT'");

@@ -161,8 +161,8 @@ TEST(PointEvaluation, VelocityAndKineticStressOfUniformAndCounterStreamingMotion
 // the volume fraction stays. In cylindrical coordinates too. A mass list of the wrong length is
 // refused.
 TEST(PointEvaluation, GivenMassesReplaceThoseOfTheRadius) {
-    const ParticleFrame spheres =
-        makeFrame({{1, 1, 1}, {1.4, 0.8, 1.2}, {2, 2, 2}}, {0.5, 0.3, 0.4}, DomainBox{{0, 0, 0}, {3, 3, 3}}, {}, {0, 1, 0});
+    const ParticleFrame spheres = makeFrame({{1, 1, 1}, {1.4, 0.8, 1.2}, {2, 2, 2}}, {0.5, 0.3, 0.4},
+                                            DomainBox{{0, 0, 0}, {3, 3, 3}}, {}, {0, 1, 0});
     for (const std::string coordinates : {"XYZ", "XZ", "RZ"}) {
         CoarseGrainingSetup setup;
         setup.coordinates = Coordinates::fromName(coordinates);
