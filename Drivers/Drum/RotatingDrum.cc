@@ -189,7 +189,7 @@ void RotatingDrum::actionsAfterSolve() {
     const drum::MixingIndices mixing = mixingOf(gatherParticles(*this));
     say(*this, "%s: at t = %g after %.3g rotations: M = %.8f, S = %.8f (spheres at the %s); mean angle of repose "
         "after the first turn %.2f degrees (%d samples); %d of %d particles in the drum\n", name().c_str(), time(),
-        rotations(), mixing.mixing, mixing.segregation, mixing.spheresAtCore ? "core" : "periphery",
+        rotations(), mixing.mixing, mixing.segregation, mixing.speciesAtCore ? "core" : "periphery",
         angleSamples_ > 0 ? angleSum_ / angleSamples_ : NAN, angleSamples_, particlesInserted(), targetCount_);
 }
 

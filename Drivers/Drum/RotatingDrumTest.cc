@@ -211,6 +211,8 @@ namespace {
 // A bare particle store for the measurements (they read position, mass, species and fixed).
 void addPoint(ParticleStore& p, const Vec3& x, std::uint32_t species, bool fixed = false) {
     p.position.push_back(x);
+    p.velocity.push_back(Vec3::Zero());
+    p.radius.push_back(0.5);
     p.mass.push_back(1);
     p.species.push_back(species);
     p.fixed.push_back(fixed ? 1 : 0);
@@ -254,10 +256,10 @@ TEST(DrumAnalysis, MixingIndexOfTwinsAndOfASeparatedCore) {
     for (int k = 0; k < 40; ++k) addPoint(core, Vec3(4 * std::cos(k * pi / 20), 0, 4 * std::sin(k * pi / 20)), 1);
     const drum::MixingIndices separated = drum::mixingIndices(core, 0, 6, 48, 1);
     EXPECT_NEAR(separated.mixing, 0, 1e-12);
-    EXPECT_TRUE(separated.spheresAtCore);
+    EXPECT_TRUE(separated.speciesAtCore);
     EXPECT_NEAR(separated.segregation, -1, 1e-12);
     // The same with the kinds swapped: the spheres at the periphery, S = 1 - M = 1.
     const drum::MixingIndices swapped = drum::mixingIndices(core, 1, 6, 48, 1);
-    EXPECT_FALSE(swapped.spheresAtCore);
+    EXPECT_FALSE(swapped.speciesAtCore);
     EXPECT_NEAR(swapped.segregation, 1, 1e-12);
 }
