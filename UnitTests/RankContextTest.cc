@@ -50,7 +50,7 @@ TEST(RankContext, OneRankNumbersNewParticlesInOrder) {
 
 TEST(RankContext, RefusesANegativeRebalanceInterval) {
     RankContext ranks(singleRankCommunicator());
-    expectError([&] { ranks.setRebalanceInterval(-1); }, {"--rebalance-interval", "negative"});
+    test::expectError([&] { ranks.setRebalanceInterval(-1); }, {"--rebalance-interval", "negative"});
     EXPECT_NO_THROW(ranks.setRebalanceInterval(0));
 }
 
