@@ -11,7 +11,7 @@
 // ghosts are dropped, particles that left their slab move to their new owner together with the
 // contact histories that involve them, and the ghosts are made anew. Between rebuilds each
 // step sends the ghosts' positions, velocities, spins, orientations and last forces from their
-// owners (updateGhosts).
+// owners (startGhostUpdate, finishGhostUpdate).
 //
 // Ghosts keep their owners' wrapped coordinates: a pair across a periodic face is found and
 // computed through the nearest image exactly as in a serial run, and a pair across a rank
@@ -66,8 +66,12 @@ public:
     // Appends as ghosts the particles of other ranks closer than width to this rank's slab.
     void makeGhosts(ParticleStore& particles, const Domain& domain, double width);
     // Each step: the ghosts get their owners' positions, velocities, spins, last forces and
-    // orientations.
-    void updateGhosts(ParticleStore& particles);
+    // orientations, in one message per partner rank. start sends them and returns; finish waits
+    // for the partners' and, if apply, puts them into the ghosts' slots. Between the two the ranks
+    // may agree (a collective) on whether the step rebuilds the list; if it does, the update
+    // is not applied (the ghosts are made anew) but must still be finished, on every rank.
+    void startGhostUpdate(const ParticleStore& particles);
+    void finishGhostUpdate(ParticleStore& particles, bool apply);
     // Whether a particle of this species at x, owned here, is one that no other rank needs as a
     // ghost by the width of the last makeGhosts (the neighbour list's relisting on ranks), and
     // whether the owned particle in a slot is sent to another rank as a ghost.

@@ -101,20 +101,21 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     double agreed[4] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
                         positionsChanged ? 1.0 : 0.0};
     positionsChanged = false;
+    // The ghosts' states travel while the ranks agree: sent before the agreement, applied after
+    // it unless the step rebuilds (most steps do not), one wait for both.
+    split_->startGhostUpdate(p);
     {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
         world_.allReduce(agreed, 4, Communicator::Reduction::max);
     }
+    split_->finishGhostUpdate(p, /*apply*/ agreed[0] == 0 && agreed[2] == 0);
     if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
                                               : failure,
                               failure.empty());
     list.maxSpeed = agreed[1];
-    if (agreed[0] == 0) {
-        split_->updateGhosts(p);
-        return false;
-    }
+    if (agreed[0] == 0) return false;
     renumberNewParticles(s);
     carried = list.carriedHistories(p);
     carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
