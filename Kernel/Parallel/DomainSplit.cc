@@ -270,6 +270,11 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
     }
     sendSlots_ = std::move(slots);
     p.ghostCount = p.size() - owned;
+    // (Decided by all ranks at once, so that all use the allreduce or none.)
+    double allPartners = n > 1 && static_cast<int>(sendTo_.size()) == n - 1 &&
+                         static_cast<int>(receiveFrom_.size()) == n - 1;
+    communicator_.allReduce(&allPartners, 1, Communicator::Reduction::min);
+    partnersAreAll_ = allPartners > 0;
 }
 
 namespace {
@@ -288,7 +293,7 @@ void forEachMovingField(Store& p, F&& f) {
 // arrives with one copy. A slot beyond the owned ones (a particle removed since the ghosts were
 // made, which forces a list build on every rank: the update is then not applied) sends zeros,
 // so that every message has the size its receiver expects.
-void DomainSplit::startGhostUpdate(const ParticleStore& p) {
+void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine) {
     if (sendTo_.empty() && receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
     std::size_t bytesPerParticle = 0;
@@ -296,8 +301,10 @@ void DomainSplit::startGhostUpdate(const ParticleStore& p) {
     outgoing_.resize(sendTo_.size());
     for (std::size_t k = 0; k < sendTo_.size(); ++k) {
         const std::vector<std::uint32_t>& slots = sendSlots_[k];
-        outgoing_[k].assign(slots.size() * bytesPerParticle, 0);
+        outgoing_[k].assign(sizeof(Agreement) + slots.size() * bytesPerParticle, 0);
         char* out = outgoing_[k].data();
+        std::memcpy(out, mine.data(), sizeof(Agreement));
+        out += sizeof(Agreement);
         forEachMovingField(p, [&](const auto& array) {
             constexpr std::size_t size = sizeof(array[0]);
             for (std::uint32_t i : slots) {
@@ -307,19 +314,30 @@ void DomainSplit::startGhostUpdate(const ParticleStore& p) {
         });
     }
     incoming_.resize(receiveFrom_.size());
-    for (std::size_t k = 0; k < receiveFrom_.size(); ++k) incoming_[k].resize(receiveCount_[k] * bytesPerParticle);
+    for (std::size_t k = 0; k < receiveFrom_.size(); ++k)
+        incoming_[k].resize(sizeof(Agreement) + receiveCount_[k] * bytesPerParticle);
     communicator_.startExchangeWith(sendTo_, outgoing_, receiveFrom_, incoming_);
 }
 
-void DomainSplit::finishGhostUpdate(ParticleStore& p, bool apply) {
+void DomainSplit::finishGhostUpdate(Agreement& agreement) {
     if (sendTo_.empty() && receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
     communicator_.finishExchange();
-    if (!apply) return;
+    if (!partnersAreAll_) return;
+    for (const Bytes& in : incoming_) {
+        Agreement theirs;
+        std::memcpy(theirs.data(), in.data(), sizeof(Agreement));
+        for (std::size_t k = 0; k < theirs.size(); ++k) agreement[k] = std::max(agreement[k], theirs[k]);
+    }
+}
+
+void DomainSplit::applyGhostUpdate(ParticleStore& p) {
+    if (receiveFrom_.empty()) return;
+    const Stopwatch watch(seconds.ghosts);
     std::size_t slot = p.owned();
     for (std::size_t k = 0; k < receiveFrom_.size(); ++k) {
         const std::size_t n = receiveCount_[k];
-        const char* in = incoming_[k].data();
+        const char* in = incoming_[k].data() + sizeof(Agreement);
         forEachMovingField(p, [&](auto& array) {
             const std::size_t bytes = n * sizeof(array[0]);
             std::memcpy(static_cast<void*>(array.data() + slot), in, bytes);

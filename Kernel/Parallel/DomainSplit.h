@@ -66,12 +66,18 @@ public:
     // Appends as ghosts the particles of other ranks closer than width to this rank's slab.
     void makeGhosts(ParticleStore& particles, const Domain& domain, double width);
     // Each step: the ghosts get their owners' positions, velocities, spins, last forces and
-    // orientations, in one message per partner rank. start sends them and returns; finish waits
-    // for the partners' and, if apply, puts them into the ghosts' slots. Between the two the ranks
-    // may agree (a collective) on whether the step rebuilds the list; if it does, the update
-    // is not applied (the ghosts are made anew) but must still be finished, on every rank.
-    void startGhostUpdate(const ParticleStore& particles);
-    void finishGhostUpdate(ParticleStore& particles, bool apply);
+    // orientations, in one message per partner rank, which also carries this rank's numbers for
+    // the step's agreement (their maximum over the ranks decides whether the list is rebuilt).
+    // start sends and returns; finish waits for the partners' messages; apply puts their states
+    // into the ghosts' slots (not on a step that rebuilds: the ghosts are then made anew). When
+    // every other rank is a partner both ways (two ranks; three along a periodic axis), finish
+    // makes `agreement` the maximum over all ranks and no allreduce is needed
+    // (agreesThroughGhosts); otherwise the caller agrees between start and finish.
+    using Agreement = std::array<double, 4>;
+    void startGhostUpdate(const ParticleStore& particles, const Agreement& mine);
+    void finishGhostUpdate(Agreement& agreement);
+    void applyGhostUpdate(ParticleStore& particles);
+    bool agreesThroughGhosts() const { return partnersAreAll_; }
     // Whether a particle of this species at x, owned here, is one that no other rank needs as a
     // ghost by the width of the last makeGhosts (the neighbour list's relisting on ranks), and
     // whether the owned particle in a slot is sent to another rank as a ghost.
@@ -122,6 +128,7 @@ private:
     std::vector<int> sendTo_, receiveFrom_;
     std::vector<std::vector<std::uint32_t>> sendSlots_;
     double ghostWidth_ = 0;  // of the last makeGhosts
+    bool partnersAreAll_ = false;  // on every rank: each other rank is a partner both ways
     // Calls f(r) for every rank r other than this one whose cell lies within width of x (through
     // the periodic images, and through an active maser box's image for its members): those that
     // hold a particle at x as a ghost.

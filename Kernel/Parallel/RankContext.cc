@@ -98,17 +98,19 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     const bool due = rebalanceInterval_ > 0 && s.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
     // (And whether a rank found its particles moved by hand since the last step: their ghosts
     // on other ranks moved too, and every rank's near list is made anew: PositionWatch::checkFound.)
-    double agreed[4] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
-                        positionsChanged ? 1.0 : 0.0};
+    DomainSplit::Agreement agreed = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
+                                     positionsChanged ? 1.0 : 0.0};
     positionsChanged = false;
-    // The ghosts' states travel while the ranks agree: sent before the agreement, applied after
-    // it unless the step rebuilds (most steps do not), one wait for both.
-    split_->startGhostUpdate(p);
-    {
+    // The ghosts' states travel while the ranks agree, with this rank's numbers: when every
+    // other rank is a partner they are the agreement (no allreduce); else an allreduce runs while
+    // the messages travel. One wait for both; the states are applied unless the step rebuilds.
+    split_->startGhostUpdate(p, agreed);
+    if (!split_->agreesThroughGhosts()) {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
-        world_.allReduce(agreed, 4, Communicator::Reduction::max);
+        world_.allReduce(agreed.data(), static_cast<int>(agreed.size()), Communicator::Reduction::max);
     }
-    split_->finishGhostUpdate(p, /*apply*/ agreed[0] == 0 && agreed[2] == 0);
+    split_->finishGhostUpdate(agreed);
+    if (agreed[0] == 0 && agreed[2] == 0) split_->applyGhostUpdate(p);
     if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
