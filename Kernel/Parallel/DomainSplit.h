@@ -99,9 +99,10 @@ public:
     std::uint64_t migrated = 0, migratedFar = 0;
     std::array<std::uint64_t, 3> migratedAlong{0, 0, 0};
 
-    // Wall seconds this rank spent on the split (Documentation/Parallel.md): sending ghosts each
-    // step, agreeing with the other ranks each step (which includes waiting for the slowest:
-    // load imbalance shows here), and migration with ghost making at list builds.
+    // Wall seconds this rank spent on the split (Documentation/Parallel.md): the ghost exchange
+    // each step, the allreduce of the step's agreement where it is needed (both include waiting
+    // for the slowest rank: load imbalance shows here; when the agreement rides on the ghost
+    // messages, all of it is in ghosts), and migration with ghost making at list builds.
     struct Timings {
         double ghosts = 0, agreement = 0, rebuild = 0;
         double total() const { return ghosts + agreement + rebuild; }

@@ -1,7 +1,7 @@
 // The ranks of a run, as the simulation and its helpers see them (Documentation/Architecture.md
 // "Parallel", Documentation/Parallel.md): who this rank is, sums and maxima over the ranks, and
 // everything a split scene needs between the steps: the domain split (Parallel/DomainSplit.h),
-// the neighbourhood update of each step (the one collective a step needs), the numbering of
+// the neighbourhood update of each step (the one synchronisation of a step), the numbering of
 // particles added on ranks, the agreement of all ranks on errors, and output gathered on rank 0.
 //
 // A simulation owns one; drivers never see it: their measurements go through Kernel/Sampling,
