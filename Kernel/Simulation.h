@@ -19,13 +19,13 @@
 #include "Contacts/ContactReport.h"
 #include "Error.h"
 #include "Integration/StepHost.h"
+#include "Parallel/RankContext.h"
 #include "Particles/Energies.h"
 #include "SimulationState.h"
 
 namespace talus {
 
 class CommandLine;
-class DomainSplit;
 class Integrator;
 class OutputFiles;
 struct StepWorkspace;
@@ -121,28 +121,13 @@ public:
 
     // Under MPI (Parallel/DomainSplit.h, Documentation/Parallel.md) the store holds this rank's
     // particles (slots below particles().owned()) and then ghosts: loop to owned() and sum over
-    // ranks (sumOverRanks) for anything about the whole scene. Without MPI owned() == size().
+    // ranks (ranks().sum) for anything about the whole scene. Without MPI owned() == size().
     ParticleStore& particles() { return state_.particles; }
     const ParticleStore& particles() const { return state_.particles; }
-    // The ranks of the run (1 without mpirun) and this one; rank 0 writes the files.
-    int rank() const;
-    int ranks() const;
-    // Sums of numbers over the ranks (every rank calls it, with its own values, at the same point).
-    double sumOverRanks(double x) const;
-    void sumOverRanks(std::vector<double>& values) const;
-    // The domain split of the run (after solve has set it up; one rank without mpirun).
-    const DomainSplit* domainSplit() const { return split_.get(); }
-    // Drivers run on ranks by default: their measurements go through Kernel/Sampling (whole-scene
-    // sums, files and messages written once). A driver whose hooks read particles() directly for
-    // whole-scene numbers says setRunsOnRanks(false) and then refuses to start on more ranks.
-    void setRunsOnRanks(bool on) { runsOnRanks_ = on; }
-    // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
-    // done at the start and after every save anyway.
-    void requestRebalance();
-    double maxOverRanks(double x) const;
-    // Whether the scene is split over more than one rank (false during setupInitialConditions,
-    // which every rank runs on the whole scene).
-    bool onRanks() const;
+    // The ranks of the run (Parallel/RankContext.h): this one, sums over them, the domain split.
+    // For Kernel/Sampling and boundaries; drivers measure through Kernel/Sampling instead.
+    const RankContext& ranks() const { return *ranks_; }
+    RankContext& ranks() { return *ranks_; }
     // Mobile (not fixed) particles in the whole scene.
     std::size_t mobileParticleCount() const;
     // The current slot of the particle with global id `id` (ids count from 0 in the order of
@@ -203,16 +188,6 @@ private:
     void reorderParticles(bool withPreviousForces);
     std::uint64_t saveEvery() const;
 
-    // On more than one rank (Parallel/SimulationOnRanks.cc).
-    void releaseGhosts();
-    void rebalance();
-    void renumberNewParticles();
-    void splitScene();
-    bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
-    void agreeOnOverlaps(const std::string& diagnosis);
-    std::string overlapsToAgree_;  // this rank's overlap blow-up, for the next step's agreement
-    void writeGatheredOutput();
-
     SimulationState state_;
     // Outside the saved state: the force loop's scratch and what the steppers keep between steps
     // (Integration/StepWorkspace.h), the steppers, and the host they advance.
@@ -233,17 +208,7 @@ private:
     void restoreKeptValues(const std::string& restartFile);
     std::vector<Boundary*> boundaries_;
     std::unique_ptr<OutputFiles> files_;
-    std::unique_ptr<DomainSplit> split_;
-    std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
-    double largestRadius_ = 0;                      // over all ranks, for the ghost width
-    bool rebalancePending_ = false;
-    // Rank boundaries by particle count (Documentation/Parallel.md), at the start, at saves, on
-    // request, and every rebalanceInterval_ of simulated time.
-    double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
-    std::array<int, 3> rankGrid_{0, 0, 0};  // --rank-grid; zeros: all ranks along x
-    bool runsOnRanks_ = true;
-    std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
-    static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
+    std::unique_ptr<RankContext> ranks_;
     RunStatistics lastRun_;
     std::string restartFile_;
 };

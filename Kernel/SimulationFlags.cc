@@ -8,7 +8,8 @@
 #include "Integration/Integrator.h"
 #include "Integration/StepWorkspace.h"
 #include "Math/LaneForm.h"
-#include "Parallel/DomainSplit.h"
+#include "Parallel/Communicator.h"
+#include "Parallel/RankContext.h"
 #include "SimulationHost.h"
 
 namespace talus {
@@ -17,7 +18,8 @@ Simulation::Simulation()
     : work_(std::make_unique<StepWorkspace>()),
       integrator_(std::make_unique<Integrator>()),
       host_(std::make_unique<Host>(*this)),
-      commandLine_(std::make_unique<CommandLine>()) {
+      commandLine_(std::make_unique<CommandLine>()),
+      ranks_(std::make_unique<RankContext>(worldCommunicator())) {
     RunSettings& c = state_.settings;
     CommandLine& cl = *commandLine_;
     cl.add("end-time", "T", "simulated time at which the run stops",
@@ -70,13 +72,12 @@ Simulation::Simulation()
            "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
            "(0: at the start, at saves and on request only)",
            [this](const std::string& v) {
-               rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
-               require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
+               ranks_->setRebalanceInterval(CommandLine::toDouble("rebalance-interval", v));
            });
     cl.add("rank-grid", "GXxGYxGZ",
            "under mpirun: the ranks along x, y and z, e.g. 2x2x1 (their product is the number of ranks; default: "
            "all along x)",
-           [this](const std::string& v) { rankGrid_ = CommandLine::toGrid("rank-grid", v); });
+           [this](const std::string& v) { ranks_->setGrid(CommandLine::toGrid("rank-grid", v)); });
     cl.add("max-overlap", "F",
            "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
            "blow-up (default 0.25)",

@@ -13,7 +13,7 @@ public:
     SimulationState& state() override { return s_.state_; }
     const SimulationState& state() const override { return s_.state_; }
     StepWorkspace& workspace() override { return *s_.work_; }
-    bool onRanks() const override { return s_.onRanks(); }
+    bool onRanks() const override { return s_.ranks_->isSplit(); }
     bool hasBoundaries() const override { return !s_.boundaries_.empty(); }
     void afterDrift() override {
         for (Boundary* b : s_.boundaries_) b->afterDrift(s_);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Parallel/DomainSplit.h"
 #include "Particles/RigidBodyRotation.h"
 #include "Simulation.h"
 
@@ -41,7 +40,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     // New particles go before the ghosts: with a valid list they move the ghosts up a slot and
     // have their pairs relisted (PairList::relist); otherwise the ghosts go until the next build.
     const bool beforeGhosts = p.ghostCount > 0 && state_.pairList.valid;
-    if (p.ghostCount > 0 && !beforeGhosts) releaseGhosts();
+    if (p.ghostCount > 0 && !beforeGhosts) ranks_->releaseGhosts(state_);
     p.position.push_back(position);
     p.velocity.push_back(velocity);
     p.angularVelocity.push_back(angularVelocity);
@@ -52,13 +51,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     p.invMass.push_back(1.0 / mass);
     p.invInertia.push_back(1.0 / (0.4 * mass * radius * radius));
     p.species.push_back(static_cast<std::uint32_t>(species));
-    // On ranks a new particle gets a provisional id, unique to this rank, until all ranks number
-    // their new particles together (renumberNewParticles, at the next list build or save).
-    if (onRanks()) {
-        p.id.push_back(provisionalIdBase + (std::uint64_t(rank()) << 40) + provisionalIds_++);
-    } else {
-        p.id.push_back(state_.nextId++);
-    }
+    p.id.push_back(ranks_->idOfNewParticle(state_));  // (on ranks a provisional one)
     p.fixed.push_back(0);
     p.motion.push_back(-1);
     if (p.hasShapes()) {
@@ -69,7 +62,7 @@ std::size_t Simulation::addParticle(const Vec3& position, double radius, std::si
     }
     const std::size_t slot = beforeGhosts ? p.moveLastBeforeGhosts() : p.size() - 1;
     // The list relists the new particle's pairs at the next force computation (on ranks if no
-    // other rank needs it: Simulation::updateNeighbourhoodOnRanks).
+    // other rank needs it: RankContext::updateNeighbourhood).
     // (p.position[slot], not `position`: that may be a reference into the array the push_back
     // above moved, as the maser's copies are made.)
     state_.pairList.noteInserted(static_cast<std::uint32_t>(slot), p.position[slot]);
@@ -141,13 +134,13 @@ void Simulation::moveParticleBy(std::size_t slot, const Vec3& jump) {
     state_.particles.position[slot] += jump;
     // On ranks a particle that another rank holds as a ghost makes the list build anew (its
     // ghost would jump there unseen by that rank's list).
-    if (onRanks() && split_->isSentAsGhost(static_cast<std::uint32_t>(slot))) state_.pairList.valid = false;
+    if (ranks_->isSentAsGhost(slot)) state_.pairList.valid = false;
     else state_.pairList.noteJumped(static_cast<std::uint32_t>(slot), jump);
 }
 
 void Simulation::removeParticle(std::size_t slot) {
     require(slot < state_.particles.owned(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
-    if (state_.particles.ghostCount > 0) releaseGhosts();
+    if (state_.particles.ghostCount > 0) ranks_->releaseGhosts(state_);
     const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);
     state_.particles.removeBySwap(slot);
     state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);

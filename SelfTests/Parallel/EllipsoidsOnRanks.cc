@@ -44,7 +44,7 @@ public:
 
     EllipsoidsOnRanks() {
         addFlag("per-side", "ellipsoids along each side of the starting lattice", perSide);
-        setRunsOnRanks(true);
+        ranks().setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
@@ -101,7 +101,7 @@ public:
         t[3] = massesKept ? 0 : 1;
         t[12] = static_cast<double>(contactSummary().contacts);
         t[13] = static_cast<double>(contactSummary().contactsInLanes);
-        sumOverRanks(t);
+        ranks().sum(t);
         contacts_ += t[12];
         contactsInLanes_ += t[13];
         if (initial_.empty()) initial_ = t;
@@ -125,24 +125,25 @@ public:
                           static_cast<unsigned long long>(step()), e.kinetic, e.mass, t[14], t[15], t[0], initial_[0], t[1], t[2], initial_[1],
                           initial_[2], t[3] == 0 ? "masses kept" : "a mass changed", dp, dl, momentumTolerance,
                           angularMomentumTolerance(step()));
-            throw CollectiveError(m, rank() != 0);
+            throw CollectiveError(m, ranks().rank() != 0);
         }
     }
 
     void actionsAfterSolve() override {
-        const DomainSplit& split = *domainSplit();
-        const double moved = sumOverRanks(static_cast<double>(split.migrated));
-        if (rank() == 0)
+        const DomainSplit& split = *ranks().split();
+        const double moved = ranks().sum(static_cast<double>(split.migrated));
+        if (ranks().rank() == 0)
             std::printf("EllipsoidsOnRanks: %d ranks, %llu steps, %.0f contacts summed over steps (%.0f of them in the "
                         "batched ellipsoid lanes), %.0f particles changed rank: count, ids and masses kept exactly; "
                         "worst change of momentum %.2g, of angular momentum %.2g (of their scales)\n",
-                        ranks(), static_cast<unsigned long long>(lastRun().steps), contacts_, contactsInLanes_, moved,
-                        worstMomentum_, worstAngularMomentum_);
-        if (contacts_ == 0) throw CollectiveError("no contacts: the test tested nothing", rank() != 0);
+                        ranks().count(), static_cast<unsigned long long>(lastRun().steps), contacts_, contactsInLanes_,
+                        moved, worstMomentum_, worstAngularMomentum_);
+        if (contacts_ == 0) throw CollectiveError("no contacts: the test tested nothing", ranks().rank() != 0);
         if (contactsInLanes_ == 0)
             throw CollectiveError("no contact went through the batched ellipsoid lanes (EllipsoidContactBatch)",
-                                  rank() != 0);
-        if (ranks() > 1 && moved == 0) throw CollectiveError("no particle changed rank: the test tested little", rank() != 0);
+                                  ranks().rank() != 0);
+        if (ranks().count() > 1 && moved == 0)
+            throw CollectiveError("no particle changed rank: the test tested little", ranks().rank() != 0);
     }
 
 private:
