@@ -41,6 +41,7 @@ struct Lanes<8> {
     friend Mask operator>(Lanes a, Lanes b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)}; }
     friend Mask operator>=(Lanes a, Lanes b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GE_OQ)}; }
     friend bool any(Mask m) { return m.bits != 0; }
+    friend unsigned bitsOf(Mask m) { return m.bits; }
     friend int count(Mask m) { return std::popcount(static_cast<unsigned>(m.bits)); }
     // a where m, b elsewhere.
     friend Lanes select(Mask m, Lanes a, Lanes b) { return {_mm512_mask_blend_pd(m.bits, b.v, a.v)}; }
@@ -52,6 +53,9 @@ struct Lanes<8> {
     friend Lanes multiplyWhere(Mask m, Lanes a, Lanes b) { return {_mm512_maskz_mul_pd(m.bits, a.v, b.v)}; }
     // x + b where m, x elsewhere.
     friend Lanes addWhere(Mask m, Lanes x, Lanes b) { return {_mm512_mask_add_pd(x.v, m.bits, x.v, b.v)}; }
+
+    // x - b where m, x elsewhere.
+    friend Lanes subtractWhere(Mask m, Lanes x, Lanes b) { return {_mm512_mask_sub_pd(x.v, m.bits, x.v, b.v)}; }
 
     // --- the lanes as 64-bit patterns (Math/FourLanes.h) ---
     friend Lanes largerBits(Lanes a, Lanes b) {
@@ -136,6 +140,52 @@ struct Lanes<8> {
         storePointPair<0>(stored, w, out), storePointPair<1>(stored, w, out);
         storePointPair<2>(stored, w, out), storePointPair<3>(stored, w, out);
     }
+
+    // --- lanes of other types, and packing (the sweep, Contacts/PairSweepLanes.h) ---
+    struct Words {  // eight 64-bit words
+        __m512i v;
+    };
+    struct Indices {  // eight 32-bit numbers
+        __m256i v;
+    };
+    static Words loadWords(const void* p) { return {_mm512_loadu_si512(p)}; }
+    // first, first + 1, ..., first + 7.
+    static Indices consecutive(std::uint32_t first) {
+        return {_mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(first)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7))};
+    }
+    // The lanes whose bytes from `bytes` on are not zero.
+    static unsigned nonZeroBytes(const std::uint8_t* bytes) {
+        const __m256i each = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bytes)));
+        return _mm256_test_epi32_mask(each, each);
+    }
+    // The lanes whose bits `pick` has, stored one after the other in the order of their lanes.
+    class Packing {
+    public:
+        explicit Packing(unsigned pick) : pick_(static_cast<__mmask8>(pick)) {}
+        void store(Lanes a, double* out) const { _mm512_mask_compressstoreu_pd(out, pick_, a.v); }
+        void store(Words a, void* out) const { _mm512_mask_compressstoreu_epi64(out, pick_, a.v); }
+        void store(Indices a, std::uint32_t* out) const { _mm256_mask_compressstoreu_epi32(out, pick_, a.v); }
+
+    private:
+        __mmask8 pick_;
+    };
+    // Eight pairs (i, j) of points (x, y, z, w: four doubles each, point p at numbers + 4 p),
+    // each pair a 64-bit word with i in its low half and j in its high one, gathered: the
+    // differences of their coordinates, point i's less point j's, one vector per axis, and the
+    // sums of their w. (Indices 4 p in 32 bits: fewer than 2^29 points. GCC 12 warns about the
+    // gathers' own undefined pass-through operands.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+    static void gatheredDifferences(Words pairs, const double* numbers, Lanes (&axis)[3], Lanes& wSum) {
+        const __m512i evenLanes = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
+        const __m512i ij = _mm512_permutexvar_epi32(evenLanes, pairs.v);  // i in the low eight 32-bit lanes, j in the high
+        const __m256i i4 = _mm256_slli_epi32(_mm512_castsi512_si256(ij), 2);
+        const __m256i j4 = _mm256_slli_epi32(_mm512_extracti64x4_epi64(ij, 1), 2);
+        for (int a = 0; a < 3; ++a)
+            axis[a] = {_mm512_sub_pd(_mm512_i32gather_pd(i4, numbers + a, 8), _mm512_i32gather_pd(j4, numbers + a, 8))};
+        wSum = {_mm512_add_pd(_mm512_i32gather_pd(i4, numbers + 3, 8), _mm512_i32gather_pd(j4, numbers + 3, 8))};
+    }
+#pragma GCC diagnostic pop
 };
 
 }  // namespace talus::TALUS_LANES::lanes

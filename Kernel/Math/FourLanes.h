@@ -11,6 +11,31 @@
 
 namespace talus::TALUS_LANES::lanes {
 
+namespace detail {
+// AVX2 has no compress-store: the picked lanes of four are packed to the front by a permutation
+// chosen by their mask. For each mask, the picked lanes' numbers in order (the rest after them),
+// as the 32-bit elements of 64-bit lanes (lane l: 2l, 2l + 1) and as lane numbers.
+struct alignas(32) LeftPacking {
+    std::int32_t wide[16][8];
+    std::int32_t narrow[16][4];
+};
+constexpr LeftPacking makeLeftPacking() {
+    LeftPacking packing{};
+    for (int mask = 0; mask < 16; ++mask) {
+        int to = 0;
+        for (int pass = 0; pass < 2; ++pass)  // the picked lanes, then the others
+            for (int lane = 0; lane < 4; ++lane)
+                if (((mask >> lane) & 1) == (pass == 0)) {
+                    packing.narrow[mask][to] = lane;
+                    packing.wide[mask][2 * to] = 2 * lane, packing.wide[mask][2 * to + 1] = 2 * lane + 1;
+                    ++to;
+                }
+    }
+    return packing;
+}
+inline constexpr LeftPacking leftPacking = makeLeftPacking();
+}  // namespace detail
+
 template <>
 struct Lanes<4> {
     static constexpr int width = 4;
@@ -40,6 +65,7 @@ struct Lanes<4> {
     friend Mask operator>(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
     friend Mask operator>=(Lanes a, Lanes b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GE_OQ)}; }
     friend bool any(Mask m) { return _mm256_movemask_pd(m.bits) != 0; }
+    friend unsigned bitsOf(Mask m) { return static_cast<unsigned>(_mm256_movemask_pd(m.bits)); }
     friend int count(Mask m) { return std::popcount(static_cast<unsigned>(_mm256_movemask_pd(m.bits))); }
     // a where m, b elsewhere.
     friend Lanes select(Mask m, Lanes a, Lanes b) { return {_mm256_blendv_pd(b.v, a.v, m.bits)}; }
@@ -51,6 +77,11 @@ struct Lanes<4> {
     friend Lanes multiplyWhere(Mask m, Lanes a, Lanes b) { return {_mm256_and_pd(_mm256_mul_pd(a.v, b.v), m.bits)}; }
     // x + b where m, x elsewhere.
     friend Lanes addWhere(Mask m, Lanes x, Lanes b) { return {_mm256_blendv_pd(x.v, _mm256_add_pd(x.v, b.v), m.bits)}; }
+
+    // x - b where m, x elsewhere.
+    friend Lanes subtractWhere(Mask m, Lanes x, Lanes b) {
+        return {_mm256_blendv_pd(x.v, _mm256_sub_pd(x.v, b.v), m.bits)};
+    }
 
     // --- the lanes as 64-bit patterns (of non-negative doubles, whose patterns are in the
     // values' order, with a NaN of either sign larger than all; and checksums) ---
@@ -138,6 +169,60 @@ struct Lanes<4> {
         _mm256_storeu_pd(out + 4, _mm256_permute2f128_pd(xy1, zw1, 0x20));
         _mm256_storeu_pd(out + 8, _mm256_permute2f128_pd(xy0, zw0, 0x31));
         _mm256_storeu_pd(out + 12, _mm256_permute2f128_pd(xy1, zw1, 0x31));
+    }
+
+    // --- lanes of other types, and packing (the sweep, Contacts/PairSweepLanes.h) ---
+    struct Words {  // four 64-bit words
+        __m256i v;
+    };
+    struct Indices {  // four 32-bit numbers
+        __m128i v;
+    };
+    static Words words(const std::uint64_t (&w)[4]) {
+        return {_mm256_setr_epi64x(static_cast<long long>(w[0]), static_cast<long long>(w[1]),
+                                   static_cast<long long>(w[2]), static_cast<long long>(w[3]))};
+    }
+    static Indices indices(const std::uint32_t (&k)[4]) {
+        return {_mm_setr_epi32(static_cast<int>(k[0]), static_cast<int>(k[1]), static_cast<int>(k[2]),
+                               static_cast<int>(k[3]))};
+    }
+    // The lanes whose bits `pick` has, stored one after the other in the order of their lanes
+    // (whole vectors: the caller leaves room for four).
+    class Packing {
+    public:
+        explicit Packing(unsigned pick)
+            : wide_(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(detail::leftPacking.wide[pick]))),
+              narrow_(_mm_loadu_si128(reinterpret_cast<const __m128i*>(detail::leftPacking.narrow[pick]))) {}
+        void store(Lanes a, double* out) const {
+            _mm256_storeu_pd(out, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(a.v), wide_)));
+        }
+        void store(Words a, void* out) const {
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_permutevar8x32_epi32(a.v, wide_));
+        }
+        void store(Indices a, std::uint32_t* out) const {
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(out),
+                             _mm_castps_si128(_mm_permutevar_ps(_mm_castsi128_ps(a.v), narrow_)));
+        }
+
+    private:
+        __m256i wide_;
+        __m128i narrow_;
+    };
+    // Four pairs of points (x, y, z, w: four doubles each) a[l] and b[l], each loaded whole (no
+    // gathers): their differences a - b in x, y and z, one vector per axis, and the sums of their
+    // w. (b negated in its first three lanes: a + (-b) is a - b to the bit; then a 4 x 4
+    // transposition.)
+    static void pointDifferences(const double* const (&a)[4], const double* const (&b)[4], Lanes (&axis)[3],
+                                 Lanes& wSum) {
+        const __m256d negateXyz = _mm256_setr_pd(-0.0, -0.0, -0.0, 0.0);
+        __m256d d[4];
+        for (int l = 0; l < 4; ++l) d[l] = _mm256_add_pd(_mm256_loadu_pd(a[l]), _mm256_xor_pd(_mm256_loadu_pd(b[l]), negateXyz));
+        const __m256d t0 = _mm256_unpacklo_pd(d[0], d[1]), t1 = _mm256_unpackhi_pd(d[0], d[1]);
+        const __m256d t2 = _mm256_unpacklo_pd(d[2], d[3]), t3 = _mm256_unpackhi_pd(d[2], d[3]);
+        axis[0] = {_mm256_permute2f128_pd(t0, t2, 0x20)};
+        axis[1] = {_mm256_permute2f128_pd(t1, t3, 0x20)};
+        axis[2] = {_mm256_permute2f128_pd(t0, t2, 0x31)};
+        wSum = {_mm256_permute2f128_pd(t1, t3, 0x31)};
     }
 };
 

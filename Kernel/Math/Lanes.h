@@ -99,10 +99,12 @@ L squaredNorms(const L (&axis)[3]) {
 }
 
 // PeriodicImage::nearest of one axis of separations: d - L above half the length, d + L below
-// minus half of it (a NaN stays).
+// minus half of it (a NaN stays). (The second test sees d - L where the first moved d: that is
+// never below -L/2, as d > L/2, and rounding keeps the order, so the tests pick as the loop does.)
 template <class L>
 L nearestOf(L d, L length, L half, L minusHalf) {
-    return select(d < minusHalf, d + length, select(d > half, d - length, d));
+    d = subtractWhere(d > half, d, length);
+    return addWhere(d < minusHalf, d, length);
 }
 
 }  // namespace talus::TALUS_LANES::lanes
