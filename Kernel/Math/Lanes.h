@@ -99,12 +99,12 @@ L squaredNorms(const L (&axis)[3]) {
 }
 
 // PeriodicImage::nearest of one axis of separations: d - L above half the length, d + L below
-// minus half of it (a NaN stays). (The second test sees d - L where the first moved d: that is
-// never below -L/2, as d > L/2, and rounding keeps the order, so the tests pick as the loop does.)
+// minus half of it (a NaN stays). (Both tests of d itself: at most one holds, as in the loop's
+// if-else, and neither waits for the other's result.)
 template <class L>
 L nearestOf(L d, L length, L half, L minusHalf) {
-    d = subtractWhere(d > half, d, length);
-    return addWhere(d < minusHalf, d, length);
+    const typename L::Mask above = d > half, below = d < minusHalf;
+    return addWhere(below, subtractWhere(above, d, length), length);
 }
 
 }  // namespace talus::TALUS_LANES::lanes
