@@ -1,7 +1,6 @@
 // The passes over the particles' coordinates (Particles/VelocityVerlet.h, Domain::wrap) in each
-// lane form (LaneFormTest.h): with AVX-512 they take eight particles at a time in lanes
-// (Math/EightParticleLanes.h), with AVX2 four (Math/FourParticleLanes.h), and the last few one by
-// one. Both must give the same results to the bit, whichever path a particle takes: here each
+// lane form (LaneFormTest.h): with AVX-512 they take eight particles at a time in lanes, with
+// AVX2 four (the same loop over Math/Lanes.h for both widths), and the last few one by one. Both must give the same results to the bit, whichever path a particle takes: here each
 // pass over all particles is compared with the same pass called for one particle at a time
 // (which is always the loop), on particles with fixed ones among them, negative zeros and
 // coordinates outside the periodic box. (The scalar form has only the loop: not compared.)

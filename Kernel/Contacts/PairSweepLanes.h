@@ -1,6 +1,7 @@
 // The sweep of the force loop (Contacts/PairSweep.h) in the lanes of one form
-// (Math/LaneKernels.h): the scalar rule, four pairs at a time in AVX2 lanes, eight at a time
-// with AVX-512 gathers, and the sweep points and the near list they read.
+// (Math/LaneKernels.h): the scalar rule, and the same rule for W pairs at a time written once over
+// the lanes (Math/Lanes.h), four at a time from points loaded whole or eight at a time from
+// AVX-512 gathers; and the sweep points and the near list they read.
 #pragma once
 
 #include <algorithm>
@@ -14,27 +15,19 @@
 #include <utility>
 #include <vector>
 
-#if defined(__AVX512F__) && defined(__AVX512VL__)
-#define TALUS_AVX512_SWEEP 1
-#include <immintrin.h>
-#endif
-#if defined(__AVX2__) && defined(__FMA__)
-#define TALUS_AVX2_SWEEP 1
-#include <immintrin.h>
-#endif
-
 #include "Contacts/PairSweep.h"
 #include "Math/LaneNamespace.h"
+#include "Math/Lanes.h"
 
 namespace talus::TALUS_LANES {
 
 // The forms this build has, the scalar loop first.
 inline std::vector<SweepForm> availableSweepForms() {
     std::vector<SweepForm> forms{SweepForm::scalar};
-#ifdef TALUS_AVX2_SWEEP
+#if TALUS_LANES_WIDTH > 1
     forms.push_back(SweepForm::lanes);
 #endif
-#ifdef TALUS_AVX512_SWEEP
+#if TALUS_LANES_WIDTH == 8
     forms.push_back(SweepForm::gathers);
 #endif
     return forms;
@@ -72,98 +65,106 @@ template <bool nearestImage>
     picked += (r2 < limit * limit) | (states[k] != ContactHistory::apart);
 }
 
-#ifdef TALUS_AVX2_SWEEP
-namespace detail {
-// AVX2 has no compress-store: the picked lanes of four are packed to the front by a permutation
-// chosen by their mask. For each mask, the picked lanes' numbers in order (the rest after them),
-// as the 32-bit elements of 64-bit lanes (lane l: 2l, 2l + 1) and as lane numbers.
-struct alignas(32) LeftPacking {
-    std::int32_t wide[16][8];
-    std::int32_t narrow[16][4];
+#if TALUS_LANES_WIDTH > 1
+// W pairs of the sweep in lanes L (Math/Lanes.h): their separations xi - xj, one vector per axis,
+// and radius sums, which of them have something pending (a contact history that is not apart),
+// the pairs themselves and their places k in the whole list.
+template <class L>
+struct PairLanes {
+    L d[3], limit;
+    unsigned pending;
+    typename L::Words pairs;
+    typename L::Indices places;
 };
-constexpr LeftPacking makeLeftPacking() {
-    LeftPacking packing{};
-    for (int mask = 0; mask < 16; ++mask) {
-        int to = 0;
-        for (int pass = 0; pass < 2; ++pass)  // the picked lanes, then the others
-            for (int lane = 0; lane < 4; ++lane)
-                if (((mask >> lane) & 1) == (pass == 0)) {
-                    packing.narrow[mask][to] = lane;
-                    packing.wide[mask][2 * to] = 2 * lane, packing.wide[mask][2 * to + 1] = 2 * lane + 1;
-                    ++to;
-                }
+
+// The periodic box per axis, in every lane.
+template <class L>
+struct ImageLanes {
+    L length[3], half[3], minusHalf[3];
+    explicit ImageLanes(const PeriodicImage& image) {
+        for (int a = 0; a < 3; ++a) {
+            length[a] = L::broadcast(image.length(a));
+            half[a] = L::broadcast(image.halfLength(a)), minusHalf[a] = L::broadcast(-image.halfLength(a));
+        }
     }
-    return packing;
+};
+
+// The rule of sweepPair for W pairs at once, written once for every width: the nearest image,
+// the distance (the same fused multiply-adds) and the pick; the picked pairs' places, particles
+// and separations stored from out's `picked` on, which moves on by their number. (Whole vectors
+// stored: picked + W <= SweptPairs::capacity while W pairs of a chunk are left.)
+template <bool nearestImage, class L>
+[[gnu::always_inline]] inline void pickInLanes(PairLanes<L>& block, const ImageLanes<L>& image, SweptPairs& out,
+                                               std::size_t& picked) {
+    if constexpr (nearestImage)
+        for (int a = 0; a < 3; ++a)
+            block.d[a] = lanes::nearestOf(block.d[a], image.length[a], image.half[a], image.minusHalf[a]);
+    const L r2 = lanes::squaredNorms(block.d);
+    const unsigned pick = bitsOf(r2 < block.limit * block.limit) | block.pending;
+    const typename L::Packing packing(pick);
+    packing.store(block.places, out.pair + picked);
+    packing.store(block.pairs, out.particles + picked);
+    packing.store(block.d[0], out.dx + picked);
+    packing.store(block.d[1], out.dy + picked);
+    packing.store(block.d[2], out.dz + picked);
+    picked += static_cast<std::size_t>(std::popcount(pick));
 }
-inline constexpr LeftPacking leftPacking = makeLeftPacking();
-}  // namespace detail
 
 // The rule for four pairs at a time, from `begin` on while four are left before `end`; returns
 // where it stopped. pairAt(m) gives the m-th pair to sweep and its place k in the whole list.
-// Each pair's two points are loaded whole (x, y, z, radius: one 32-byte load each, no gathers),
-// subtracted with the radii added (b negated in its first three lanes: a + (-b) is a - b to
-// the bit), and the four differences turned into one vector per axis; the nearest image, the
-// distance and the pick as in sweepPair. Same decisions and separations, bit for bit.
+// Each pair's two points are loaded whole (x, y, z, radius: one 32-byte load each, no gathers:
+// Lanes<4>::pointDifferences). Same decisions and separations as sweepPair, bit for bit.
 template <bool nearestImage, class PairAt>
 inline std::size_t sweepInFourPairLanes(PairAt pairAt, std::size_t begin, std::size_t end, const SweepPoint* points,
                                         const ContactHistory::State* states, const PeriodicImage& image,
                                         SweptPairs& out, std::size_t& picked) {
-    __m256d length[3], half[3], minusHalf[3];
-    for (int a = 0; a < 3; ++a) {
-        length[a] = _mm256_set1_pd(image.length(a));
-        half[a] = _mm256_set1_pd(image.halfLength(a));
-        minusHalf[a] = _mm256_set1_pd(-image.halfLength(a));
-    }
-    const __m256d negateXyz = _mm256_setr_pd(-0.0, -0.0, -0.0, 0.0);
+    using L = lanes::Lanes<4>;
+    const ImageLanes<L> box(image);
     std::size_t m = begin;
     for (; m + 4 <= end; m += 4) {
         // (The pairs and places go into vectors from registers: stored one by one and loaded
         // whole, the load cannot take the stores' data on the way and waits for them, the
         // hottest instruction of the wave's force loop in a profile at 108000 particles. Measured:
         // 3% faster at 3000 in single steps, 6% at 12000 in waves, unchanged at 108000.)
-        long long pair[4];
+        std::uint64_t pair[4];
         std::uint32_t index[4];
-        __m256d d[4];  // xi - xj, yi - yj, zi - zj, ri + rj
+        const double *a[4], *b[4];
+        PairLanes<L> block;
+        block.pending = 0;
         for (int l = 0; l < 4; ++l) {
             const auto [particles, k] = pairAt(m + static_cast<std::size_t>(l));
-            pair[l] = std::bit_cast<long long>(particles), index[l] = static_cast<std::uint32_t>(k);
-            d[l] = _mm256_add_pd(_mm256_loadu_pd(&points[particles.i].x),
-                                 _mm256_xor_pd(_mm256_loadu_pd(&points[particles.j].x), negateXyz));
+            pair[l] = std::bit_cast<std::uint64_t>(particles), index[l] = static_cast<std::uint32_t>(k);
+            a[l] = &points[particles.i].x, b[l] = &points[particles.j].x;
+            block.pending |= static_cast<unsigned>(states[k] != ContactHistory::apart) << l;
         }
-        const __m256d t0 = _mm256_unpacklo_pd(d[0], d[1]), t1 = _mm256_unpackhi_pd(d[0], d[1]);
-        const __m256d t2 = _mm256_unpacklo_pd(d[2], d[3]), t3 = _mm256_unpackhi_pd(d[2], d[3]);
-        __m256d axis[3] = {_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20),
-                           _mm256_permute2f128_pd(t0, t2, 0x31)};
-        const __m256d limit = _mm256_permute2f128_pd(t1, t3, 0x31);
-        if constexpr (nearestImage)
-            for (int a = 0; a < 3; ++a) {
-                const __m256d above = _mm256_cmp_pd(axis[a], half[a], _CMP_GT_OQ);
-                const __m256d below = _mm256_cmp_pd(axis[a], minusHalf[a], _CMP_LT_OQ);
-                axis[a] = _mm256_blendv_pd(_mm256_blendv_pd(axis[a], _mm256_sub_pd(axis[a], length[a]), above),
-                                           _mm256_add_pd(axis[a], length[a]), below);
-            }
-        const __m256d r2 =
-            _mm256_fmadd_pd(axis[2], axis[2], _mm256_fmadd_pd(axis[1], axis[1], _mm256_mul_pd(axis[0], axis[0])));
-        const __m256d near = _mm256_cmp_pd(r2, _mm256_mul_pd(limit, limit), _CMP_LT_OQ);
-        const int pending = (states[index[0]] != ContactHistory::apart) | (states[index[1]] != ContactHistory::apart) << 1 |
-                            (states[index[2]] != ContactHistory::apart) << 2 | (states[index[3]] != ContactHistory::apart) << 3;
-        const int pick = _mm256_movemask_pd(near) | pending;
-        const __m256i wide = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(detail::leftPacking.wide[pick]));
-        const __m128i narrow = _mm_loadu_si128(reinterpret_cast<const __m128i*>(detail::leftPacking.narrow[pick]));
-        const auto pack = [&](__m256d v) { return _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), wide)); };
-        // (Whole vectors stored: picked + 4 <= m + 4 - begin <= SweptPairs::capacity.)
-        const __m256i pairs = _mm256_setr_epi64x(pair[0], pair[1], pair[2], pair[3]);
-        const __m128i places = _mm_setr_epi32(static_cast<int>(index[0]), static_cast<int>(index[1]),
-                                              static_cast<int>(index[2]), static_cast<int>(index[3]));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.particles + picked), _mm256_permutevar8x32_epi32(pairs, wide));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out.pair + picked),
-                         _mm_castps_si128(_mm_permutevar_ps(_mm_castsi128_ps(places), narrow)));
-        _mm256_storeu_pd(out.dx + picked, pack(axis[0]));
-        _mm256_storeu_pd(out.dy + picked, pack(axis[1]));
-        _mm256_storeu_pd(out.dz + picked, pack(axis[2]));
-        picked += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(pick)));
+        L::pointDifferences(a, b, block.d, block.limit);
+        block.pairs = L::words(pair), block.places = L::indices(index);
+        pickInLanes<nearestImage>(block, box, out, picked);
     }
     return m;
+}
+#endif
+
+#if TALUS_LANES_WIDTH == 8
+// The rule for eight pairs [k, k + 8) of the list at a time while eight are left before `end`,
+// their points gathered (Lanes<8>::gatheredDifferences); returns where it stopped.
+template <bool nearestImage>
+inline std::size_t sweepInGatheredLanes(const ParticlePair* pairs, std::size_t k, std::size_t end,
+                                        const SweepPoint* points, const ContactHistory::State* states,
+                                        const PeriodicImage& image, SweptPairs& out, std::size_t& picked) {
+    using L = lanes::Lanes<8>;
+    static_assert(sizeof(ParticlePair) == 8 && sizeof(ContactHistory::State) == 1);
+    const ImageLanes<L> box(image);
+    const double* numbers = &points[0].x;  // x, y, z, radius of each particle in turn
+    for (; k + 8 <= end; k += 8) {
+        PairLanes<L> block;
+        block.pairs = L::loadWords(pairs + k);
+        L::gatheredDifferences(block.pairs, numbers, block.d, block.limit);
+        block.pending = L::nonZeroBytes(reinterpret_cast<const std::uint8_t*>(states + k));
+        block.places = L::consecutive(static_cast<std::uint32_t>(k));
+        pickInLanes<nearestImage>(block, box, out, picked);
+    }
+    return k;
 }
 #endif
 
@@ -176,51 +177,12 @@ inline void sweepPairs(const ParticlePair* pairs, std::size_t begin, std::size_t
                        [[maybe_unused]] std::size_t particleCount, const ContactHistory::State* states,
                        const PeriodicImage& image, SweptPairs& out, [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, k = begin;
-#ifdef TALUS_AVX512_SWEEP
-    // (The gathers index the records' numbers with 32-bit 4 i; GCC 12 warns about the intrinsics'
-    // own undefined pass-through operands.)
-    const std::size_t vectorEnd = form == SweepForm::gathers && particleCount < (std::size_t{1} << 31) / 4 ? end : begin;
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-    static_assert(sizeof(ParticlePair) == 8 && sizeof(ContactHistory::State) == 1);
-    const double* numbers = &points[0].x;  // x, y, z, radius of each particle in turn
-    __m512d length[3], half[3], minusHalf[3];
-    for (int a = 0; a < 3; ++a) {
-        length[a] = _mm512_set1_pd(image.length(a));
-        half[a] = _mm512_set1_pd(image.halfLength(a));
-        minusHalf[a] = _mm512_set1_pd(-image.halfLength(a));
-    }
-    const __m512i evenLanes = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 1, 3, 5, 7, 9, 11, 13, 15);
-    const __m256i laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    double* separation[3] = {out.dx, out.dy, out.dz};
-    for (; k + 8 <= vectorEnd; k += 8) {
-        // i in the low eight 32-bit lanes, j in the high eight.
-        const __m512i listed = _mm512_loadu_si512(pairs + k);
-        const __m512i ij = _mm512_permutexvar_epi32(evenLanes, listed);
-        const __m256i i = _mm512_castsi512_si256(ij), j = _mm512_extracti64x4_epi64(ij, 1);
-        const __m256i i4 = _mm256_slli_epi32(i, 2), j4 = _mm256_slli_epi32(j, 2);
-        __m512d d[3];
-        for (int a = 0; a < 3; ++a) {
-            d[a] = _mm512_sub_pd(_mm512_i32gather_pd(i4, numbers + a, 8), _mm512_i32gather_pd(j4, numbers + a, 8));
-            if constexpr (nearestImage) {
-                d[a] = _mm512_mask_sub_pd(d[a], _mm512_cmp_pd_mask(d[a], half[a], _CMP_GT_OQ), d[a], length[a]);
-                d[a] = _mm512_mask_add_pd(d[a], _mm512_cmp_pd_mask(d[a], minusHalf[a], _CMP_LT_OQ), d[a], length[a]);
-            }
-        }
-        const __m512d r2 = _mm512_fmadd_pd(d[2], d[2], _mm512_fmadd_pd(d[1], d[1], _mm512_mul_pd(d[0], d[0])));
-        const __m512d limit = _mm512_add_pd(_mm512_i32gather_pd(i4, numbers + 3, 8), _mm512_i32gather_pd(j4, numbers + 3, 8));
-        const __mmask8 near = _mm512_cmp_pd_mask(r2, _mm512_mul_pd(limit, limit), _CMP_LT_OQ);
-        const __m256i state = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(states + k)));
-        const __mmask8 pick = near | _mm256_test_epi32_mask(state, state);
-        _mm256_mask_compressstoreu_epi32(out.pair + picked, pick,
-                                         _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(k)), laneOffsets));
-        _mm512_mask_compressstoreu_epi64(out.particles + picked, pick, listed);
-        for (int a = 0; a < 3; ++a) _mm512_mask_compressstoreu_pd(separation[a] + picked, pick, d[a]);
-        picked += static_cast<std::size_t>(__builtin_popcount(pick));
-    }
-#pragma GCC diagnostic pop
+#if TALUS_LANES_WIDTH == 8
+    // (The gathers index the points' numbers with 32-bit 4 i.)
+    if (form == SweepForm::gathers && particleCount < (std::size_t{1} << 31) / 4)
+        k = sweepInGatheredLanes<nearestImage>(pairs, k, end, points, states, image, out, picked);
 #endif
-#ifdef TALUS_AVX2_SWEEP
+#if TALUS_LANES_WIDTH > 1
     if (form == SweepForm::lanes)
         k = sweepInFourPairLanes<nearestImage>([pairs](std::size_t m) { return std::pair(pairs[m], m); }, k, end,
                                                points, states, image, out, picked);
@@ -238,7 +200,7 @@ inline void sweepSelectedPairs(PairAt pairAt, std::size_t begin, std::size_t end
                                const ContactHistory::State* states, const PeriodicImage& image, SweptPairs& out,
                                [[maybe_unused]] SweepForm form = sweepForm()) {
     std::size_t picked = 0, m = begin;
-#ifdef TALUS_AVX2_SWEEP
+#if TALUS_LANES_WIDTH > 1
     if (form == SweepForm::lanes || form == SweepForm::gathers)
         m = sweepInFourPairLanes<nearestImage>(pairAt, m, end, points, states, image, out, picked);
 #endif

@@ -2,8 +2,9 @@
 // once per instruction set (Kernel/CMakeLists.txt, talusLaneSources), and the one this process
 // runs, chosen once from the processor (Documentation/UserGuide/Installing.md "Lane forms").
 //   scalar  baseline x86-64 (SSE2): the loops as the compiler vectorises them, no fused multiply-add;
-//   avx2    x86-64-v3 (AVX2, FMA, BMI2): four particles at a time (Math/FourParticleLanes.h);
-//   avx512  x86-64-v4 (AVX-512 F, BW, DQ, VL) with BMI2: eight at a time (Math/EightParticleLanes.h).
+//   avx2    x86-64-v3 (AVX2, FMA, BMI2): four particles at a time (Lanes<4>, Math/FourLanes.h);
+//   avx512  x86-64-v4 (AVX-512 F, BW, DQ, VL) with BMI2: eight at a time (Lanes<8>, Math/EightLanes.h).
+// Each lane loop is written once, a template over the lanes (Math/Lanes.h).
 // The results of a form are the same to the bit whatever processor runs it; those of two forms
 // differ in rounding (a fused multiply-add rounds once).
 #pragma once

@@ -7,10 +7,10 @@
 // of a dilute chute flow's step (Documentation/Performance.md). Here they vectorise, with the
 // same arithmetic per particle as before (the results are the same to the bit).
 //
-// With AVX-512 they take eight particles at a time in lanes written by hand
-// (Math/EightParticleLanes.h), 2.5x faster than GCC's vectorisation of the loops below, which is
-// left for the last few particles; with AVX2 only, four at a time (Math/FourParticleLanes.h), and
-// in the scalar form as GCC vectorises the loops below.
+// In the forms with lanes they take W particles at a time (eight with AVX-512, four with AVX2:
+// Math/Lanes.h), each lane loop written once for any width; with AVX-512 2.5x faster than GCC's
+// vectorisation of the loops below, which is left for the last few particles (and is the whole of
+// the scalar form).
 #pragma once
 
 #include <bit>
@@ -18,9 +18,8 @@
 #include <cstdint>
 
 #include "Boundaries/Domain.h"
-#include "Math/EightParticleLanes.h"
-#include "Math/FourParticleLanes.h"
 #include "Math/LaneNamespace.h"
+#include "Math/Lanes.h"
 #include "Particles/ParticleStore.h"
 
 namespace talus::TALUS_LANES {
@@ -38,22 +37,16 @@ inline double unlessKept(double x, double moved, std::uint64_t keep) {
 inline void advanceMobile(double* __restrict x, const double* __restrict rate, const double* __restrict scale,
                           const std::uint8_t* __restrict fixed, std::size_t n, double step) {
     std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, step, scale + i);
+#if TALUS_LANES_WIDTH > 1
+    using L = lanes::ParticleLanes;
+    constexpr std::size_t W = L::width;
+    for (; i + W <= n; i += W) {
+        const lanes::MobileLanes<L> mobile(fixed + i);
+        L factor[3];
+        lanes::spread(L::broadcast(step) * L::load(scale + i), factor);
         for (int c = 0; c < 3; ++c) {
-            double* xc = x + 3 * i + 8 * c;
-            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), block.factor[c], _mm512_loadu_pd(rate + 3 * i + 8 * c), c));
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], factor[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(scale + i)), factor);
-        for (int c = 0; c < 3; ++c) {
-            double* xc = x + 3 * i + 4 * c;
-            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), factor[c], _mm256_loadu_pd(rate + 3 * i + 4 * c), moves[c]));
+            double* xc = x + 3 * i + W * c;
+            multiplyAddWhere(mobile.of[c], factor[c], L::load(rate + 3 * i + W * c), L::load(xc)).store(xc);
         }
     }
 #endif
@@ -76,32 +69,20 @@ inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const
                                const double* __restrict invMass, const std::uint8_t* __restrict fixed, std::size_t n,
                                double step, double dt) {
     std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, step, invMass + i);
-        const __m512d drift = _mm512_set1_pd(dt);
+#if TALUS_LANES_WIDTH > 1
+    using L = lanes::ParticleLanes;
+    constexpr std::size_t W = L::width;
+    const L drift = L::broadcast(dt);
+    for (; i + W <= n; i += W) {
+        const lanes::MobileLanes<L> mobile(fixed + i);
+        L factor[3];
+        lanes::spread(L::broadcast(step) * L::load(invMass + i), factor);
         for (int c = 0; c < 3; ++c) {
-            double* vc = v + 3 * i + 8 * c;
-            double* xc = x + 3 * i + 8 * c;
-            const __m512d kicked =
-                block.advance(_mm512_loadu_pd(vc), block.factor[c], _mm512_loadu_pd(force + 3 * i + 8 * c), c);
-            _mm512_storeu_pd(vc, kicked);
-            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), drift, kicked, c));
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    const __m256d drift = _mm256_set1_pd(dt);
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], factor[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(invMass + i)), factor);
-        for (int c = 0; c < 3; ++c) {
-            double* vc = v + 3 * i + 4 * c;
-            double* xc = x + 3 * i + 4 * c;
-            const __m256d kicked =
-                lanes::advance(_mm256_loadu_pd(vc), factor[c], _mm256_loadu_pd(force + 3 * i + 4 * c), moves[c]);
-            _mm256_storeu_pd(vc, kicked);
-            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), drift, kicked, moves[c]));
+            double* vc = v + 3 * i + W * c;
+            double* xc = x + 3 * i + W * c;
+            const L kicked = multiplyAddWhere(mobile.of[c], factor[c], L::load(force + 3 * i + W * c), L::load(vc));
+            kicked.store(vc);
+            multiplyAddWhere(mobile.of[c], drift, kicked, L::load(xc)).store(xc);
         }
     }
 #endif
@@ -134,26 +115,18 @@ inline void startForcesWithGravity(ParticleStore& p, const Vec3& gravity) {
     const double* __restrict mass = p.mass.data();
     const std::uint8_t* __restrict fixed = p.fixed.data();
     std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    __m512d g[3];
+#if TALUS_LANES_WIDTH > 1
+    using L = lanes::ParticleLanes;
+    constexpr std::size_t W = L::width;
+    L g[3];
     lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, 1.0, mass + i);  // (1 m is m, exactly)
+    for (; i + W <= n; i += W) {
+        const lanes::MobileLanes<L> mobile(fixed + i);
+        L weight[3];
+        lanes::spread(L::load(mass + i), weight);
         for (int c = 0; c < 3; ++c) {
-            _mm512_storeu_pd(force + 3 * i + 8 * c, _mm512_maskz_mul_pd(block.of[c], block.factor[c], g[c]));
-            _mm512_storeu_pd(torque + 3 * i + 8 * c, _mm512_setzero_pd());
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    __m256d g[3];
-    lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], weight[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_loadu_pd(mass + i), weight);
-        for (int c = 0; c < 3; ++c) {
-            _mm256_storeu_pd(force + 3 * i + 4 * c, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
-            _mm256_storeu_pd(torque + 3 * i + 4 * c, _mm256_setzero_pd());
+            multiplyWhere(mobile.of[c], weight[c], g[c]).store(force + 3 * i + W * c);
+            L::zero().store(torque + 3 * i + W * c);
         }
     }
 #endif
@@ -187,44 +160,28 @@ inline void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, d
                                 n, halfStep);
 }
 
-// Domain::wrap of the first n of an array of positions. With AVX-512, eight particles at a time
-// (four with AVX2 only) are only compared with the box (Math/EightParticleLanes.h,
-// Math/FourParticleLanes.h), and the few blocks with a particle outside wrapped one by one;
+// Domain::wrap of the first n of an array of positions. In the lanes, W particles at a time are
+// only compared with the box, and the few blocks with a particle outside wrapped one by one;
 // otherwise an axis at a time with the box read once (the compiler cannot keep lo and hi in
 // registers across stores into a Vec3&).
 inline void wrapPositions(const Domain& domain, Vec3* x, std::size_t n) {
     std::size_t first = 0;
-#ifdef TALUS_AVX512_LANES
-    __m512d low[3], high[3];
+#if TALUS_LANES_WIDTH > 1
+    using L = lanes::ParticleLanes;
+    constexpr std::size_t W = L::width;
+    L low[3], high[3];
     const Domain::WrapBounds bounds = domain.wrapBounds();
-    lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
-    lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
-    for (; first + 8 <= n; first += 8) {
+    lanes::perAxis(bounds.low, low);
+    lanes::perAxis(bounds.high, high);
+    for (; first + W <= n; first += W) {
         const double* block = x[first].data();
-        __mmask8 outside = 0;
+        L::Mask outside{};
         for (int c = 0; c < 3; ++c) {
-            const __m512d coordinates = _mm512_loadu_pd(block + 8 * c);
-            outside |= _mm512_cmp_pd_mask(coordinates, high[c], _CMP_GE_OQ) |
-                       _mm512_cmp_pd_mask(coordinates, low[c], _CMP_LT_OQ);
+            const L coordinates = L::load(block + W * c);
+            outside = outside | (coordinates >= high[c]) | (coordinates < low[c]);
         }
-        if (outside) [[unlikely]]
-            for (std::size_t i = first; i < first + 8; ++i) domain.wrap(x[i]);
-    }
-#elif defined(TALUS_AVX2_LANES)
-    __m256d low[3], high[3];
-    const Domain::WrapBounds bounds = domain.wrapBounds();
-    lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
-    lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
-    for (; first + 4 <= n; first += 4) {
-        const double* block = x[first].data();
-        __m256d outside = _mm256_setzero_pd();
-        for (int c = 0; c < 3; ++c) {
-            const __m256d coordinates = _mm256_loadu_pd(block + 4 * c);
-            outside = _mm256_or_pd(outside, _mm256_or_pd(_mm256_cmp_pd(coordinates, high[c], _CMP_GE_OQ),
-                                                         _mm256_cmp_pd(coordinates, low[c], _CMP_LT_OQ)));
-        }
-        if (_mm256_movemask_pd(outside)) [[unlikely]]
-            for (std::size_t i = first; i < first + 4; ++i) domain.wrap(x[i]);
+        if (any(outside)) [[unlikely]]
+            for (std::size_t i = first; i < first + W; ++i) domain.wrap(x[i]);
     }
 #endif
     for (int a = 0; a < 3; ++a) {
