@@ -2,8 +2,6 @@
 // passes of the form in use (Math/LaneKernels.h).
 #include "Math/LaneForm.h"
 
-#include <cstdlib>
-
 #include "Error.h"
 #include "Math/LaneKernels.h"
 #include "Particles/VelocityVerlet.h"
@@ -34,21 +32,8 @@ const LaneKernels& kernelsOf(LaneForm form) {
     return lanes_scalar::kernels;
 }
 
-// The form a process starts with: the best this processor runs, or the one the environment
-// variable TALUS_LANE_FORM names (to compare the forms on one machine: Documentation/Performance.md).
-const LaneKernels* startingKernels() {
-    const char* named = std::getenv("TALUS_LANE_FORM");
-    if (!named || !*named) return &kernelsOf(laneFormsOfThisProcessor().back());
-    const LaneForm form = laneFormNamed(named, "environment variable TALUS_LANE_FORM");
-    if (!processorRuns(form))
-        throw Error(std::string("environment variable TALUS_LANE_FORM: lane form ") + named +
-                    ": this processor does not run it (it runs " + laneFormName(laneFormsOfThisProcessor().back()) +
-                    " and below)");
-    return &kernelsOf(form);
-}
-
 const LaneKernels*& kernelsInUse() {
-    static const LaneKernels* inUse = startingKernels();
+    static const LaneKernels* inUse = &kernelsOf(laneFormsOfThisProcessor().back());
     return inUse;
 }
 
