@@ -1,5 +1,4 @@
-// The rotating drum, in the order it happens (methods: RotatingDrum.h,
-// Documentation/Drums/RotatingDrum.md).
+// The rotating drum (methods: RotatingDrum.h, Documentation/Drums/RotatingDrum.md).
 #include "RotatingDrum.h"
 
 #include <algorithm>
@@ -58,8 +57,7 @@ void RotatingDrum::setupInitialConditions() {
     setGravity(Vec3(0, 0, -1));
     setDomain(Vec3(-radius - 1, 0, -radius - 1), Vec3(radius + 1, length, radius + 1));
     setPeriodic(false, true, false);
-    // Theory/RotatingDrum.md eq. (1): equal volumes pi/6, equal density, mass 1; tc and e for two
-    // particles (m_ij = 1/2).
+    // Theory/RotatingDrum.md eq. (1): volumes pi/6, one density, mass 1; tc, e for m_ij = 1/2.
     const double density = 1 / particleVolume;
     const auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5).withFriction(friction);
     addSpecies("spheres", density, law);
@@ -125,9 +123,8 @@ int RotatingDrum::insertRemaining() {
 
 void RotatingDrum::startRotation() {
     const double w = angularSpeed();
-    // Theory/RotatingDrum.md eq. (3)-(4): velocity (-w r sin th, 0, w r cos th) at angle
-    // th = atan2(Z, X) is the rotation w x X with w = (0, -w, 0): the angle grows, the bottom moves
-    // towards +x.
+    // Theory/RotatingDrum.md eq. (3)-(4): (-w r sin th, 0, w r cos th) at th = atan2(Z, X) is w x X
+    // for w = (0, -w, 0): the angle grows, the bottom moves towards +x.
     motions()[0].angularVelocity = Vec3(0, -w, 0);
     // The wall moves from now on (the time loop sets these velocities from the next step).
     ParticleStore& p = particles();
@@ -152,8 +149,7 @@ void RotatingDrum::checkBed() const {
     });
     requireOnAllRanks(*this, !(farthest >= radius + wallDiameter), "a particle left the drum (distance " + str(farthest) +
                                                                       " from the axis) at t = " + str(time()));
-    // Every particle has mass 1 (Theory/RotatingDrum.md eq. (1)): the bed's mass is the count, to
-    // the rounding of the sum.
+    // Every particle has mass 1 (Theory/RotatingDrum.md eq. (1)): the bed's mass is its count.
     const Totals bed = totalsOver(*this);
     requireOnAllRanks(*this, bed.count == particlesInserted() && std::abs(bed.mass - bed.count) <= 1e-12 * bed.count,
                       "the drum holds " + str(bed.count) + " particles of mass " + str(bed.mass) + ", " +
