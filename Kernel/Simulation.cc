@@ -15,7 +15,8 @@
 #include "IO/OutputFiles.h"
 #include "IO/Progress.h"
 #include "IO/RestartFile.h"
-#include "Parallel/DomainSplit.h"
+#include "Parallel/Communicator.h"
+#include "Parallel/RankContext.h"
 #include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
@@ -40,31 +41,20 @@ const ContactSummary& Simulation::contactSummary() const { return work_->summary
 Energies Simulation::energies() const {
     Energies e = particleEnergies(state_.particles, state_.gravity);
     e.elastic = work_->elasticEnergy;
-    if (!onRanks()) return e;
+    if (!ranks_->isSplit()) return e;
     const Vec3 moment = e.mass > 0 ? Vec3(e.mass * e.centreOfMass) : Vec3::Zero();
     std::vector<double> sums = {e.gravitational, e.kinetic, e.rotational, e.mass, moment.x(), moment.y(), moment.z()};
-    sumOverRanks(sums);
+    ranks_->sum(sums);
     e.gravitational = sums[0], e.kinetic = sums[1], e.rotational = sums[2], e.mass = sums[3];
     e.centreOfMass = e.mass > 0 ? Vec3(Vec3(sums[4], sums[5], sums[6]) / e.mass) : Vec3::Constant(NAN);
     return e;  // elastic: summed over ranks when the contacts were recorded
-}
-
-int Simulation::rank() const { return split_ ? split_->rank() : worldCommunicator().rank(); }
-int Simulation::ranks() const { return split_ ? split_->ranks() : worldCommunicator().size(); }
-bool Simulation::onRanks() const { return split_ && split_->isParallel(); }
-
-double Simulation::sumOverRanks(double x) const { return onRanks() ? split_->communicator().sum(x) : x; }
-double Simulation::maxOverRanks(double x) const { return onRanks() ? split_->communicator().max(x) : x; }
-void Simulation::sumOverRanks(std::vector<double>& values) const {
-    if (onRanks())
-        split_->communicator().allReduce(values.data(), static_cast<int>(values.size()), Communicator::Reduction::sum);
 }
 
 std::size_t Simulation::mobileParticleCount() const {
     const ParticleStore& p = state_.particles;
     double mobile = 0;
     for (std::size_t i = 0; i < p.owned(); ++i) mobile += !p.fixed[i];
-    return static_cast<std::size_t>(sumOverRanks(mobile));
+    return static_cast<std::size_t>(ranks_->sum(mobile));
 }
 
 // --- the run ---
@@ -77,11 +67,11 @@ int Simulation::solve(int argc, char** argv) {
     } catch (const Error& e) {
         // Before the scene is split every rank does the same (and fails alike): rank 0 speaks.
         const auto* collective = dynamic_cast<const CollectiveError*>(&e);
-        const bool replicated = !onRanks() && rank() != 0;
+        const bool replicated = !ranks_->isSplit() && ranks_->rank() != 0;
         if ((!collective || !collective->silent()) && !replicated)
             std::cerr << (argc > 0 ? argv[0] : "talus") << ": error: " << e.what() << std::endl;
         // An error that only this rank saw would leave the others waiting for it: end them all.
-        if (!collective && ranks() > 1) worldCommunicator().abort(1);
+        if (!collective && ranks_->count() > 1) worldCommunicator().abort(1);
         return 1;
     }
 }
@@ -113,7 +103,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     const auto steps = remaining > 0 ? static_cast<std::uint64_t>(std::llround(remaining / dt)) : 0;
     std::size_t mobile = mobileParticleCount();
     std::ostringstream quiet;  // ranks other than 0 print nothing
-    std::ostream& out = rank() == 0 ? std::cout : quiet;
+    std::ostream& out = ranks_->rank() == 0 ? std::cout : quiet;
     Progress progress(out, state_.settings.progressInterval);
     progress.start(state_.settings.name, state_.time, state_.settings.endTime, steps, mobile);
     const std::uint64_t every = saveEvery();
@@ -138,7 +128,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         }
         // Boundaries may add and delete particles (waves run without them): count again when the
         // number changed (on ranks, where that takes all ranks, every 256 steps).
-        if (advance == 1 && (onRanks() ? (k & 255) == 0 : state_.particles.size() != counted)) {
+        if (advance == 1 && (ranks_->isSplit() ? (k & 255) == 0 : state_.particles.size() != counted)) {
             counted = state_.particles.size();
             mobile = mobileParticleCount();
         }
@@ -147,7 +137,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     progress.finish(state_.time, steps);
     if (steps > 0) {
         std::uint64_t& positionsChanged = work_->positions.changedBetweenSteps;
-        if (onRanks()) positionsChanged = static_cast<std::uint64_t>(sumOverRanks(static_cast<double>(positionsChanged)));
+        positionsChanged = static_cast<std::uint64_t>(ranks_->sum(static_cast<double>(positionsChanged)));
         // Rebuilds cost a full neighbour search; boundaries that delete particles force one,
         // those that add or move a few have their pairs relisted.
         const std::uint64_t builds = state_.pairList.builds - buildsAtStart;
@@ -157,7 +147,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
             out << "; its near list (the pairs within " << state_.pairList.nearSkinFraction << " x the skin) made "
                 << near << " times, every " << static_cast<double>(steps) / static_cast<double>(near) << " steps";
         const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
-        if (const double all = onRanks() ? sumOverRanks(relisted) : relisted; all > 0)
+        if (const double all = ranks_->sum(relisted); all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
         if (positionsChanged > 0 && state_.pairList.nearSkinFraction > 0)
             out << "; particles moved between steps (by hand) found at " << positionsChanged
@@ -209,8 +199,7 @@ void Simulation::initialise(bool restarted) {
         work_->laws = state_.species.table<LinearSpringDashpot>();
     else
         work_->laws = state_.species.table<HertzMindlin>();
-    split_ = std::make_unique<DomainSplit>(worldCommunicator());
-    if (rankGrid_[0] > 0) split_->setGrid(rankGrid_);
+    ranks_->start(state_);
     work_->grid = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
         double rmin = INFINITY;
@@ -224,12 +213,14 @@ void Simulation::initialise(bool restarted) {
     }
     state_.pairList.orientById = c.idOrderedSums;
     state_.pairList.maxRelisted = c.relist ? PairList::defaultMaxRelisted : 0;
-    largestRadius_ = 0;
-    for (double r : state_.particles.radius) largestRadius_ = std::max(largestRadius_, r);
     files_.reset();
     const bool anyFile = c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart;
-    if (anyFile && rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
-    if (onRanks()) splitScene();
+    if (anyFile && ranks_->rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
+    if (ranks_->isSplit()) {
+        bool boundariesRunOnRanks = true;
+        for (const Boundary* b : scene_->boundaries()) boundariesRunOnRanks = boundariesRunOnRanks && b->runsOnRanks();
+        ranks_->splitScene(state_, boundariesRunOnRanks, c.name);
+    }
     PositionWatch& positions = work_->positions;
     positions.changedBetweenSteps = 0;
     if (restarted) {
@@ -254,8 +245,9 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
     bool rebuild;
-    if (onRanks()) {
-        rebuild = updateNeighbourhoodOnRanks(carried);
+    if (ranks_->isSplit()) {
+        rebuild = ranks_->updateNeighbourhood(state_, work.positions.changedThisStep, carried,
+                                              [this] { reorderParticles(/*withPreviousForces*/ false); });
     } else {
         list.relist(p, state_.domain, state_.walls);  // particles added or moved by boundaries
         rebuild = drifted ? list.needsRebuild(drifted->moves, p, state_.time, state_.settings.timeStep)
@@ -269,7 +261,7 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }
-    if (rebuild && onRanks())
+    if (rebuild && ranks_->isSplit())
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, std::move(carried));
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep);
@@ -290,9 +282,9 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     if (records) {
         work.elasticEnergy = records->elasticEnergy();
         work.recordedContacts = records->count();
-        if (onRanks()) {  // (one reduction for both)
+        if (ranks_->isSplit()) {  // (one reduction for both)
             std::vector<double> totals{work.elasticEnergy, static_cast<double>(work.recordedContacts)};
-            sumOverRanks(totals);
+            ranks_->sum(totals);
             work.elasticEnergy = totals[0];
             work.recordedContacts = static_cast<std::size_t>(totals[1]);
         }
@@ -315,7 +307,7 @@ void Simulation::reorderParticles(bool withPreviousForces) {
         integrator_->cellsForBuild(*host_, state_.pairList.reachOfNextBuild(state_.settings.timeStep));
     const std::vector<std::size_t> order =
         cells ? cells->order(p.position)
-              : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, onRanks() ? &p.id : nullptr);
+              : spaceFillingCurveOrder(p.position, state_.domain.lo, 2 * largest, ranks_->isSplit() ? &p.id : nullptr);
     bool unchanged = true;
     for (std::size_t k = 0; k < order.size() && unchanged; ++k) unchanged = order[k] == k;
     if (unchanged) return;
@@ -330,7 +322,10 @@ void Simulation::reorderParticles(bool withPreviousForces) {
 }
 
 void Simulation::writeOutput() {
-    if (onRanks()) return writeGatheredOutput();
+    if (ranks_->isSplit()) {
+        run_->saveKeptValues(state_);
+        return ranks_->writeGatheredOutput(state_, files_.get(), *work_);
+    }
     if (!files_) return;
     // Particles added since the forces (a driver's actionsAfterTimeStep) are relisted now, in the
     // run that goes on and, through the restart file, in the one that restarts from here.

@@ -20,6 +20,7 @@
 #include "Contacts/ContactReport.h"
 #include "Error.h"
 #include "Integration/StepHost.h"
+#include "Parallel/RankContext.h"
 #include "Particles/Energies.h"
 #include "Run/Run.h"
 #include "Scene/Scene.h"
@@ -27,7 +28,6 @@
 
 namespace talus {
 
-class DomainSplit;
 class Integrator;
 class OutputFiles;
 struct StepWorkspace;
@@ -52,25 +52,11 @@ public:
     Scene& scene() { return *scene_; }
     const Scene& scene() const { return *scene_; }
 
-    // The ranks of the run (1 without mpirun) and this one; rank 0 writes the files.
-    int rank() const;
-    int ranks() const;
-    // Sums of numbers over the ranks (every rank calls it, with its own values, at the same point).
-    double sumOverRanks(double x) const;
-    void sumOverRanks(std::vector<double>& values) const;
-    // The domain split of the run (after solve has set it up; one rank without mpirun).
-    const DomainSplit* domainSplit() const { return split_.get(); }
-    // Drivers run on ranks by default: their measurements go through Kernel/Sampling (whole-scene
-    // sums, files and messages written once). A driver whose hooks read particles() directly for
-    // whole-scene numbers says setRunsOnRanks(false) and then refuses to start on more ranks.
-    void setRunsOnRanks(bool on) { runsOnRanks_ = on; }
-    // Place the rank boundaries by particle count at the next list build (Documentation/Parallel.md);
-    // done at the start and after every save anyway.
-    void requestRebalance();
-    double maxOverRanks(double x) const;
-    // Whether the scene is split over more than one rank (false during setupInitialConditions,
-    // which every rank runs on the whole scene).
-    bool onRanks() const;
+    // The ranks of the run (Parallel/RankContext.h): this one, sums over them, the domain split.
+    // For Kernel/Sampling and boundaries; drivers measure through Kernel/Sampling instead.
+    const RankContext& ranks() const { return *ranks_; }
+    RankContext& ranks() { return *ranks_; }
+
     double time() const { return state_.time; }
     std::uint64_t step() const { return state_.step; }
 
@@ -104,7 +90,7 @@ protected:
     virtual void actionsAfterSolve() {}
 
 private:
-    class Host;  // the StepHost the steppers advance and the SceneRanks the scene asks (SimulationHost.h)
+    class Host;  // the StepHost the steppers advance (SimulationHost.h)
     friend struct SimulationInternals;  // (SimulationInternals.h: the state, mutable, for tests)
     void initialise(bool restarted);
     void refuseContradictions(const RunSettings& saved, const std::string& restartFile) const;
@@ -115,36 +101,16 @@ private:
     void reorderParticles(bool withPreviousForces);
     std::uint64_t saveEvery() const;
 
-    // On more than one rank (Parallel/SimulationOnRanks.cc).
-    void releaseGhosts();
-    void rebalance();
-    void renumberNewParticles();
-    void splitScene();
-    bool updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried);
-    void agreeOnOverlaps(const std::string& diagnosis);
-    std::string overlapsToAgree_;  // this rank's overlap blow-up, for the next step's agreement
-    void writeGatheredOutput();
-
     SimulationState state_;
     // Outside the saved state: the force loop's scratch and what the steppers keep between steps
     // (Integration/StepWorkspace.h), the steppers, and the host they advance.
     std::unique_ptr<StepWorkspace> work_;
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<Host> host_;
+    std::unique_ptr<RankContext> ranks_;
     std::unique_ptr<Run> run_;
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<OutputFiles> files_;
-    std::unique_ptr<DomainSplit> split_;
-    std::vector<CarriedHistory> pendingHistories_;  // of a scene just split, until its first list build
-    double largestRadius_ = 0;                      // over all ranks, for the ghost width
-    bool rebalancePending_ = false;
-    // Rank boundaries by particle count (Documentation/Parallel.md), at the start, at saves, on
-    // request, and every rebalanceInterval_ of simulated time.
-    double rebalanceInterval_ = 0, lastBalanceTime_ = 0;
-    std::array<int, 3> rankGrid_{0, 0, 0};  // --rank-grid; zeros: all ranks along x
-    bool runsOnRanks_ = true;
-    std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
-    static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     RunStatistics lastRun_;
 };
 

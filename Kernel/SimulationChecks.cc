@@ -33,10 +33,10 @@ void Simulation::checkOverlaps(double limit, bool initial, bool agreeNow) {
             m << "%); the contact is too soft for the impact speed, or the time step too large";
         diagnosis = m.str();
     }
-    if (onRanks() && agreeNow)
-        agreeOnOverlaps(diagnosis);
-    else if (onRanks())
-        overlapsToAgree_ = diagnosis;  // (updateNeighbourhoodOnRanks agrees on it)
+    if (ranks_->isSplit() && agreeNow)
+        ranks_->agreeOnOverlaps(diagnosis);
+    else if (ranks_->isSplit())
+        ranks_->agreeOnOverlapsWithNextStep(diagnosis);
     else if (!diagnosis.empty())
         throw Error(diagnosis);
 }

@@ -7,7 +7,9 @@
 #include "IO/OutputFiles.h"     // (complete types for the members the constructor may have to destroy)
 #include "Integration/Integrator.h"
 #include "Integration/StepWorkspace.h"
-#include "Parallel/DomainSplit.h"
+#include "Math/LaneForm.h"
+#include "Parallel/Communicator.h"
+#include "Parallel/RankContext.h"
 #include "SimulationHost.h"
 
 namespace talus {
@@ -16,8 +18,9 @@ Simulation::Simulation()
     : work_(std::make_unique<StepWorkspace>()),
       integrator_(std::make_unique<Integrator>()),
       host_(std::make_unique<Host>(*this)),
+      ranks_(std::make_unique<RankContext>(worldCommunicator())),
       run_(std::make_unique<Run>()),
-      scene_(std::make_unique<Scene>(state_, *host_)) {
+      scene_(std::make_unique<Scene>(state_, *ranks_)) {
     RunSettings& c = state_.settings;
     CommandLine& cl = run_->commandLine();
     cl.add("end-time", "T", "simulated time at which the run stops",
@@ -50,6 +53,10 @@ Simulation::Simulation()
            "the first half of each step in one pass over the particles where the scene allows it (on, the default), "
            "or pass by pass: the same trajectories, for measurements",
            [&c](const std::string& v) { c.stepper.driftPass = CommandLine::toBool("drift-pass", v); });
+    cl.add("lane-form", "scalar|avx2|avx512",
+           "run the vector passes in this lane form instead of the best one the processor runs: the bits of a run "
+           "on another processor (Installing.md, lane forms)",
+           [](const std::string& v) { setLaneForm(laneFormNamed(v, "--lane-form")); });
     cl.add("vtu", "on|off", "write ParaView .vtu frames",
            [&c](const std::string& v) { c.writeVtu = CommandLine::toBool("vtu", v); });
     cl.add("fstat", "on|off",
@@ -66,13 +73,12 @@ Simulation::Simulation()
            "under mpirun: place the rank boundaries for equal particle counts every T of simulated time "
            "(0: at the start, at saves and on request only)",
            [this](const std::string& v) {
-               rebalanceInterval_ = CommandLine::toDouble("rebalance-interval", v);
-               require(rebalanceInterval_ >= 0, "flag --rebalance-interval must not be negative");
+               ranks_->setRebalanceInterval(CommandLine::toDouble("rebalance-interval", v));
            });
     cl.add("rank-grid", "GXxGYxGZ",
            "under mpirun: the ranks along x, y and z, e.g. 2x2x1 (their product is the number of ranks; default: "
            "all along x)",
-           [this](const std::string& v) { rankGrid_ = CommandLine::toGrid("rank-grid", v); });
+           [this](const std::string& v) { ranks_->setGrid(CommandLine::toGrid("rank-grid", v)); });
     cl.add("max-overlap", "F",
            "largest overlap during the run, as a fraction of the smaller radius, before the run stops as a "
            "blow-up (default 0.25)",

@@ -1,21 +1,21 @@
-// The simulation as the steppers see it (Integration/StepHost.h) and as its scene asks about the
-// ranks (Scene/SceneRanks in Scene/Scene.h): a part of talus::Simulation, for its own source files only.
+// The simulation as the steppers see it (Integration/StepHost.h): a part of talus::Simulation,
+// for its own source files only.
 #pragma once
 
 #include "Boundaries/Boundary.h"
 #include "Integration/StepHost.h"
-#include "Parallel/DomainSplit.h"
+#include "Parallel/RankContext.h"
 #include "Simulation.h"
 
 namespace talus {
 
-class Simulation::Host final : public StepHost, public SceneRanks {
+class Simulation::Host final : public StepHost {
 public:
     explicit Host(Simulation& simulation) : s_(simulation) {}
     SimulationState& state() override { return s_.state_; }
     const SimulationState& state() const override { return s_.state_; }
     StepWorkspace& workspace() override { return *s_.work_; }
-    bool onRanks() const override { return s_.onRanks(); }
+    bool onRanks() const override { return s_.ranks_->isSplit(); }
     bool hasBoundaries() const override { return !s_.scene_->boundaries().empty(); }
     void afterDrift() override {
         for (Boundary* b : s_.scene_->boundaries()) b->afterDrift(s_);
@@ -25,17 +25,6 @@ public:
     }
     void checkOverlaps(double limit, bool initial, bool agreeNow) override { s_.checkOverlaps(limit, initial, agreeNow); }
     void reorderParticles(bool withPreviousForces) override { s_.reorderParticles(withPreviousForces); }
-
-    // SceneRanks
-    int rank() const override { return s_.rank(); }
-    double sumOverRanks(double x) const override { return s_.sumOverRanks(x); }
-    void releaseGhosts() override { s_.releaseGhosts(); }
-    std::uint64_t provisionalId() override {
-        return provisionalIdBase + (std::uint64_t(s_.rank()) << 40) + s_.provisionalIds_++;
-    }
-    bool isSentAsGhost(std::size_t slot) const override {
-        return s_.split_->isSentAsGhost(static_cast<std::uint32_t>(slot));
-    }
 
 private:
     Simulation& s_;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "Formats/RestartFormat.h"
 #include "IO/RestartFile.h"
 #include "TestHelpers.h"
 
@@ -299,9 +300,8 @@ TEST(BadInput, CorruptedRestartFile) {
     const std::size_t thirdParticle = full.find('\n', full.find('\n', firstParticle) + 1) + 1;
     const std::size_t pairlistLine = lineStarting(full, "pairlist");
     const std::size_t firstPair = full.find('\n', pairlistLine) + 1;
-    // A particle line: id, position, velocity, angular velocity, force, torque (5 x 3 numbers),
-    // radius, mass, inverse mass, inverse inertia, species, fixed flag, motion.
-    const int speciesToken = 1 + 15 + 4;
+    // A particle line's fields: Formats/RestartFormat.h.
+    const int speciesToken = formats::restart::particleSpecies;
     const std::string firstId = full.substr(full.find_first_not_of(' ', firstParticle),
                                             full.find(' ', full.find_first_not_of(' ', firstParticle)) -
                                                 full.find_first_not_of(' ', firstParticle));
@@ -320,12 +320,12 @@ TEST(BadInput, CorruptedRestartFile) {
         {"first keyword changed", replaceToken(full, 0, 0, "Mercury"), 0, {"expected 'Talus'"}},
         {"particle species out of range", replaceToken(full, thirdParticle, speciesToken, "1"), thirdParticle,
          {"species 1 is out of range"}},
-        {"negative species", replaceToken(full, thirdParticle, speciesToken, "-1"), thirdParticle, {"bad count '-1'"}},
+        {"negative species", replaceToken(full, thirdParticle, speciesToken, "-1"), thirdParticle, {"species must not be negative, found -1"}},
         {"wall species out of range", replaceToken(full, firstWall, 6, "7"), firstWall, {"wall species 7"}},
         {"wall motion out of range", replaceToken(full, firstWall, 7, "0"), firstWall, {"wall motion out of range"}},
-        {"fixed flag not 0 or 1", replaceToken(full, thirdParticle, speciesToken + 1, "2"), thirdParticle,
+        {"fixed flag not 0 or 1", replaceToken(full, thirdParticle, formats::restart::fixed, "2"), thirdParticle,
          {"fixed flag 2"}},
-        {"negative radius", replaceToken(full, thirdParticle, 16, "-0.5"), thirdParticle, {"radius must be positive"}},
+        {"negative radius", replaceToken(full, thirdParticle, formats::restart::radius, "-0.5"), thirdParticle, {"radius must be positive"}},
         {"pair of a missing particle", replaceToken(full, firstPair, 1, "6"), firstPair, {"pair particle 6"}},
         {"particle count too large", replaceToken(full, particlesLine, 1, "7"), pairlistLine, {"bad count 'pairlist'"}},
         {"unsupported version", replaceToken(full, 0, 2, "99"), 0, {"format version 99"}},
@@ -348,10 +348,10 @@ TEST(BadInput, CorruptedRestartFile) {
         // inverse mass, and two particles with one id.
         {"inverted domain", replaceToken(full, lineStarting(full, "domain"), 1, "99"), lineStarting(full, "domain"),
          {"domain: the upper corner must lie above the lower corner"}},
-        {"zero mass", replaceToken(full, thirdParticle, 17, "0"), thirdParticle, {"mass must be positive"}},
-        {"negative inverse mass", replaceToken(full, thirdParticle, 18, "-2"), thirdParticle,
+        {"zero mass", replaceToken(full, thirdParticle, formats::restart::mass, "0"), thirdParticle, {"mass must be positive"}},
+        {"negative inverse mass", replaceToken(full, thirdParticle, formats::restart::inverseMass, "-2"), thirdParticle,
          {"inverse mass and inverse inertia must not be negative"}},
-        {"an id twice", replaceToken(full, thirdParticle, 0, firstId), thirdParticle,
+        {"an id twice", replaceToken(full, thirdParticle, formats::restart::id, firstId), thirdParticle,
          {"particle id " + firstId + " appears twice"}},
     };
     for (const Case& c : cases) {

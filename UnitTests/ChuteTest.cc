@@ -1,5 +1,5 @@
-// The chute base class (Kernel/Chute/Chute.h, Theory/Chutes.md "The rough base") and the chute diagnostics
-// (Kernel/Chute/ChuteStatistics.h).
+// The chute base class (Kernel/Chute/Chute.h, Theory/Chutes.md "The rough base") and the chute
+// diagnostics (Kernel/Chute/ChuteStatistics.h).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -5,18 +5,18 @@
 // torques, the advanced spring, the normal force and the overlap. The lanes name particles
 // that recur in other lanes, in either role, and alternate between two laws, so a lane that
 // gathered another particle's or pair's numbers, or another lane's law, would differ.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
-#include "Contacts/ContactForces.h"
+#include "LaneFormTest.h"
+#include "Contacts/ContactForceLoop.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
-TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
+TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
     std::mt19937_64 random(20261204);
     std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
     const std::size_t particles = 20;

@@ -25,11 +25,11 @@ struct WorstError {
 };
 
 // Runs a linear spring-dashpot collision built with fromCollision(tc, e, m*) over all entry
-// phases and returns the worst relative errors against tc and e. By Theory/ContactLaws.md eq. (10)-(11) the solution of
-// m* x'' = -kn x - gn x' from x = 0, x' = v is x = v/w exp(-gn t/(2 m*)) sin(w t) with
-// w = sqrt(kn/m* - (gn/(2 m*))^2): the overlap returns to 0 at t = pi/w = tc, with velocity
-// -v exp(-gn tc/(2 m*)) = -e v. The law has no cut-off of attractive forces, so the contact
-// ends exactly there, and the ratio of normal speeds is e.
+// phases and returns the worst relative errors against tc and e. By
+// Theory/ContactLaws.md eq. (10)-(11) the solution of m* x'' = -kn x - gn x' from x = 0, x' = v
+// is x = v/w exp(-gn t/(2 m*)) sin(w t) with w = sqrt(kn/m* - (gn/(2 m*))^2): the overlap returns
+// to 0 at t = pi/w = tc, with velocity -v exp(-gn tc/(2 m*)) = -e v. The law has no cut-off of
+// attractive forces, so the contact ends exactly there, and the ratio of normal speeds is e.
 WorstError linearCollisionErrors(double restitution, bool withWall, double timeStep, double collisionTime = 0.005) {
     HeadOnCollision collision;
     if (withWall) collision.partnerRadius = 0;
@@ -61,8 +61,8 @@ void expectSpecRestitutionAndDuration(bool withWall) {
 
 }  // namespace
 
-// Theory/ContactLaws.md eq. (10)-(11): unequal spheres (radii 0.5 and 0.4, so m* = 0.512/1.512) meet with restitution e
-// and collision time tc at dt = tc/50.
+// Theory/ContactLaws.md eq. (10)-(11): unequal spheres (radii 0.5 and 0.4, so m* = 0.512/1.512)
+// meet with restitution e and collision time tc at dt = tc/50.
 TEST(HeadOnCollision, TwoSpheresReboundWithSpecRestitutionAndDuration) { expectSpecRestitutionAndDuration(false); }
 
 // The same against a wall at rest, where the reduced mass is the particle's mass.
@@ -91,9 +91,9 @@ TEST(HeadOnCollision, ElasticCollisionConservesKineticEnergy) {
 // Hertz (elastic, e = 1): m* x'' = -K x^(3/2) with K = 4/3 E* sqrt(R*). Energy conservation,
 // 1/2 m* v^2 = 1/2 m* x'^2 + 2/5 K x^(5/2), gives the largest overlap
 // dmax = (5 m* v^2 / (4 K))^(2/5) and the duration
-// tc = 2 int_0^dmax dx / sqrt(v^2 - (4 K/(5 m*)) x^(5/2)) = 2 dmax/v int_0^1 du / sqrt(1 - u^(5/2)),
-// and with s = u^(5/2) the integral is 2/5 int_0^1 s^(-3/5) (1-s)^(-1/2) ds = 2/5 B(2/5, 1/2),
-// B(a, b) = Gamma(a) Gamma(b) / Gamma(a + b).
+// tc = 2 int_0^dmax dx / sqrt(v^2 - (4 K/(5 m*)) x^(5/2)) = 2 dmax/v int_0^1
+// du / sqrt(1 - u^(5/2)), and with s = u^(5/2) the integral is 2/5 int_0^1 s^(-3/5) (1-s)^(-1/2)
+// ds = 2/5 B(2/5, 1/2), B(a, b) = Gamma(a) Gamma(b) / Gamma(a + b).
 TEST(HeadOnCollision, HertzDurationAndEnergyMatchElasticTheory) {
     HeadOnCollision collision;
     HertzMindlin law;

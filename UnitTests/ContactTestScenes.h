@@ -1,6 +1,7 @@
 // Shared scenes for the contact-physics tests (ContactCollisionTest.cc, ObliqueImpactTest.cc,
-// RollingTest.cc, SettlingEnergyTest.cc, ContactReportTest.cc): real simulations driven through the public driver
-// API (talus::Simulation), so that the tests check what a driver gets, time loop included.
+// RollingTest.cc, SettlingEnergyTest.cc, ContactReportTest.cc): real simulations driven through the
+// public driver API (talus::Simulation), so that the tests check what a driver gets, time loop
+// included.
 #pragma once
 
 #include <cmath>
@@ -11,7 +12,8 @@
 
 namespace talus::test {
 
-// Density that gives a sphere of diameter 1 unit mass (Theory/Chutes.md "Units and axes": m = 1 for d = 1).
+// Density that gives a sphere of diameter 1 unit mass (Theory/Chutes.md "Units and axes": m = 1 for
+// d = 1).
 inline constexpr double unitMassDensity = 6 / pi;
 
 inline double sphereMass(double radius, double density = unitMassDensity) {

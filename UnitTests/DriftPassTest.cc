@@ -4,18 +4,18 @@
 // and a reference to measure displacements from: five blocks of eight in lanes (with AVX-512) and
 // a tail of five. (That the trajectories equal those of the pass-by-pass step to the bit:
 // PairListTest.cc, DriftInOnePassChangesNothing.)
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
-#include "Contacts/PairSweep.h"
+#include "LaneFormTest.h"
+#include "Contacts/PairSweepLanes.h"
 #include "Particles/DriftPass.h"
 #include "Particles/VelocityVerlet.h"
 #include "TestHelpers.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
 namespace {
 
@@ -55,7 +55,7 @@ void expectSameParticles(const ParticleStore& a, const ParticleStore& b) {
 
 }  // namespace
 
-TEST(DriftPass, EqualsThePassesItStandsIn) {
+TALUS_LANE_TEST(DriftPass, EqualsThePassesItStandsIn) {
     const Domain domain = someDomain();
     ParticleStore onePass = someParticles(), byPasses = someParticles();
     std::vector<Vec3> reference = wrappedReference(domain);  // (some of them across a face:)
@@ -102,10 +102,10 @@ TEST(DriftPass, EqualsThePassesItStandsIn) {
     EXPECT_NE(result.positionsBefore, result.positionsAfter);
 }
 
-// A wave's advance of a region (Integration/WaveStepper.cc): the end of one step and the start of the
-// next in one pass over some of the slots (from an odd slot, so that lanes and the tail both
+// A wave's advance of a region (Integration/WaveStepper.cc): the end of one step and the start of
+// the next in one pass over some of the slots (from an odd slot, so that lanes and the tail both
 // run), against halfKick, the copy of the forces and the pass that kicks with them.
-TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
+TALUS_LANE_TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     const Domain domain = someDomain();
     ParticleStore onePass = someParticles(), byPasses = someParticles();
     const std::vector<Vec3> reference = wrappedReference(domain);
@@ -131,7 +131,7 @@ TEST(DriftPass, ClosingAStepInThePassEqualsTheThreePasses) {
     EXPECT_FALSE(sameBits(onePass.velocity, someParticles().velocity));
 }
 
-TEST(DriftPass, WithoutAReferenceMeasuresNoDisplacement) {
+TALUS_LANE_TEST(DriftPass, WithoutAReferenceMeasuresNoDisplacement) {
     ParticleStore p = someParticles();
     std::vector<Vec3> previousForce;
     std::vector<SweepPoint> points;
@@ -143,7 +143,7 @@ TEST(DriftPass, WithoutAReferenceMeasuresNoDisplacement) {
 
 // A NaN or a position or velocity too large to square, in a block of lanes or in the tail, is
 // reported as not finite (the list's check then names the particle: PairList::needsRebuild).
-TEST(DriftPass, FindsWhatIsNotFinite) {
+TALUS_LANE_TEST(DriftPass, FindsWhatIsNotFinite) {
     for (std::size_t bad : {3u, 21u, 42u}) {
         for (int kind = 0; kind < 3; ++kind) {
             ParticleStore p = someParticles();
@@ -164,7 +164,7 @@ TEST(DriftPass, FindsWhatIsNotFinite) {
 // A NaN of either sign is larger than every number in the running maxima (they compare bit
 // patterns as unsigned integers; x86 makes its NaNs with the sign bit set): a fixed particle's
 // NaN velocity, which moves no coordinate, still makes the speed and the growth NaN.
-TEST(DriftPass, ANegativeNaNWinsTheMaxima) {
+TALUS_LANE_TEST(DriftPass, ANegativeNaNWinsTheMaxima) {
     for (std::size_t bad : {3u, 21u, 42u})
         for (double sign : {1.0, -1.0}) {
             ParticleStore p = someParticles();

@@ -3,16 +3,16 @@
 // finishes must give the scalar answer (point, multiplier, normal, overlap, contact point), and
 // every lane the scalar solve would take further (more than one iteration, a pair apart) must be
 // left to it.
-#include <gtest/gtest.h>
-
 #include <random>
 
+#include "LaneFormTest.h"
 #include "Contacts/EllipsoidContactBatch.h"
 #include "SuperquadricReference.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
-TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
+TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
     std::mt19937_64 random(20261201);
     std::uniform_real_distribution<double> uniform(-1, 1);
     const double tolerance = SuperquadricContactSettings{}.tolerance;
@@ -33,11 +33,12 @@ TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
                     cases.pop_back();
                     continue;
                 }
-                // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a settled
-                // packing: Newton's first step lands within the tolerance), or by up to 1e-4 and
-                // 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a third of the
-                // lanes, not at all, with the warm start of a contact at rest (solved again from
-                // its own solution: its residual is at round-off, and the solve takes no step).
+                // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a
+                // settled packing: Newton's first step lands within the tolerance), or by up to
+                // 1e-4 and 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a
+                // third of the lanes, not at all, with the warm start of a contact at rest (solved
+                // again from its own solution: its residual is at round-off, and the solve takes no
+                // step).
                 const int motion = batch.count % 3;
                 SuperquadricContactPoint start = last.solution;
                 if (motion == 2) {
@@ -63,7 +64,8 @@ TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
                 apart += !s.touching;
                 if (batch.done[l] == 0) continue;
                 ++done;
-                // A finished lane is a pair the scalar solve finished in one iteration or none, touching.
+                // A finished lane is a pair the scalar solve finished in one iteration or none,
+                // touching.
                 EXPECT_TRUE(oneIteration) << name(kind) << " lane " << l << ": scalar iterations " << s.iterations;
                 const double size = std::min(cases[l].shapeI.semiAxes().minCoeff(), cases[l].shapeJ.semiAxes().minCoeff());
                 worstPoint = std::max(worstPoint, (Vec3(batch.px[l], batch.py[l], batch.pz[l]) - s.solution.point).norm() / size);
@@ -73,7 +75,8 @@ TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
                 worstMiddle = std::max(worstMiddle, (Vec3(batch.mx[l], batch.my[l], batch.mz[l]) - s.contactPoint).norm() / size);
             }
         }
-        // The same arithmetic up to rounding (the scalar path through Eigen, the lanes on plain numbers).
+        // The same arithmetic up to rounding (the scalar path through Eigen, the lanes on plain
+        // numbers).
         EXPECT_LT(worstPoint, 1e-13) << name(kind);
         EXPECT_LT(worstNormal, 1e-13) << name(kind);
         EXPECT_LT(worstOverlap, 1e-13) << name(kind);

@@ -2,7 +2,8 @@
 // motion of the contact law of Documentation/UserGuide/ContactLaws.md, written out here from the
 // published law (Tsuji et al. 1992, in the form of Antypov & Elliott 2011) and integrated with
 // the classical fourth-order Runge-Kutta method with adaptive steps, far below the simulation's,
-// with the switches between sticking and sliding and the separation located by bisection. Nothing of the kernel is used.
+// with the switches between sticking and sliding and the separation located by bisection. Nothing
+// of the kernel is used.
 //
 // Normal: the overlap x (x' = u > 0 while approaching) of a pair of reduced mass m* obeys
 //   m* u' = -fn,  fn = K x^(3/2) + gn(x) u,  K = 4/3 E* sqrt(R*),

@@ -21,7 +21,8 @@ using test::SceneSimulation;
 
 namespace {
 
-// The thesis's table 3.C.1 (Theory/ContactLaws.md "Bidisperse mixtures"): d = 1 and d = 2^(-1/3), density 6/pi, so m = 8 r^3: 1 and 1/2.
+// The thesis's table 3.C.1 (Theory/ContactLaws.md "Bidisperse mixtures"): d = 1 and d = 2^(-1/3),
+// density 6/pi, so m = 8 r^3: 1 and 1/2.
 const double largeRadius = 0.5;
 const double smallRadius = 0.5 * std::cbrt(0.5);
 
@@ -189,9 +190,10 @@ TEST(InsertionBoundary, TouchingIsAllowedAndTheSmallestOverlapIsNot) {
 
 // --- targets ---
 
-// The periodic chute's mixture (Theory/Chutes.md eq. (2)-(4): 1000 large and 2000 small in 20 x 10), in a layer 30
-// deep: their volume 1000 pi/6 + 2000 pi/12 = 1047 is 0.17 of it, which random addition reaches
-// easily (with 1000 attempts per particle it stalls at 0.24-0.28, Documentation/UserGuide/Insertion.md).
+// The periodic chute's mixture (Theory/Chutes.md eq. (2)-(4): 1000 large and 2000 small in
+// 20 x 10), in a layer 30 deep: their volume 1000 pi/6 + 2000 pi/12 = 1047 is 0.17 of it, which
+// random addition reaches easily (with 1000 attempts per particle it stalls at 0.24-0.28,
+// Documentation/UserGuide/Insertion.md).
 TEST(InsertionBoundary, CountIsMetExactlyWhenFeasible) {
     Simulation s;
     s.scene().setDomain(Vec3::Zero(), Vec3(20, 10, 40));

@@ -87,7 +87,7 @@ TEST(LammpsDataFile, MalformedFilesNameFileAndLine) {
         {replaced("1.5 2.5 0.25", "1.5 2.5 0.25 0 0 2000000000"), "line 12: the image flag 2000000000 is out of range"},
         {replaced("7 1 1 1.909", "1e30 1 1 1.909"), "line 12: '1e30' for the atom id is not a whole number"},
         {replaced("7 1 1 1.909", "1.7 1 1 1.909"), "line 12: '1.7' for the atom id is not a whole number"},
-        {replaced("7 1 1 1.909", "-7 1 1 1.909"), "line 12: bad count '-7' for the atom id"},
+        {replaced("7 1 1 1.909", "-7 1 1 1.909"), "line 12: the atom id must not be negative, found -7"},
         {replaced("7 1 1 1.909", "0 1 1 1.909"), "line 12: atom id 0: LAMMPS atom ids start at 1"},
         {replaced("9 2 0.79", "9 1.7 0.79"), "line 13: '1.7' for the atom type is not an integer"},
         {replaced("2 atoms", "2.5 atoms"), "line 3: '2.5' for the atom count is not a whole number"},

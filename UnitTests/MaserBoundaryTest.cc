@@ -1,5 +1,5 @@
-// The maser inflow boundary (Kernel/Boundaries/MaserBoundary.h, Theory/Maser.md eq. (3)): one-way forces
-// across its downstream face, exact copies of every crossing, a first phase that is a plain
+// The maser inflow boundary (Kernel/Boundaries/MaserBoundary.h, Theory/Maser.md eq. (3)): one-way
+// forces across its downstream face, exact copies of every crossing, a first phase that is a plain
 // periodic box to the last bit, totals that survive a restart, and clear errors.
 #include <gtest/gtest.h>
 

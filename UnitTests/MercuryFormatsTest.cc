@@ -142,7 +142,8 @@ TEST(MercuryFormats, FstatAndEneAgreeWithTheDataFrame) {
         EXPECT_GE(c[8], 0);                        // pressed together at rest: repulsive
         EXPECT_LE(c[9], 0.5 * std::abs(c[8]) + 1e-12);  // Coulomb, mu <= 0.5
     }
-    // Two mobile spheres: both sides; a mobile on a fixed sphere: the mobile side only; the floor once.
+    // Two mobile spheres: both sides; a mobile on a fixed sphere: the mobile side only; the floor
+    // once.
     EXPECT_EQ(sides[std::make_pair(0, 1)], 1);
     EXPECT_EQ(sides[std::make_pair(1, 0)], 1);
     EXPECT_EQ(sides[std::make_pair(4, 3)], 1);
@@ -169,9 +170,9 @@ TEST(MercuryFormats, FstatAndEneAgreeWithTheDataFrame) {
     EXPECT_EQ(e[1], 0);
     EXPECT_NEAR(e[2], kinetic, 1e-9 * kinetic);
     EXPECT_NEAR(e[3], rotational, 1e-9 * rotational);
-    // The springs: overlaps 0.02, 0.01 and 0.01, 1/2 kn (4 + 1 + 1) 1e-4 = 62.1003 with kn = 2.07e5,
-    // and the tangential spring of the pair (0, 1), whose contact points move sideways at
-    // |vt| = 0.295: |xi| = |vt| dt = 2.95e-5 after the first step, 2.6e-5 of energy, which the
+    // The springs: overlaps 0.02, 0.01 and 0.01, 1/2 kn (4 + 1 + 1) 1e-4 = 62.1003 with
+    // kn = 2.07e5, and the tangential spring of the pair (0, 1), whose contact points move sideways
+    // at |vt| = 0.295: |xi| = |vt| dt = 2.95e-5 after the first step, 2.6e-5 of energy, which the
     // check sees. The .ene file writes 10 digits: 62.10037022, 5e-9 at most off.
     EXPECT_NEAR(e[4], springEnergy, 1e-8);
     EXPECT_GT(tangentialEnergy, 100 * 1e-8);

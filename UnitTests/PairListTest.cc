@@ -17,8 +17,8 @@ using namespace talus::test;
 
 namespace {
 
-// A small periodic chute (Theory/Chutes.md "The rough base"): a jittered base of fixed spheres and 150 flowing spheres
-// of two sizes dropped on it with random velocities, inclined at 24 degrees.
+// A small periodic chute (Theory/Chutes.md "The rough base"): a jittered base of fixed spheres and
+// 150 flowing spheres of two sizes dropped on it with random velocities, inclined at 24 degrees.
 LinearSpringDashpot chuteLaw() { return LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25).withFriction(0.5); }
 
 void chuteScene(TestScene& s) {
@@ -158,14 +158,15 @@ TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
                 const auto [vj, wj] = halfStepVelocity(j);
                 const Vec3 d = image.nearest(p.position[i] - p.position[j]);
                 const double r = d.norm();
-                Arms arms;
-                const ContactKinematics c = contactKinematics(d / r, p.radius[i] + p.radius[j] - r, p.radius[i],
-                                                              p.radius[j], vi - vj, wi, wj, arms);
+                // The contact point's tangential velocity (Theory/ContactLaws.md eq. (4)): arms
+                // ri - dn/2 and rj - dn/2 along n, vt = v - (v.n) n - (ai wi + aj wj) x n.
+                const Vec3 n = d / r, v = vi - vj;
+                const double halfOverlap = 0.5 * (p.radius[i] + p.radius[j] - r);
+                const Vec3 vt =
+                    v - v.dot(n) * n - ((p.radius[i] - halfOverlap) * wi + (p.radius[j] - halfOverlap) * wj).cross(n);
                 const Vec3& carriedSpring = before.at(key).spring;
-                const double growth =
-                    dt * (c.tangentialVelocity.norm() + c.relativeVelocity.norm() * carriedSpring.norm() / r);
-                const double trialForce =
-                    (kt * carriedSpring + law.tangentialDamping * c.tangentialVelocity).norm() + kt * growth;
+                const double growth = dt * (vt.norm() + v.norm() * carriedSpring.norm() / r);
+                const double trialForce = (kt * carriedSpring + law.tangentialDamping * vt).norm() + kt * growth;
                 const double slip = std::max(0.0, trialForce - law.friction * h.lastNormalForce) / kt;
                 const double bound = (growth + slip) * (1 + 1e-9);
                 EXPECT_LE((h.spring - carriedSpring).norm(), bound)
@@ -315,7 +316,8 @@ TEST(PairList, DriftInOnePassChangesNothing) {
 }
 
 // Pairs put in another order (the wave schedule's: PairList::reorderPairs) keep their histories;
-// an order that is not a permutation, or that moves a face pair among the interior ones, is refused.
+// an order that is not a permutation, or that moves a face pair among the interior ones, is
+// refused.
 TEST(PairList, ReorderedPairsKeepTheirHistories) {
     PairList list;
     const std::uint32_t n = 7;

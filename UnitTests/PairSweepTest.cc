@@ -4,15 +4,15 @@
 // pending contact), in order, with their separations to the bit, whether the lanes (AVX-512, or
 // AVX2 without it) or the scalar loop decide (both forms are swept; without either in the build
 // both are the loop); from the whole list and from a near list.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <limits>
 #include <random>
 
-#include "Contacts/PairSweep.h"
+#include "LaneFormTest.h"
+#include "Contacts/PairSweepLanes.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
 namespace {
 
@@ -29,7 +29,7 @@ bool needsWorkDirectly(const Vec3& d, double ri, double rj, ContactHistory::Stat
 
 }  // namespace
 
-TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
+TALUS_LANE_TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> unit(0, 1);
     const Vec3 box(20, 10, 8);
@@ -100,7 +100,8 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
         }
         EXPECT_EQ(picked, expected) << n << " particles";
         EXPECT_EQ(separations, expectedSeparations) << n << " particles";
-        // A near list (every pair but each third): its sweep in both forms picks the rule's pairs among them.
+        // A near list (every pair but each third): its sweep in both forms picks the rule's pairs
+        // among them.
         NearPairs near;
         for (std::size_t k = 0; k < pairs.size(); ++k)
             if (k % 3 != 1) near.pairs.push_back({pairs[k], static_cast<std::uint32_t>(k)});
@@ -138,7 +139,7 @@ TEST(PairSweep, PicksExactlyThePairsTheRuleNames) {
 // tests it) is picked with the frame as with the speeds, and the frame picks far fewer of the
 // others. The frame is the sampled mean velocity of the mobile spheres, zero without any or if
 // it is not finite.
-TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
+TALUS_LANE_TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> unit(0, 1);
     const Vec3 box(12, 12, 12), common(3, -1, 0.5);
@@ -148,9 +149,9 @@ TEST(PairSweep, FlowFrameKeepsEveryPairThatCanTouch) {
     domain.periodic = {true, true, true};
     const PeriodicImage image(domain);
     const double dt = 2e-3, fluctuation = 0.2;
-    // Spheres in pairs (2m, 2m + 1), the second at a gap of -0.01 to 0.02 from the first in a random
-    // direction: touching, closing within the step, and apart by up to a few steps' travel at
-    // the common speed (3.3 dt = 0.0066).
+    // Spheres in pairs (2m, 2m + 1), the second at a gap of -0.01 to 0.02 from the first in a
+    // random direction: touching, closing within the step, and apart by up to a few steps' travel
+    // at the common speed (3.3 dt = 0.0066).
     ParticleStore p;
     const std::size_t n = 2000;
     p.forEachArray([n](auto& array) { array.resize(n); });

@@ -28,7 +28,8 @@ TEST(Progress, PrintsOnCrossingTheSixtyFourthStepBetweenReports) {
         for (char c : out.str()) n += c == '\n';
         return n;
     };
-    // Waves of 8 from step 3 (a restarted run): reports at 3, 11, 19, ..., never at a multiple of 64.
+    // Waves of 8 from step 3 (a restarted run): reports at 3, 11, 19, ..., never at a multiple of
+    // 64.
     progress.update(0.03, 3, 10);
     for (std::uint64_t k = 11; k <= 131; k += 8) progress.update(0.01 * static_cast<double>(k), k, 10);
     EXPECT_EQ(lines(), 1 + 2u) << out.str();  // the start line, and one each past steps 64 and 128

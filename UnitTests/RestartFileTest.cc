@@ -1,5 +1,6 @@
 // Restart files: writing then reading gives back every field of the run state bitwise, and a
-// restarted run continues exactly as the uninterrupted one (Documentation/Architecture.md "Determinism").
+// restarted run continues exactly as the uninterrupted one (Documentation/Architecture.md
+// "Determinism").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -78,7 +78,8 @@ std::vector<Vec3> startingAngularVelocities() {
 // Eliminating w1^2 and w3^2 with the invariants,
 //     I1 (I3 - I1) w1^2 = (2E I3 - M^2) - I2 (I3 - I2) w2^2,
 //     I3 (I3 - I1) w3^2 = (M^2 - 2E I1) - I2 (I2 - I1) w2^2,
-// and squaring Euler's I2 dw2/dt = (I3 - I1) w3 w1 gives, with w2 = sqrt((2E I3 - M^2) / (I2 (I3 - I2))) s,
+// and squaring Euler's I2 dw2/dt = (I3 - I1) w3 w1 gives, with w2 = sqrt((2E I3 - M^2) / (I2
+// (I3 - I2))) s,
 //     (ds/dt)^2 = lambda^2 (1 - s^2)(1 - k^2 s^2),
 //     lambda^2 = (I3 - I2)(M^2 - 2E I1) / (I1 I2 I3),  k^2 = (I2 - I1)(2E I3 - M^2) / ((I3 - I2)(M^2 - 2E I1)),
 // so s = sn(lambda t, k), whose period is 4 K(k) (K the complete elliptic integral of the first
@@ -304,8 +305,9 @@ TEST(RigidBodyRotation, FollowsEulersEquationsWithSecondOrderError) {
 }
 
 // A constant torque tau along a principal axis of a body at rest: the body turns about that axis
-// with theta = tau t^2 / (2 I_k). Velocity Verlet is exact for a constant acceleration, so the angle
-// is right to round-off, whichever axis (the median axis of the splitting or one of the others).
+// with theta = tau t^2 / (2 I_k). Velocity Verlet is exact for a constant acceleration, so the
+// angle is right to round-off, whichever axis (the median axis of the splitting or one of the
+// others).
 TEST(RigidBodyRotation, ConstantTorqueAboutPrincipalAxisGivesUniformAcceleration) {
     const double dt = 1e-3, tau = 0.3;
     const int steps = 2000;
@@ -328,9 +330,9 @@ TEST(RigidBodyRotation, ConstantTorqueAboutPrincipalAxisGivesUniformAcceleration
 
 // Integrate forward, negate L, integrate as long again: back to the start up to round-off (the
 // splitting is symmetric). Also with an orientation-dependent torque (a heavy top: gravity on a
-// centre of mass offset c in the body, torque (A c) x (0, 0, -1)), since the kicks are symmetric too.
-// The heavy top's motion is sensitive to its initial state, so round-off grows to ~1e-11 - 1e-10
-// there (it depends on the build: -march=native fuses multiply-adds).
+// centre of mass offset c in the body, torque (A c) x (0, 0, -1)), since the kicks are symmetric
+// too. The heavy top's motion is sensitive to its initial state, so round-off grows to
+// ~1e-11 - 1e-10 there (it depends on the build: -march=native fuses multiply-adds).
 TEST(RigidBodyRotation, IsTimeReversible) {
     const double dt = 0.02;
     const Vec3 offset(0.2, -0.1, 0.5);

@@ -1,5 +1,5 @@
-// A sphere on an incline (Theory/Chutes.md eq. (1) axes: x downslope, z normal to the plane, gravity
-// g (sin a, 0, -cos a)) on a flat wall z = 0, driven through talus::Simulation.
+// A sphere on an incline (Theory/Chutes.md eq. (1) axes: x downslope, z normal to the plane,
+// gravity g (sin a, 0, -cos a)) on a flat wall z = 0, driven through talus::Simulation.
 //
 // Rolling without slip: m x'' = m g sin a - F and I w' = F r with x' = r w, I = 2/5 m r^2, give
 // x'' = g sin a / (1 + 2/5) = 5/7 g sin a and need the friction F = 2/7 m g sin a <= mu m g cos a,

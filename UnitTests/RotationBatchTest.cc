@@ -4,20 +4,20 @@
 // mixed set (triaxial bodies, bodies of revolution, sphere-like bodies, a body at rest, one
 // spinning so fast that a piece of its drift leaves the small-angle series) gets the same
 // orientation, angular momentum and angular velocity, with batches full and partly full.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
 
-#include "Particles/RotationBatch.h"
+#include "LaneFormTest.h"
+#include "Particles/RotationBatchLanes.h"
 
 using namespace talus;
+using namespace talus::TALUS_LANES;
 
 namespace {
 double worse(double a, double b) { return std::isnan(b) || b > a ? b : a; }  // (a NaN is the worst)
 }  // namespace
 
-TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
+TALUS_LANE_TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
     std::mt19937_64 random(20261202);
     std::uniform_real_distribution<double> uniform(-1, 1);
     const Vec3 inertias[] = {{1, 2, 3}, {0.25, 0.3125, 0.1625}, {0.25, 0.25, 0.1}, {0.4, 0.7, 0.7}, {0.5, 0.5, 0.5}};
@@ -41,9 +41,9 @@ TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
             RotationBatch batch;
             for (int i = 0; i < n; ++i) {
                 batch.add(static_cast<std::uint32_t>(i), p);
-                if (batch.full()) batch.flush(p, kick, drift);
+                if (batch.full()) flushRotationBatch(batch, p, kick, drift);
             }
-            batch.flush(p, kick, drift);
+            flushRotationBatch(batch, p, kick, drift);
             double worstQ = 0, worstL = 0, worstOmega = 0;
             for (int i = 0; i < n; ++i) {
                 Quat q = before.orientation[i];
@@ -59,9 +59,15 @@ TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
                     EXPECT_EQ(p.angularVelocity[i], Vec3::Zero());
                 }
             }
-            EXPECT_LT(worstQ, 1e-15) << n << " particles, drift " << drift;
-            EXPECT_LT(worstL, 1e-15) << n << " particles, drift " << drift;
-            EXPECT_LT(worstOmega, 1e-15) << n << " particles, drift " << drift;
+            // The one-particle calls are inline functions of the kernel that the compiler keeps out
+            // of line, and the program links them from a baseline object (no fused multiply-add),
+            // while the batch here fuses in the avx2 and avx512 forms: measured 1.4e-14 and 2.1e-14
+            // (q), 1.3e-15 (omega) there, against 1e-15 in the scalar form. A lane mixed up with
+            // another is off by O(1).
+            const double tolerance = compiledLaneForm == LaneForm::scalar ? 1e-15 : 1e-13;
+            EXPECT_LT(worstQ, tolerance) << n << " particles, drift " << drift;
+            EXPECT_LT(worstL, tolerance) << n << " particles, drift " << drift;
+            EXPECT_LT(worstOmega, tolerance) << n << " particles, drift " << drift;
         }
     }
 }

@@ -31,6 +31,16 @@ void threeSpheres(SceneSimulation& s) {
     s.scene().addFixedParticle(Vec3(0, 5, 0), 0.5, sp);              // fixed, mass 1
 }
 
+// The first part of a restart test: `driver` runs with steps of 0.01 to `end` and writes
+// NAME.restart (no .vtu frames, no progress lines).
+void runUntil(SceneSimulation& driver, const std::string& name, double end) {
+    driver.settings().name = name;
+    driver.settings().timeStep = 0.01;
+    driver.settings().endTime = end;
+    driver.settings().progressInterval = 1e9;
+    driver.solveOrThrow({"--vtu", "off"});
+}
+
 // Every 0.1 over (0, 1] with steps of 0.01: 10 samples, one at each multiple of 0.1 (to within
 // half a step: the time is a sum of steps), none at t = 0.
 struct ClockDriver : SceneSimulation {
@@ -57,11 +67,7 @@ TEST(SamplingClock, OncePerIntervalAtTheMultiples) {
 TEST(SamplingClock, KeptAcrossARestart) {
     ClockDriver first;
     first.setup = threeSpheres;
-    first.settings().name = "clock_restart";
-    first.settings().timeStep = 0.01;
-    first.settings().endTime = 0.55;
-    first.settings().progressInterval = 1e9;
-    first.solveOrThrow({"--vtu", "off"});
+    runUntil(first, "clock_restart", 0.55);
     ASSERT_EQ(first.sampled.size(), 5u);
     ClockDriver restarted;
     restarted.solveOrThrow({"--restart", "clock_restart.restart", "--end-time", "0.55", "--files", "off"});
@@ -144,11 +150,7 @@ struct EventDriver : SceneSimulation {
 
 TEST(TimedEvents, RunOnceAndNotAgainAfterARestart) {
     EventDriver first;
-    first.settings().name = "events_restart";
-    first.settings().timeStep = 0.01;
-    first.settings().endTime = 0.5;
-    first.settings().progressInterval = 1e9;
-    first.solveOrThrow({"--vtu", "off"});
+    runUntil(first, "events_restart", 0.5);
     ASSERT_EQ(first.ranAt.size(), 1u);
     EXPECT_NEAR(first.ranAt[0], 0.25, 0.005);
     EventDriver restarted;

@@ -16,7 +16,8 @@ using namespace talus::test;
 TEST(SettlingPacking, TotalEnergyDecreasesMonotonically) {
     const double collisionTime = 0.005, timeStep = collisionTime / 50, spacing = 1.2, side = 3 * spacing;
     const double smallRadius = 0.4, largeRadius = 0.5;
-    // The lightest pair sets the shortest collision time (Theory/ContactLaws.md eq. (9)-(10) formulas with its m*).
+    // The lightest pair sets the shortest collision time (Theory/ContactLaws.md eq. (9)-(10)
+    // formulas with its m*).
     const double lightestPairMass = 0.5 * sphereMass(smallRadius);
     LinearSpringDashpot law = LinearSpringDashpot::fromCollision(collisionTime, 0.5, lightestPairMass);
     // Frictionless: no tangential spring at all. (With mu = 0 but kt > 0 the Coulomb cap would

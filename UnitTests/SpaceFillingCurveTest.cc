@@ -13,7 +13,8 @@ using namespace talus;
 
 namespace {
 
-// The key bit by bit, as the definition reads: bit b of x goes to bit 3b, of y to 3b+1, of z to 3b+2.
+// The key bit by bit, as the definition reads: bit b of x goes to bit 3b, of y to 3b+1, of z to
+// 3b+2.
 std::uint64_t mortonKeyBitByBit(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
     std::uint64_t key = 0;
     for (int b = 0; b < 21; ++b) {

@@ -1,4 +1,5 @@
-// Species table: collision helpers of Theory/ContactLaws.md eq. (10)-(12) invert each other, mixing and validation.
+// Species table: collision helpers of Theory/ContactLaws.md eq. (10)-(12) invert each other, mixing
+// and validation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +8,8 @@
 
 using namespace talus;
 
-// kn, gn from (tc, e, m) must give back tc and e through the forward formulas of Theory/ContactLaws.md eq. (10)-(11).
+// kn, gn from (tc, e, m) must give back tc and e through the forward formulas of
+// Theory/ContactLaws.md eq. (10)-(11).
 TEST(LinearSpringDashpot, CollisionHelpersInvertEachOther) {
     for (double e : {0.1, 0.5, 0.88, 1.0}) {
         const double tc = 0.005, m = 0.37;
@@ -19,7 +21,8 @@ TEST(LinearSpringDashpot, CollisionHelpersInvertEachOther) {
     }
 }
 
-// The thesis's table 3.C.1: kn = 2e5, gn = 25 between two unit masses (m* = 1/2) gives tc = 4.97e-3, e = 0.883.
+// The thesis's table 3.C.1: kn = 2e5, gn = 25 between two unit masses (m* = 1/2) gives
+// tc = 4.97e-3, e = 0.883.
 TEST(LinearSpringDashpot, SeedTableParameters) {
     LinearSpringDashpot law{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
     EXPECT_NEAR(law.collisionTime(0.5), 4.97e-3, 0.005e-3);
@@ -54,9 +57,10 @@ TEST(SpeciesTable, RejectsBadParametersByName) {
     EXPECT_THROW(table.validate(), Error);  // two kinds of law in one simulation
 }
 
-// Theory/ContactLaws.md "Bidisperse mixtures" bidisperse rule on the thesis's table 3.C.1 mixture (dL = 1, dS = 2^(-1/3), density 6/pi,
-// so mL = 1, mS = 1/2): every pair type rebounds with the same e, and tc/sqrt(d) is the same for
-// LL, SS and LS (d = (dL + dS)/2), each with its own reduced mass.
+// Theory/ContactLaws.md "Bidisperse mixtures" bidisperse rule on the thesis's table 3.C.1 mixture
+// (dL = 1, dS = 2^(-1/3), density 6/pi, so mL = 1, mS = 1/2): every pair type rebounds with the
+// same e, and tc/sqrt(d) is the same for LL, SS and LS (d = (dL + dS)/2), each with its own reduced
+// mass.
 #include "Species/BidisperseRule.h"
 
 TEST(BidisperseRule, SameRestitutionAndScaledCollisionTimes) {

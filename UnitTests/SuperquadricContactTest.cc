@@ -20,7 +20,8 @@ TEST(SuperquadricContact, SpheresGiveTheSpherePathsGeometry) {
         const Vec3 xj = xi + distance * direction;
         const SuperquadricContact c = findSuperquadricContact({&a, xi, Ri}, {&b, xj, Rj});
         ASSERT_TRUE(c.converged && c.touching);
-        // Theory/ContactLaws.md eq. (1)-(3): dn = ri + rj - rij, n from j to i, contact point at the middle of the overlap.
+        // Theory/ContactLaws.md eq. (1)-(3): dn = ri + rj - rij, n from j to i, contact point at
+        // the middle of the overlap.
         const double overlap = 0.8 - distance;
         EXPECT_NEAR(c.overlap, overlap, 1e-12);
         EXPECT_LT((c.normal + direction).norm(), 1e-12);

@@ -99,7 +99,8 @@ TEST(SuperquadricSimulation, ElasticEllipsoidBouncingOnAPlaneConservesEnergy) {
 
 TEST(SuperquadricSimulation, CentralEllipsoidCollisionAlongAPrincipalAxisHasTheLawsRestitution) {
     // Along the long axis, the normal stays on the line of centres and nothing turns: the linear
-    // law's restitution of Theory/ContactLaws.md eq. (10)-(11), here stepped plainly (O(dt) error, so dt = tc/1000).
+    // law's restitution of Theory/ContactLaws.md eq. (10)-(11), here stepped plainly (O(dt) error,
+    // so dt = tc/1000).
     for (double e : {0.5, 0.88}) {
         SceneSimulation s;
         const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.2);
@@ -153,8 +154,9 @@ TEST(SuperquadricSimulation, HertzianTipToTipCollisionUsesTheTipsCurvature) {
     // Two prolate spheroids (a = 0.5, b = c = 0.25) meet tip to tip along their long axes. Both
     // principal curvatures at a tip are a/b^2, so each tip is a sphere of radius b^2/a = 0.125
     // there and R* = 0.0625: the elastic Hertz duration tc = 2 (2/5) B(2/5, 1/2) dmax / v with
-    // dmax = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5) (Hertz theory, as HeadOnCollision checks for spheres).
-    // Slow enough that dmax is 1.6% of the tip radius, where the tip is still the paraboloid Hertz assumes.
+    // dmax = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5) (Hertz theory, as HeadOnCollision checks for
+    // spheres). Slow enough that dmax is 1.6% of the tip radius, where the tip is still the
+    // paraboloid Hertz assumes.
     const Superquadric shape = Superquadric::ellipsoid(0.5, 0.25, 0.25);
     const double mass = 6 / pi * shape.volume(), reducedMass = mass / 2, speed = 0.2;  // approach speed
     HertzMindlin law;

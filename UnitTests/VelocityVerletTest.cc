@@ -1,18 +1,19 @@
-// The passes over the particles' coordinates (Particles/VelocityVerlet.h, Domain::wrap): with
-// AVX-512 they take eight particles at a time in lanes (Math/EightParticleLanes.h) and the last
-// few one by one. Both must give the same results to the bit, whichever path a particle takes:
-// here each pass over all particles is compared with the same pass called for one particle at a
-// time (which is always the loop), on particles with fixed ones among them, negative zeros and
-// coordinates outside the periodic box. Without AVX-512 in the build both are the loop.
-#include <gtest/gtest.h>
-
+// The passes over the particles' coordinates (Particles/VelocityVerlet.h, Domain::wrap) in each
+// lane form (LaneFormTest.h): with AVX-512 they take eight particles at a time in lanes, with
+// AVX2 four (the same loop over Math/Lanes.h for both widths), and the last few one by one. Both must give the same results to the bit, whichever path a particle takes: here each
+// pass over all particles is compared with the same pass called for one particle at a time
+// (which is always the loop), on particles with fixed ones among them, negative zeros and
+// coordinates outside the periodic box. (The scalar form has only the loop: not compared.)
 #include <cstring>
 
 #include "Boundaries/Domain.h"
+#include "LaneFormTest.h"
 #include "Particles/VelocityVerlet.h"
+#include "Particles/VelocityVerletLanes.h"
 #include "TestHelpers.h"
 
 using namespace talus;
+namespace form = talus::TALUS_LANES;
 
 namespace {
 
@@ -25,19 +26,20 @@ ParticleStore someParticles() {
     return p;
 }
 
-bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+[[maybe_unused]] bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
 }  // namespace
 
-TEST(VelocityVerlet, KickAndDriftInLanesEqualTheLoopToTheBit) {
+#ifdef TALUS_LANE_FORM_HAS_LANES
+TALUS_LANE_TEST(VelocityVerlet, KickAndDriftInLanesEqualTheLoopToTheBit) {
     ParticleStore all = someParticles(), oneByOne = someParticles();
     halfKickAndDrift(all, count, 0.37, 0.61);
     for (std::size_t i = 0; i < count; ++i) {
-        detail::kickAndDriftMobile(oneByOne.position[i].data(), oneByOne.velocity[i].data(), oneByOne.force[i].data(),
+        form::detail::kickAndDriftMobile(oneByOne.position[i].data(), oneByOne.velocity[i].data(), oneByOne.force[i].data(),
                                    &oneByOne.invMass[i], &oneByOne.fixed[i], 1, 0.37, 0.61);
-        detail::advanceMobile(oneByOne.angularVelocity[i].data(), oneByOne.torque[i].data(), &oneByOne.invInertia[i],
+        form::detail::advanceMobile(oneByOne.angularVelocity[i].data(), oneByOne.torque[i].data(), &oneByOne.invInertia[i],
                               &oneByOne.fixed[i], 1, 0.37);
     }
     EXPECT_TRUE(sameBits(all.position, oneByOne.position));
@@ -53,17 +55,19 @@ TEST(VelocityVerlet, KickAndDriftInLanesEqualTheLoopToTheBit) {
 
     halfKick(all, count, 0.29);
     for (std::size_t i = 0; i < count; ++i) {
-        detail::advanceMobile(oneByOne.velocity[i].data(), oneByOne.force[i].data(), &oneByOne.invMass[i],
+        form::detail::advanceMobile(oneByOne.velocity[i].data(), oneByOne.force[i].data(), &oneByOne.invMass[i],
                               &oneByOne.fixed[i], 1, 0.29);
-        detail::advanceMobile(oneByOne.angularVelocity[i].data(), oneByOne.torque[i].data(), &oneByOne.invInertia[i],
+        form::detail::advanceMobile(oneByOne.angularVelocity[i].data(), oneByOne.torque[i].data(), &oneByOne.invInertia[i],
                               &oneByOne.fixed[i], 1, 0.29);
     }
     EXPECT_TRUE(sameBits(all.velocity, oneByOne.velocity));
     EXPECT_TRUE(sameBits(all.angularVelocity, oneByOne.angularVelocity));
 }
 
+#endif
+
 // Gravity m g on the mobile particles, +0 on the fixed ones, no torque: written out directly.
-TEST(VelocityVerlet, ForcesStartFromGravityOnTheMobileParticles) {
+TALUS_LANE_TEST(VelocityVerlet, ForcesStartFromGravityOnTheMobileParticles) {
     ParticleStore p = someParticles();
     const Vec3 gravity(0.4067366430758002, -0.0, -0.9135454576426009);
     startForcesWithGravity(p, gravity);
@@ -75,7 +79,8 @@ TEST(VelocityVerlet, ForcesStartFromGravityOnTheMobileParticles) {
     }
 }
 
-TEST(VelocityVerlet, WrapInLanesEqualsTheParticleByParticleWrap) {
+#ifdef TALUS_LANE_FORM_HAS_LANES
+TALUS_LANE_TEST(VelocityVerlet, WrapInLanesEqualsTheParticleByParticleWrap) {
     Domain domain;
     domain.lo = Vec3(-1, -0.5, -3);
     domain.hi = Vec3(1, 0.5, 3);
@@ -96,3 +101,4 @@ TEST(VelocityVerlet, WrapInLanesEqualsTheParticleByParticleWrap) {
     EXPECT_EQ(p.position[17].x(), -1);
     EXPECT_EQ(p.position[17].z(), 9);
 }
+#endif

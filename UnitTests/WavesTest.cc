@@ -19,9 +19,10 @@ using namespace talus::test;
 
 namespace {
 
-// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)", Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of
-// the peers (the settled bed or the developed flow, 20 x 10, base spheres fixed) copied twice
-// along y, 24 degrees, on a flat wall just below the base; one linear law for all pairs.
+// The benchmark's chute (Theory/Chutes.md "The calibration chute (periodic)",
+// Drivers/Benchmarks/PeriodicChuteBenchmark): a start file of the peers (the settled bed or the
+// developed flow, 20 x 10, base spheres fixed) copied twice along y, 24 degrees, on a flat wall
+// just below the base; one linear law for all pairs.
 void benchmarkChute(TestScene& s, const std::string& file) {
     const LammpsData bed = readLammpsData(std::string(TALUS_SHARED_DIR) + "/peers/data/" + file);
     const Vec3 size = bed.hi - bed.lo;
@@ -215,8 +216,8 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
     EXPECT_EQ(slotsThatDiffer(overNear, overAll), 0u) << "particles whose state differs between the lists";
 }
 
-// Strips eight columns wide per step of the wave unless a width is asked for (TimeSkewing.md
-// "Using it": waves of 8 were measured fastest in strips of 64-128 columns, slower in 32-50).
+// Strips eight columns wide per step of the wave unless a width is asked for (why that width:
+// Documentation/TimeSkewing.md, "Strip width").
 TEST(Waves, StripsFollowTheStepsUnlessAWidthIsGiven) {
     TestScene s;
     s.settings().stepper.setWaves(8);

@@ -1,6 +1,6 @@
 // The model of LayoutProbe (Drivers/Benchmarks/LayoutProbe.cc): its chute bed, a pair of spheres,
-// its contact history and force, and the particle data in the two layouts it compares. Any scene with the
-// particle count `n` and positions `x` (3 n) can be loaded into either layout.
+// its contact history and force, and the particle data in the two layouts it compares. Any scene
+// with the particle count `n` and positions `x` (3 n) can be loaded into either layout.
 #pragma once
 
 #include <cmath>

@@ -1,8 +1,9 @@
 // How the memory bandwidth of one core depends on the number of arrays a loop reads at once
-// (Documentation/CacheCliff.md). A structure of arrays makes a pass that
-// needs k quantities per particle read k arrays side by side, and on some machines the bandwidth
-// falls with k while the same bytes in one array of k-value records do not (measurements:
-// Documentation/Performance/History.md). It measures both on the machine at hand, so that a layout decision rests on numbers from it.
+// (Documentation/CacheCliff.md). A structure of arrays makes a pass that needs k quantities per
+// particle read k arrays side by side, and on some machines the bandwidth falls with k while the
+// same bytes in one array of k-value records do not (measurements: Documentation/CacheCliff.md,
+// "Why"). It measures both on the machine at hand, so that a layout decision rests on numbers
+// from it.
 //
 //   MemoryStreams [megabytes per array, default 16] [repeats, default 3]
 //
@@ -59,7 +60,8 @@ int main(int argc, char** argv) {
         std::printf("%7d %22.2f %26.2f %8.2f\n", k, bytes / separate * 1e-9, bytes / interleaved * 1e-9,
                     separate / interleaved);
     }
-    // (Every element is 1: the sums are known, and printing them keeps the loops from being dropped.)
+    // (Every element is 1: the sums are known, and printing them keeps the loops from being
+    // dropped.)
     const std::uint64_t expected = static_cast<std::uint64_t>(repeats) * 2 * n * (1 + 2 + 4 + 8 + 12 + 16 + 24 + 32);
     std::printf("MemoryStreams: %s (sum %llu)\n", check == expected ? "done" : "WRONG SUM",
                 static_cast<unsigned long long>(check));

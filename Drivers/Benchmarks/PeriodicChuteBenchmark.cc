@@ -1,5 +1,6 @@
-// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of Theory/Chutes.md eq. (2)-(4) as the
-// peer codes run it (shared/peers/README.md, scenes B and C), timed from a LAMMPS start file.
+// Benchmark (Documentation/Performance.md): the periodic bidisperse chute of
+// Theory/Chutes.md eq. (2)-(4) as the peer codes run it (shared/peers/README.md, scenes B and C),
+// timed from a LAMMPS start file.
 //
 // A rough base of fixed spheres (type 1, d = 1) carries 1000 flowing spheres of d = 1 (type 2) and
 // 2000 of d = 0.79 (type 3), density 6/pi, in a box periodic in x (20) and y (10), inclined at 24
@@ -108,11 +109,12 @@ public:
     void actionsAfterSolve() override {
         // The peak of the memory the run allocated: the peak resident set less the pages of files
         // and shared memory (code and libraries paged in as the run goes, MPI's segments: a large
-        // part of the resident growth of a small scene; they only grow, so the end's are their peak) and less the
-        // allocations before the set-up.
+        // part of the resident growth of a small scene; they only grow, so the end's are their
+        // peak) and less the allocations before the set-up.
         const double allocated =
             memoryBytes("VmHWM") - memoryBytes("RssFile") - memoryBytes("RssShmem") - baselineMemory_;
-        // What each process counts for itself (its memory, contacts, listed pairs), and the particles.
+        // What each process counts for itself (its memory, contacts, listed pairs), and the
+        // particles.
         const std::vector<double> sums = sumOverScene(*this, {allocated, double(contactSummary().contacts),
             double(state().pairList.pairs.size()), double(state().pairList.interiorPairs)});
         const double particleCount = totalsOver(*this, allParticles()).count;

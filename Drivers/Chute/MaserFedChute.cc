@@ -1,21 +1,21 @@
-// A long bidisperse chute fed by a maser: the chapter-4 setup of Theory/Chutes.md eq. (5)-(6) and Theory/Maser.md.
-//
-// Methods. Spheres of mean diameter 1 and size ratio S = dL/dS (--size-ratio, default 1.5; dL = 2S/(1+S),
-// dS = 2/(1+S)), equal volumes of each size, density 6/pi, flow down a chute inclined at 23 degrees, periodic
-// across (width 6), on a disordered rough base of fixed spheres of diameter 1 (--base-diameter). Contacts are
-// linear spring-dashpots, kt = 2/7 kn, gt = gn, with e = 0.88 and tc = 0.005 for every pair type, or with
-// --contact-law table-3C1 the law of the thesis's chapter-3 simulations (MaserChutePairLaws.h). dt = 1e-4.
-// Phase 1: the maser, a periodic box [0, 20] (--maser-length), holds the spheres for an inflow height h
-// (--inflow-height, default 6: a solids volume of 0.6 h 20 6), mixed or, with --segregated-start 1, small
-// under large, and develops a flow. It is sampled every time unit; once its kinetic energy and mass flux have
-// been on a plateau for --window samples (trend below --tolerance of the mean) and t >= --earliest-activation,
-// or at --latest-activation at the latest, the maser is activated. Phase 2: the base is copied downstream to
-// x = 20 + L (--chute-length, default 100; the thesis's full scale is 2000), every sphere leaving the box is
-// copied into the chute, and spheres past the end are deleted; a run restarted after activation with a larger
-// --chute-length extends the chute. NAME.series records every sample: the maser's state, the inflow
-// (crossings, mass per size), the chute's contents, what left it and the front. At the end the run checks mass
-// conservation to the particle (created = in the chute + deleted) and compares the inflow's composition with
-// the maser's.
+// A long bidisperse chute fed by a maser: the chapter-4 setup of Theory/Chutes.md eq. (5)-(6) and
+// Theory/Maser.md. Methods. Spheres of mean diameter 1 and size ratio S = dL/dS (--size-ratio,
+// default 1.5; dL = 2S/(1+S), dS = 2/(1+S)), equal volumes of each size, density 6/pi, flow down a
+// chute inclined at 23 degrees, periodic across (width 6), on a disordered rough base of fixed
+// spheres of diameter 1 (--base-diameter). Contacts are linear spring-dashpots, kt = 2/7 kn,
+// gt = gn, with e = 0.88 and tc = 0.005 for every pair type, or with --contact-law table-3C1 the
+// law of the thesis's chapter-3 simulations (MaserChutePairLaws.h). dt = 1e-4. Phase 1: the maser,
+// a periodic box [0, 20] (--maser-length), holds the spheres for an inflow height h
+// (--inflow-height, default 6: a solids volume of 0.6 h 20 6), mixed or, with --segregated-start 1,
+// small under large, and develops a flow. It is sampled every time unit; once its kinetic energy
+// and mass flux have been on a plateau for --window samples (trend below --tolerance of the mean)
+// and t >= --earliest-activation, or at --latest-activation at the latest, the maser is activated.
+// Phase 2: the base is copied downstream to x = 20 + L (--chute-length, default 100; the thesis's
+// full scale is 2000), every sphere leaving the box is copied into the chute, and spheres past the
+// end are deleted; a run restarted after activation with a larger --chute-length extends the chute.
+// NAME.series records every sample: the maser, the inflow (crossings, mass per size), the chute's
+// contents, what left it, the front. At the end the run checks mass conservation to the particle
+// (created = in the chute + deleted) and the inflow's composition against the maser's.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -90,9 +90,9 @@ public:
         plateau_.reset(static_cast<std::size_t>(window), tolerance);
     }
 
-    // A run restarted after activation with a longer --chute-length: the base is copied on to the new end, the
-    // outlet and the domain move there (what left stays counted as deleted). A chute is not shortened: the spheres
-    // past a new outlet would vanish uncounted as outflow of a chute they never reached the end of.
+    // Restarted after activation with a longer --chute-length: the base is copied on to the new
+    // end, outlet and domain move there (what left stays deleted). A chute is not shortened: the
+    // spheres past a new outlet would vanish uncounted as outflow of a chute they never left.
     void actionsBeforeTimeStep() override {
         const double oldEnd = outlet.point().x(), end = maserLength + chuteLength;
         if (activatedAt_ < 0 || end == oldEnd) return;
@@ -106,7 +106,7 @@ public:
 
     void actionsAfterTimeStep() override {
         outlet.apply(*this);
-        // m vx dt of the maser's spheres, per size: over the box length, the mass that should cross its face.
+        // m vx dt of the maser's spheres per size: over the box length, the mass crossing its face.
         const ParticleQuantity momentum = [](const ParticleStore& p, std::size_t i) { return p.mass[i] * p.velocity[i].x(); };
         if (activatedAt_ >= 0)
             for (std::size_t k : {0, 1}) carried_.addStepIntegral(k, ofSpecies(k == 0 ? maserLarge_ : maserSmall_), momentum);
@@ -127,7 +127,8 @@ public:
             say(*this, "%s: maser flow not steady by t = %g (--latest-activation): activating it anyway\n", settings().name.c_str(), time());
         else
             return;
-        // Phase 2, with --chute-length as it is now (a maser saved before activation feeds chutes of any length).
+        // Phase 2 with --chute-length as it is now (a maser saved before activation feeds any
+        // chute).
         const double end = maserLength + chuteLength;
         outlet.setPlane(Vec3::UnitX(), Vec3(end, 0, 0));
         maser.activate(*this, end);
@@ -137,10 +138,11 @@ public:
             maserLength, maser.seeded());
     }
 
-    // Created = in the chute + deleted, to the particle; the maser keeps its spheres. The counts must agree
-    // exactly; the masses are the same terms summed in another order, so they agree to the rounding of a sum
-    // of `created` terms (Math/SummationRounding.h). Then the inflow's composition: the small spheres' share
-    // of the created mass, against that of the mass the maser's flow carried through its face (m vx dt / L).
+    // Created = in the chute + deleted, to the particle; the maser keeps its spheres. The counts
+    // must agree exactly; the masses are the same terms summed in another order, so they agree to
+    // the rounding of a sum of `created` terms (Math/SummationRounding.h). Then the inflow's
+    // composition: the small spheres' share of the created mass, against that of the mass the
+    // maser's flow carried through its face (m vx dt / L).
     void actionsAfterSolve() override {
         if (activatedAt_ < 0) return say(*this, "%s: the maser was not activated by t = %g\n", settings().name.c_str(), time());
         const Census c = census();

@@ -1,18 +1,19 @@
-// The periodic calibration chute of Theory/Chutes.md eq. (2)-(4) with the mixture of the thesis's table 3.C.1.
+// The periodic calibration chute of Theory/Chutes.md eq. (2)-(4) with the mixture of the thesis's
+// table 3.C.1.
 //
 // Methods. A chute inclined at 24 degrees, periodic in x (length 20) and y (width 10), has a
 // disordered rough base of fixed spheres of diameter 1 (--base-diameter). 1000 large spheres
-// (d = 1) and 2000 small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random above it and
-// flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with Coulomb
-// friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same e and
-// tc ~ sqrt(d) for every pair type (Theory/ContactLaws.md "Bidisperse mixtures"), kt = 2/7 kn, gt = gn, friction 0.5 (LL),
-// 0.25 (SS), 0.375 (LS); the base is of the large material. dt = 1e-4.
-// Every time unit the run samples the kinetic energy and the mass flux; once both have been on
-// a plateau for the last 200 samples (their trend over them below 2% of their mean) the flow
-// is steady, and from then on the run averages depth profiles and the flow's mean velocity,
-// height and flux, written at the end with their standard errors (NAME.profile, NAME.steady).
-// Every sample is also appended to NAME.series.
-// (The statistics are the driver's own: a restarted run starts them afresh.)
+// (d = 1) and 2000 small ones (d = 2^(-1/3), half the volume) of density 6/pi are placed at random
+// above it and flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with
+// Coulomb friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same
+// e and tc ~ sqrt(d) for every pair type (Theory/ContactLaws.md "Bidisperse mixtures"), kt = 2/7
+// kn, gt = gn, friction 0.5 (LL), 0.25 (SS), 0.375 (LS); the base is of the large material.
+// dt = 1e-4. Every time unit the run samples the kinetic energy and the mass flux; once both have
+// been on a plateau for the last 200 samples (their trend over them below 2% of their mean) the
+// flow is steady, and from then on the run averages depth profiles and the flow's mean velocity,
+// height and flux, written at the end with their standard errors (NAME.profile, NAME.steady). Every
+// sample is also appended to NAME.series. (The statistics are the driver's own: a restarted run
+// starts them afresh.)
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -55,7 +56,8 @@ public:
         require(large >= 0 && small >= 0 && large + small > 0, "--large and --small: at least one sphere");
         setChuteAngle(angle);
         setChuteGeometry({.length = length, .width = width, .height = 60, .periodicEnds = true});
-        // The thesis's table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the others.
+        // The thesis's table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the
+        // others.
         const LinearSpringDashpot largeLaw{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
         const double density = 6 / pi;
         largeSpecies_ = scene().addSpecies("large", density, largeLaw);

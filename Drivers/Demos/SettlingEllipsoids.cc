@@ -2,16 +2,16 @@
 // settling in a box (issue 6; Theory/Superquadrics.md).
 //
 // Methods. N prolate ellipsoids of semi-axes a = 0.5 and b = c = a/aspect (--aspect, default 2),
-// density 6/pi, start on a loose lattice at random orientations with small random velocities in a square box
-// with a floor and four side walls, and settle under gravity g = 1. The linear spring-dashpot
-// law has tc = 0.005 and e = 0.5 for two ellipsoids (its stiffness and damping from their
-// reduced mass), kt = 2/7 kn and sliding friction 0.5; contacts are found by the exact stage of
-// Theory/Superquadrics.md eq. (5)-(8) (Contacts/SuperquadricContact.h) and the ellipsoids turn as rigid bodies
-// (Particles/RigidBodyRotation.h). With --blockiness e < 1 the particles are superquadric blocks
-// of the same semi-axes (e1 = e2 = e). The .ene file shows the kinetic energy decaying to rest;
-// ParaView shows the .pvd file with the ShapeTensor glyphs (Documentation/FileFormats/vtu.md).
-// --spheres 1 runs the same scene with spheres of the same volume, for the cost comparison of
-// Documentation/Superquadrics/Superquadrics.md.
+// density 6/pi, start on a loose lattice at random orientations with small random velocities in a
+// square box with a floor and four side walls, and settle under gravity g = 1. The linear
+// spring-dashpot law has tc = 0.005 and e = 0.5 for two ellipsoids (its stiffness and damping from
+// their reduced mass), kt = 2/7 kn and sliding friction 0.5; contacts are found by the exact stage
+// of Theory/Superquadrics.md eq. (5)-(8) (Contacts/SuperquadricContact.h) and the ellipsoids turn
+// as rigid bodies (Particles/RigidBodyRotation.h). With --blockiness e < 1 the particles are
+// superquadric blocks of the same semi-axes (e1 = e2 = e). The .ene file shows the kinetic energy
+// decaying to rest; ParaView shows the .pvd file with the ShapeTensor glyphs
+// (Documentation/FileFormats/vtu.md). --spheres 1 runs the same scene with spheres of the same
+// volume, for the cost comparison of Documentation/Superquadrics/Superquadrics.md.
 #include <cmath>
 #include <random>
 

@@ -1,5 +1,6 @@
 // Demo 2 (Documentation/Tutorials/TwoParticleCollision.md): a head-on collision of two spheres,
-// compared with the analytic restitution coefficient and collision time of Theory/ContactLaws.md eq. (10)-(11).
+// compared with the analytic restitution coefficient and collision time of Theory/ContactLaws.md
+// eq. (10)-(11).
 //
 // Two unit-mass spheres (d = 1, density 6/pi) approach each other at relative speed 1 with no
 // gravity. The linear spring-dashpot law is set from the wanted collision time tc and
@@ -47,7 +48,8 @@ public:
         if (gap < 0 && !touching_) touching_ = true;
         if (gap >= 0 && touching_ && !separated_) {
             separated_ = true;
-            // The overlap -gap fell from previousGap_ to gap within this step: linear interpolation.
+            // The overlap -gap fell from previousGap_ to gap within this step: linear
+            // interpolation.
             const double fraction = -previousGap_ / (gap - previousGap_);
             contactEnd_ = time() - settings().timeStep * (1 - fraction);
         }

@@ -6,70 +6,41 @@
 #include <numbers>
 #include <vector>
 
+#include "Fields/CoarseGrainer.h"
+#include "Fields/EvaluationPoints.h"
+
 namespace talus::drum {
-
-namespace {
-
-// Theory/CoarseGraining.md eq. (2): the 2-D Lucy polynomial, normalised to 1 over the disc of radius w.
-double lucy2d(double distance, double width) {
-    const double s = distance / width;
-    if (s >= 1) return 0;
-    return 5 / (std::numbers::pi * width * width) * (1 - s * s * (6 - s * (8 - 3 * s)));
-}
-
-}  // namespace
 
 MixingIndices mixingIndices(const ParticleStore& p, std::size_t sphereSpecies, double extent, int cells,
                             double width) {
-    const double h = 2 * extent / cells;
-    const auto centre = [&](int k) { return -extent + (k + 0.5) * h; };
-    std::vector<double> rho(static_cast<std::size_t>(cells) * cells, 0.0), rhoS(rho.size(), 0.0);
+    cg::ParticleFrame bed;
+    std::size_t speciesCount = sphereSpecies + 1;
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.fixed[i]) continue;
-        const double x = p.position[i].x(), z = p.position[i].z();
-        // Only the cells within the kernel's support.
-        const int x0 = std::max(0, static_cast<int>(std::floor((x - width + extent) / h)));
-        const int x1 = std::min(cells - 1, static_cast<int>(std::floor((x + width + extent) / h)));
-        const int z0 = std::max(0, static_cast<int>(std::floor((z - width + extent) / h)));
-        const int z1 = std::min(cells - 1, static_cast<int>(std::floor((z + width + extent) / h)));
-        for (int a = x0; a <= x1; ++a)
-            for (int c = z0; c <= z1; ++c) {
-                const double w = p.mass[i] * lucy2d(std::hypot(centre(a) - x, centre(c) - z), width);
-                const std::size_t cell = static_cast<std::size_t>(a) * cells + c;
-                rho[cell] += w;
-                if (p.species[i] == sphereSpecies) rhoS[cell] += w;
-            }
+        const Vec3& x = p.position[i];
+        const Vec3& v = p.velocity[i];
+        bed.position.push_back({x.x(), x.y(), x.z()});
+        bed.velocity.push_back({v.x(), v.y(), v.z()});
+        bed.radius.push_back(p.radius[i]);
+        bed.species.push_back(static_cast<int>(p.species[i]));
+        bed.mass.push_back(p.mass[i]);
+        speciesCount = std::max<std::size_t>(speciesCount, p.species[i] + 1);
     }
-    double mass = 0, sphereMass = 0, entropy = 0, momentX = 0, momentZ = 0;
-    for (int a = 0; a < cells; ++a)
-        for (int c = 0; c < cells; ++c) {
-            const std::size_t cell = static_cast<std::size_t>(a) * cells + c;
-            if (!(rho[cell] > 0)) continue;
-            const double phi = std::clamp(rhoS[cell] / rho[cell], 0.0, 1.0);
-            double m = 0;  // 0 ln 0 = 0
-            if (phi > 0) m += phi * std::log(phi);
-            if (phi < 1) m += (1 - phi) * std::log1p(-phi);
-            entropy += rho[cell] * m;
-            mass += rho[cell];
-            sphereMass += rhoS[cell];
-            momentX += rho[cell] * centre(a);
-            momentZ += rho[cell] * centre(c);
-        }
-    MixingIndices result;
-    if (!(mass > 0)) return result;
-    result.mixing = -entropy / (std::numbers::ln2 * mass);
-    const double cx = momentX / mass, cz = momentZ / mass;
-    double sphereDistance = 0, materialDistance = 0;
-    for (int a = 0; a < cells; ++a)
-        for (int c = 0; c < cells; ++c) {
-            const std::size_t cell = static_cast<std::size_t>(a) * cells + c;
-            const double d = std::hypot(centre(a) - cx, centre(c) - cz);
-            materialDistance += rho[cell] * d;
-            sphereDistance += rhoS[cell] * d;
-        }
-    result.spheresAtCore = sphereMass > 0 && sphereDistance / sphereMass < materialDistance / mass;
-    result.segregation = result.spheresAtCore ? result.mixing - 1 : 1 - result.mixing;
-    return result;
+    if (bed.size() == 0) return {};
+    // Averaged along y over a box of length 1: the length of the drum would scale rho and rho_s
+    // alike, which cancels in M and S.
+    bed.box = {{-extent, 0, -extent}, {extent, 1, extent}};
+    cg::CoarseGrainingSetup setup;
+    setup.coordinates = cg::Coordinates::fromName("XZ");
+    setup.width = cg::WidthMatrix::isotropic(width);
+    setup.speciesDensity.assign(speciesCount, 1.0);  // (unused: the masses are given)
+    cg::CoarseGrainer grainer(setup);
+    grainer.setFrame(bed, nullptr);
+    const std::vector<cg::Vec3> points =
+        cg::gridPoints(setup.coordinates, {cells, 1, cells}, {-extent, 0, -extent}, {extent, 0, extent});
+    std::vector<double> sums;
+    grainer.evaluate(points, sums);
+    return cg::mixingIndices(grainer.layout(), points, sums, setup.coordinates, static_cast<int>(sphereSpecies));
 }
 
 double surfaceAngle(const ParticleStore& p, double binWidth, double centralFraction) {

@@ -1,4 +1,5 @@
-// Measurements of a rotating drum's bed (Theory/RotatingDrum.md eq. (5)-(8)), made by the driver while it runs:
+// Measurements of a rotating drum's bed (Theory/RotatingDrum.md eq. (5)-(8)), made by the driver
+// while it runs:
 //  - the mixing index M and segregation index S of the sphere fraction, coarse-grained in the
 //    drum's cross-section (x, z), averaged along the periodic axis y;
 //  - the dynamic angle of repose of the free surface.
@@ -7,34 +8,32 @@
 
 #include <cstddef>
 
+#include "Fields/MixingIndex.h"
 #include "Particles/ParticleStore.h"
 
 namespace talus::drum {
 
-// Theory/RotatingDrum.md eq. (5)-(8) and Documentation/CoarseGraining.md (the same definitions as talus-cg --mixing):
+// Theory/RotatingDrum.md eq. (5)-(8): the mixing index M and segregation index S of
+// talus-cg's --mixing (Tools/CG/Fields/MixingIndex.h, Theory/CoarseGraining.md eq. (13)-(16)),
+// computed by the coarse-graining library on the bed's mobile particles with their own masses:
 //   rho(p)   = sum_i m_i W(p - x_i) / L,  rho_s(p) the same over the spheres, phi = rho_s / rho,
 //   m        = phi ln phi + (1 - phi) ln(1 - phi),
 //   M        = -sum_p rho m / (ln 2 sum_p rho)   over the cell centres p of a regular grid,
-//   S        = 1 - M if the spheres are at the periphery, M - 1 if at the core: at the core when
-//              their mass-weighted mean distance from the bed's centre of mass (of rho on the
-//              grid) is smaller than that of all the material.
-// W is the 2-D Lucy polynomial of Theory/CoarseGraining.md eq. (2) with cut-off `width`, W = 5/(pi w^2)(1 - 6s^2 + 8s^3
-// - 3s^4), s = |p - x|/w < 1, of the (x, z) distance. The grid is `cells` x `cells` cell centres
-// on [-extent, extent]^2, as talus-cg's `--coordinates XZ -n cells -x -e e -z -e e`.
-struct MixingIndices {
-    double mixing = 0;       // M
-    double segregation = 0;  // S
-    bool spheresAtCore = false;
-};
+//   S        = 1 - M if the spheres are at the periphery, M - 1 if at the core.
+// W is the 2-D Lucy polynomial of Theory/CoarseGraining.md eq. (2) with cut-off `width` in the
+// (x, z) plane, averaged along y; the grid is `cells` x `cells` cell centres on
+// [-extent, extent]^2, as talus-cg's `--coordinates XZ -n cells cells -x -e e -z -e e`.
+// (No mobile particle: M = S = 0.)
+using cg::MixingIndices;
 MixingIndices mixingIndices(const ParticleStore& particles, std::size_t sphereSpecies, double extent, int cells,
                             double width);
 
 // Dynamic angle of repose, in degrees, of the free surface of a bed turning counter-clockwise
 // in the (x, z) plane: the surface rises towards +x. Method: the bed's mobile particles are
 // sorted into columns of width `binWidth` along x; a column's surface particle is the one with the
-// highest centre. A least-squares line z = a + b x is fitted to the surface particles of the columns in
-// the middle `centralFraction` of the bed's x-extent (near the drum wall the surface bends into
-// the wall); the angle is atan(b). NaN with fewer than three columns.
+// highest centre. A least-squares line z = a + b x is fitted to the surface particles of the
+// columns in the middle `centralFraction` of the bed's x-extent (near the drum wall the surface
+// bends into the wall); the angle is atan(b). NaN with fewer than three columns.
 double surfaceAngle(const ParticleStore& particles, double binWidth = 1, double centralFraction = 0.6);
 
 }  // namespace talus::drum

@@ -1,4 +1,4 @@
-// The rotating drum, in the order it happens (methods: RotatingDrum.h, Documentation/Drums/RotatingDrum.md).
+// The rotating drum (methods: RotatingDrum.h, Documentation/Drums/RotatingDrum.md).
 #include "RotatingDrum.h"
 
 #include <algorithm>
@@ -57,7 +57,7 @@ void RotatingDrum::setupInitialConditions() {
     scene().setGravity(Vec3(0, 0, -1));
     scene().setDomain(Vec3(-radius - 1, 0, -radius - 1), Vec3(radius + 1, length, radius + 1));
     scene().setPeriodic(false, true, false);
-    // Theory/RotatingDrum.md eq. (1): equal volumes pi/6, equal density, mass 1; tc and e for two particles (m_ij = 1/2).
+    // Theory/RotatingDrum.md eq. (1): volumes pi/6, one density, mass 1; tc, e for m_ij = 1/2.
     const double density = 1 / particleVolume;
     const auto law = LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5).withFriction(friction);
     scene().addSpecies("spheres", density, law);
@@ -87,8 +87,8 @@ void RotatingDrum::setupInitialConditions() {
     insertRemaining();
 }
 
-// Theory/RotatingDrum.md eq. (2): a flat rough base of length 2 pi r and width L (the chute's disordered layer of
-// d = 0.5, made in a scratch simulation) wrapped onto the cylinder.
+// Theory/RotatingDrum.md eq. (2): a flat rough base of length 2 pi r and width L (the chute's
+// disordered layer of d = 0.5, made in a scratch simulation) wrapped onto the cylinder.
 void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     Chute flat;
     flat.setChuteGeometry({.length = 2 * pi * radius, .width = length, .height = 1, .periodicEnds = true});
@@ -103,10 +103,10 @@ void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     }
 }
 
-// Theory/RotatingDrum.md "Filling" (Boundaries/CylinderFilling.h), spheres and ellipsoids in turn, anywhere in
-// the drum: a particle falls at most 2 r, to v = sqrt(4 r) <= 7.8 for r <= 15, and the contact
-// (e = 0.1) stops it within about half of v sqrt(m_ij/kn), kn = m_ij (pi^2 + ln(e)^2)/tc^2, i.e.
-// 0.05: 16% of the short semi-axis at R = 4. (R = 1: the "ellipsoids" are spheres.)
+// Theory/RotatingDrum.md "Filling" (Boundaries/CylinderFilling.h), spheres and ellipsoids in turn,
+// anywhere in the drum: a particle falls at most 2 r, to v = sqrt(4 r) <= 7.8 for r <= 15, and the
+// contact (e = 0.1) stops it within about half of v sqrt(m_ij/kn), kn = m_ij (pi^2 + ln(e)^2)/tc^2,
+// i.e. 0.05: 16% of the short semi-axis at R = 4. (R = 1: the "ellipsoids" are spheres.)
 int RotatingDrum::insertRemaining() {
     const int ellipsoidShape = aspect > 1 ? static_cast<int>(shape_) : -1;
     const CylinderFilling filling(innerRadius_, length, {{.species = 0, .target = targetCount_ / 2 + targetCount_ % 2},
@@ -123,8 +123,8 @@ int RotatingDrum::insertRemaining() {
 
 void RotatingDrum::startRotation() {
     const double w = angularSpeed();
-    // Theory/RotatingDrum.md eq. (3)-(4): velocity (-w r sin th, 0, w r cos th) at angle th = atan2(Z, X) is the rotation
-    // w x X with w = (0, -w, 0): the angle grows, the bottom moves towards +x.
+    // Theory/RotatingDrum.md eq. (3)-(4): (-w r sin th, 0, w r cos th) at th = atan2(Z, X) is w x X
+    // for w = (0, -w, 0): the angle grows, the bottom moves towards +x.
     scene().motions()[0].angularVelocity = Vec3(0, -w, 0);
     // The wall moves from now on (the time loop sets these velocities from the next step).
     ParticleStore& p = scene().particles();
@@ -149,7 +149,7 @@ void RotatingDrum::checkBed() const {
     });
     requireOnAllRanks(*this, !(farthest >= radius + wallDiameter), "a particle left the drum (distance " + str(farthest) +
                                                                       " from the axis) at t = " + str(time()));
-    // Every particle has mass 1 (Theory/RotatingDrum.md eq. (1)): the bed's mass is the count, to the rounding of the sum.
+    // Every particle has mass 1 (Theory/RotatingDrum.md eq. (1)): the bed's mass is its count.
     const Totals bed = totalsOver(*this);
     requireOnAllRanks(*this, bed.count == particlesInserted() && std::abs(bed.mass - bed.count) <= 1e-12 * bed.count,
                       "the drum holds " + str(bed.count) + " particles of mass " + str(bed.mass) + ", " +
@@ -185,7 +185,7 @@ void RotatingDrum::actionsAfterSolve() {
     const drum::MixingIndices mixing = mixingOf(gatherParticles(*this));
     say(*this, "%s: at t = %g after %.3g rotations: M = %.8f, S = %.8f (spheres at the %s); mean angle of repose "
         "after the first turn %.2f degrees (%d samples); %d of %d particles in the drum\n", settings().name.c_str(), time(),
-        rotations(), mixing.mixing, mixing.segregation, mixing.spheresAtCore ? "core" : "periphery",
+        rotations(), mixing.mixing, mixing.segregation, mixing.speciesAtCore ? "core" : "periphery",
         angleSamples_ > 0 ? angleSum_ / angleSamples_ : NAN, angleSamples_, particlesInserted(), targetCount_);
 }
 

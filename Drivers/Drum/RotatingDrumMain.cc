@@ -1,4 +1,5 @@
-// The rotating drum of Theory/RotatingDrum.md (Documentation/Drums/RotatingDrum.md); the study is RotatingDrum.h.
+// The rotating drum of Theory/RotatingDrum.md (Documentation/Drums/RotatingDrum.md); the study is
+// RotatingDrum.h.
 #include "RotatingDrum.h"
 
 int main(int argc, char** argv) {

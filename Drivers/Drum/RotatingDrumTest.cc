@@ -1,6 +1,6 @@
-// Checks of the rotating-drum driver (Theory/RotatingDrum.md eq. (3)-(4)) on small drums: the wall turns as a rigid body
-// at w, the bed is at rest when it starts, no particle is lost, a single sphere is carried as
-// the mechanics of rolling predicts, and bad flags are named.
+// Checks of the rotating-drum driver (Theory/RotatingDrum.md eq. (3)-(4)) on small drums: the wall
+// turns as a rigid body at w, the bed is at rest when it starts, no particle is lost, a single
+// sphere is carried as the mechanics of rolling predicts, and bad flags are named.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -64,15 +64,15 @@ std::string errorOf(const std::vector<std::string>& flags) {
 //    to 4u theta, theta is w dt to 2.5u theta and the reference w dt n to 2u of itself: under
 //    3u a step for theta = 5e-5 here.
 // After n turning steps, and with the one-off roundings of the measurement (hypot within an ulp
-// at the start and now; atan2 twice and the sums of angles of a turn or less, under 40u): the radius
-// within (5n + 4) u rho, the angle within (3n + 40) u. A worst-case bound: the rounding errors of
-// the steps mostly cancel (measured below), but nothing guarantees that they do. The speed is made
-// anew each step from the position, |w x x| = w rho to a few roundings: within 6u w rho.
-// (The reference angle counts steps, w dt n, instead of w (t - t0): the time is a sum of steps
+// at the start and now; atan2 twice and the sums of angles of a turn or less, under 40u): the
+// radius within (5n + 4) u rho, the angle within (3n + 40) u. A worst-case bound: the rounding
+// errors of the steps mostly cancel (measured below), but nothing guarantees that they do. The
+// speed is made anew each step from the position, |w x x| = w rho to a few roundings: within 6u w
+// rho. (The reference angle counts steps, w dt n, instead of w (t - t0): the time is a sum of steps
 // whose rounding would exceed these bounds; with it the angle erred by 8e-13, now by 1.6e-14.)
 // Measured over the 21000 turning steps: the radius within 7.0e-13 (0.22 of its bound at worst,
-// early in the turn; the bound is 5.2e-11 at the end), the speed within 6e-17 (0.46 of its
-// bound), the angle within 1.6e-14 (0.08).
+// early in the turn; the bound is 5.2e-11 at the end), the speed within 6e-17 (0.46 of its bound),
+// the angle within 1.6e-14 (0.08).
 TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
     constexpr double u = 0x1p-53;  // unit round-off
     CheckedDrum drum;
@@ -99,7 +99,8 @@ TEST(RotatingDrum, WallTurnsRigidlyAtOmegaAndTheBedIsConserved) {
             if (d.step() == 1) wall[p.id[i]] = {rho, angle, x.y()};
             const Start& s = wall.at(p.id[i]);
             ASSERT_EQ(x.y(), s.y);
-            // Theory/RotatingDrum.md eq. (3)-(4): speed w rho along the circle, the angle advanced by w dt a step.
+            // Theory/RotatingDrum.md eq. (3)-(4): speed w rho along the circle, the angle advanced
+            // by w dt a step.
             const double radiusError = std::abs(rho - s.radius), speedError = std::abs(p.velocity[i].norm() - w * rho),
                          angleError = std::abs(std::remainder(angle - s.angle - turned, 2 * pi));
             worstRadius = std::max(worstRadius, radiusError);
@@ -159,7 +160,8 @@ TEST(RotatingDrum, SmoothDrumRollsASphereUpToThePendulumAmplitude) {
     // t_s = 2V / (7 mu g) = 0.11, after the sphere has climbed 1e-3 rad). Measured: 2.7e-4, so
     // the amplitude is checked to 1e-3. The pendulum starts when the slip ends, about t_s / 2
     // late, so half a period after the drum starts the sphere is still about
-    // sin(2 pi (t_s / 2) / T) = 2.6% of the amplitude from the bottom (measured 3.1%): checked to 10%.
+    // sin(2 pi (t_s / 2) / T) = 2.6% of the amplitude from the bottom (measured 3.1%): checked to
+    // 10%.
     CheckedDrum drum;
     const double r = 4, s = 0.5, froude = 0.01;
     drum.afterSetup = [&](CheckedDrum& d) {
@@ -209,6 +211,8 @@ namespace {
 // A bare particle store for the measurements (they read position, mass, species and fixed).
 void addPoint(ParticleStore& p, const Vec3& x, std::uint32_t species, bool fixed = false) {
     p.position.push_back(x);
+    p.velocity.push_back(Vec3::Zero());
+    p.radius.push_back(0.5);
     p.mass.push_back(1);
     p.species.push_back(species);
     p.fixed.push_back(fixed ? 1 : 0);
@@ -233,7 +237,8 @@ TEST(DrumAnalysis, SurfaceAngleOfABedUnderAPlane) {
 }
 
 TEST(DrumAnalysis, MixingIndexOfTwinsAndOfASeparatedCore) {
-    // Twins (a sphere and an ellipsoid at every place): phi = 1/2 wherever there is mass, m = -ln 2, M = 1.
+    // Twins (a sphere and an ellipsoid at every place): phi = 1/2 wherever there is mass,
+    // m = -ln 2, M = 1.
     ParticleStore twins;
     for (int k = 0; k < 20; ++k) {
         const Vec3 x(std::cos(k) * 0.2 * k, 0, std::sin(k) * 0.2 * k - 1);
@@ -244,16 +249,17 @@ TEST(DrumAnalysis, MixingIndexOfTwinsAndOfASeparatedCore) {
     EXPECT_NEAR(mixed.mixing, 1, 1e-12);
     EXPECT_NEAR(std::abs(mixed.segregation), 0, 1e-12);
     // Spheres within 0.5 of the centre, ellipsoids on a ring of radius 4: the kernels (width 1) of
-    // the two kinds never meet, phi is 0 or 1 everywhere, M = 0; the spheres are at the core, S = M - 1 = -1.
+    // the two kinds never meet, phi is 0 or 1 everywhere, M = 0; the spheres are at the core,
+    // S = M - 1 = -1.
     ParticleStore core;
     for (int k = 0; k < 8; ++k) addPoint(core, Vec3(0.5 * std::cos(k * pi / 4), 0, 0.5 * std::sin(k * pi / 4)), 0);
     for (int k = 0; k < 40; ++k) addPoint(core, Vec3(4 * std::cos(k * pi / 20), 0, 4 * std::sin(k * pi / 20)), 1);
     const drum::MixingIndices separated = drum::mixingIndices(core, 0, 6, 48, 1);
     EXPECT_NEAR(separated.mixing, 0, 1e-12);
-    EXPECT_TRUE(separated.spheresAtCore);
+    EXPECT_TRUE(separated.speciesAtCore);
     EXPECT_NEAR(separated.segregation, -1, 1e-12);
     // The same with the kinds swapped: the spheres at the periphery, S = 1 - M = 1.
     const drum::MixingIndices swapped = drum::mixingIndices(core, 1, 6, 48, 1);
-    EXPECT_FALSE(swapped.spheresAtCore);
+    EXPECT_FALSE(swapped.speciesAtCore);
     EXPECT_NEAR(swapped.segregation, 1, 1e-12);
 }

@@ -1,4 +1,5 @@
-// Accuracy, robustness and cost of superquadric contact detection (issue 6, Theory/Superquadrics.md eq. (5)-(8)).
+// Accuracy, robustness and cost of superquadric contact detection (issue 6, Theory/Superquadrics.md
+// eq. (5)-(8)).
 //
 // Methods. For each class of configuration (spheres; ellipsoids of aspect ratio 1-10; blocky
 // shapes with blockiness down to 0.1; blocks with near-parallel flat faces; a block's edge on

@@ -53,7 +53,7 @@ std::size_t DeletionBoundary::apply(Simulation& s) {
         s.scene().removeParticle(i);
     }
     const auto here = static_cast<std::size_t>(removed[0]);
-    s.sumOverRanks(removed);
+    s.ranks().sum(removed);
     count_ += removed[0];
     mass_ += removed[1];
     volume_ += removed[2];

@@ -1,6 +1,7 @@
 // Deletion: removes the mobile particles whose centre has passed a plane, and records what left
-// (the outflow end of an open chute, Theory/Chutes.md "The long chute and the chapter-4 variant"). The plane and the totals are kept in the
-// restart file, so a restarted run goes on counting (Run::keepInRestart).
+// (the outflow end of an open chute, Theory/Chutes.md "The long chute and the chapter-4 variant").
+// The plane and the totals are kept in the restart file, so a restarted run goes on counting
+// (Run::keepInRestart).
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
-// The simulation box: its extent along x, y, z, and which axes are periodic (Theory/Chutes.md eq. (1) uses
-// x and y). Along a periodic axis positions are kept in [lo, hi) and pair separations use the
-// nearest image; along the other axes the extent only frames the output.
+// The simulation box: its extent along x, y, z, and which axes are periodic
+// (Theory/Chutes.md eq. (1) uses x and y). Along a periodic axis positions are kept in [lo, hi) and
+// pair separations use the nearest image; along the other axes the extent only frames the output.
 #pragma once
 
 #include <array>
@@ -9,8 +9,6 @@
 #include <limits>
 #include <vector>
 
-#include "Math/EightParticleLanes.h"
-#include "Math/FourParticleLanes.h"
 #include "Math/Vector.h"
 
 namespace talus {
@@ -66,52 +64,9 @@ struct Domain {
         for (int a = 0; a < 3; ++a)
             if (periodic[a]) wrapCoordinate(x[a], lo[a], hi[a], length(a));
     }
-    // The same for the first n of an array of positions. With AVX-512, eight particles at a
-    // time (four with AVX2 only) are only compared with the box (Math/EightParticleLanes.h,
-    // Math/FourParticleLanes.h), and the few blocks with a particle outside wrapped one by one;
-    // otherwise an axis at a time with the box read once (the compiler cannot keep lo and hi in
-    // registers across stores into a Vec3&).
-    void wrap(Vec3* x, std::size_t n) const {
-        std::size_t first = 0;
-#ifdef TALUS_AVX512_LANES
-        __m512d low[3], high[3];
-        const WrapBounds bounds = wrapBounds();
-        lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
-        lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
-        for (; first + 8 <= n; first += 8) {
-            const double* block = x[first].data();
-            __mmask8 outside = 0;
-            for (int c = 0; c < 3; ++c) {
-                const __m512d coordinates = _mm512_loadu_pd(block + 8 * c);
-                outside |= _mm512_cmp_pd_mask(coordinates, high[c], _CMP_GE_OQ) |
-                           _mm512_cmp_pd_mask(coordinates, low[c], _CMP_LT_OQ);
-            }
-            if (outside) [[unlikely]]
-                for (std::size_t i = first; i < first + 8; ++i) wrap(x[i]);
-        }
-#elif defined(TALUS_AVX2_LANES)
-        __m256d low[3], high[3];
-        const WrapBounds bounds = wrapBounds();
-        lanes::perAxis(bounds.low[0], bounds.low[1], bounds.low[2], low);
-        lanes::perAxis(bounds.high[0], bounds.high[1], bounds.high[2], high);
-        for (; first + 4 <= n; first += 4) {
-            const double* block = x[first].data();
-            __m256d outside = _mm256_setzero_pd();
-            for (int c = 0; c < 3; ++c) {
-                const __m256d coordinates = _mm256_loadu_pd(block + 4 * c);
-                outside = _mm256_or_pd(outside, _mm256_or_pd(_mm256_cmp_pd(coordinates, high[c], _CMP_GE_OQ),
-                                                             _mm256_cmp_pd(coordinates, low[c], _CMP_LT_OQ)));
-            }
-            if (_mm256_movemask_pd(outside)) [[unlikely]]
-                for (std::size_t i = first; i < first + 4; ++i) wrap(x[i]);
-        }
-#endif
-        for (int a = 0; a < 3; ++a) {
-            if (!periodic[a]) continue;
-            const double l = lo[a], h = hi[a], L = length(a);
-            for (std::size_t i = first; i < n; ++i) wrapCoordinate(x[i][a], l, h, L);
-        }
-    }
+    // The same for the first n of an array of positions (in the lanes of the form in use:
+    // Particles/VelocityVerletLanes.h wrapPositions, Math/LaneForm.h).
+    void wrap(Vec3* x, std::size_t n) const;
     static void wrapCoordinate(double& c, double lo, double hi, double L) {
         if (c >= hi) {
             c -= L;

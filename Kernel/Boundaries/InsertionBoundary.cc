@@ -294,8 +294,9 @@ InsertionReport InsertionBoundary::insertAtRate(Simulation& s, double particlesP
 InsertionReport InsertionBoundary::insert(Simulation& s, InsertionReport::Target target, double requested) {
     // Every rank would insert the same particles: insertion during a run on ranks is not done yet
     // (setupInitialConditions runs on every rank before the scene is split, which is fine).
-    require(!s.onRanks(), "insertion boundary: inserting during a run on more than one rank is not supported yet "
-                          "(insert in setupInitialConditions, or run on one rank; Documentation/Parallel.md)");
+    require(!s.ranks().isSplit(),
+            "insertion boundary: inserting during a run on more than one rank is not supported yet "
+            "(insert in setupInitialConditions, or run on one rank; Documentation/Parallel.md)");
     const Domain& domain = s.scene().domain();
     for (std::size_t k = 0; k < distribution_.classes().size(); ++k) {
         const std::size_t species = distribution_.classes()[k].species;

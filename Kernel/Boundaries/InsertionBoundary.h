@@ -1,8 +1,8 @@
 // Insertion: fills a box with spheres drawn from a size distribution at random positions where
-// they overlap nothing (issue 4; Theory/RotatingDrum.md "Filling"). Random sequential addition: each drawn
-// particle gets up to maxAttemptsPerParticle random centres; the first that overlaps no particle
-// (fixed or mobile, nearest periodic image) and no plane wall is taken. When a particle fails
-// every attempt, insertion stops and the report says how far it got, so a region is never
+// they overlap nothing (issue 4; Theory/RotatingDrum.md "Filling"). Random sequential addition:
+// each drawn particle gets up to maxAttemptsPerParticle random centres; the first that overlaps no
+// particle (fixed or mobile, nearest periodic image) and no plane wall is taken. When a particle
+// fails every attempt, insertion stops and the report says how far it got, so a region is never
 // under-filled silently; the caller decides whether that is an error.
 // Documentation/UserGuide/Insertion.md describes the algorithm and its limits.
 #pragma once

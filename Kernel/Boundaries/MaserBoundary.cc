@@ -65,8 +65,8 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
         largest = std::max(largest, 2 * p.radius[i]);
         mobile += !p.fixed[i];
     }
-    mobile = s.sumOverRanks(mobile);
-    largest = s.maxOverRanks(largest);
+    mobile = s.ranks().sum(mobile);
+    largest = s.ranks().max(largest);
     require(mobile > 0, "maser: activated on a box with no particles (no mobile particle of a maser species)");
     require(hi_ - lo_ >= 2 * largest, "maser: the box (length " + str(hi_ - lo_) +
                                           ") must be longer than two diameters of its largest particle (" +
@@ -83,7 +83,7 @@ void MaserBoundary::activate(Simulation& s, double chuteEnd, bool seedChute) {
             seeded[0] += 1;
             seeded[1] += p.mass[copy];
         }
-        s.sumOverRanks(seeded);
+        s.ranks().sum(seeded);
         seeded_ += seeded[0];
         seededMass_ += seeded[1];
     }
@@ -133,7 +133,7 @@ void MaserBoundary::afterDrift(Simulation& s) {
             added[2] += 1;
         }
     }
-    s.sumOverRanks(added);
+    s.ranks().sum(added);
     crossings_ += added[0];
     mass_ += added[1];
     backward_ += added[2];

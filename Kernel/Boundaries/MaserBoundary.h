@@ -1,6 +1,6 @@
-// The maser inflow boundary of Theory/Maser.md (Denissen 2019, app. 3.C.5): a periodic box upstream of an open chute
-// that first develops a flow of its own and then, once activated, feeds a copy of every particle
-// that leaves it through its downstream face into the chute.
+// The maser inflow boundary of Theory/Maser.md (Denissen 2019, app. 3.C.5): a periodic box upstream
+// of an open chute that first develops a flow of its own and then, once activated, feeds a copy of
+// every particle that leaves it through its downstream face into the chute.
 //
 // Phase 1: the box [lo, hi] along x is the whole simulation, periodic in x (the driver sets the
 // domain so); its particles are of the maser species, copies of the chute species

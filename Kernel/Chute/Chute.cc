@@ -128,7 +128,7 @@ double Chute::continueBase(std::size_t from, std::size_t to, double period, doub
         for (int k = 1; x.x() + k * period < xTo; ++k)
             if (x.x() + k * period >= xFrom) scene().addFixedParticle(x + Vec3(k * period, 0, 0), r, to), ++added;
     });
-    return sumOverRanks(added);
+    return ranks().sum(added);
 }
 
 void Chute::insertAtRest(std::size_t count, std::size_t species, double radius, const Vec3& lo, const Vec3& hi,

@@ -1,5 +1,6 @@
-// talus::Chute, the base class of chute-flow drivers (Theory/Chutes.md eq. (1)): x downslope, y across, z normal
-// to the base, gravity g (sin t, 0, -cos t) at inclination t, a rough base of fixed particles.
+// talus::Chute, the base class of chute-flow drivers (Theory/Chutes.md eq. (1)): x downslope, y
+// across, z normal to the base, gravity g (sin t, 0, -cos t) at inclination t, a rough base of
+// fixed particles.
 //
 // A driver sets the geometry and the base in setupInitialConditions():
 //
@@ -44,9 +45,9 @@ public:
     void setChuteGeometry(const ChuteGeometry& geometry);
     const ChuteGeometry& chuteGeometry() const { return geometry_; }
 
-    // The rough base (Theory/Chutes.md "The rough base"), of the given species. For the particle bases also a flat
-    // safety floor half a diameter below the base (nothing should reach it; the peers' scripts
-    // have the same). Returns the number of base particles (0 for a flat base).
+    // The rough base (Theory/Chutes.md "The rough base"), of the given species. For the particle
+    // bases also a flat safety floor half a diameter below the base (nothing should reach it; the
+    // peers' scripts have the same). Returns the number of base particles (0 for a flat base).
     //  - disordered: centres uniform in x and y and within +-roughness diameter/2 of z = 0, placed
     //    one by one without overlap until 100 attempts per unit area in a row fail (random
     //    sequential addition, close to jammed: it covers about 0.57 of the floor), reproducible

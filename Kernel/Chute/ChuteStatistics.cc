@@ -71,7 +71,7 @@ ChuteSnapshot measureChute(const ParticleStore& p, double length, double width, 
 ChuteSnapshot measureChute(const Simulation& s, double length, double width, std::size_t smallSpecies, double xMin,
                            double xMax) {
     std::vector<double> sum = chuteSums(s.scene().particles(), smallSpecies, xMin, xMax);
-    s.sumOverRanks(sum);
+    s.ranks().sum(sum);
     return snapshotOf(sum, length, width, s.time());
 }
 
@@ -136,7 +136,7 @@ void DepthProfile::add(const ParticleStore& p, const Simulation* s) {
         sample[2 * n + k] += p.mass[i];
         sample[3 * n + k] += p.mass[i] * p.velocity[i].x();
     }
-    if (s && s->onRanks()) s->sumOverRanks(sample);
+    if (s && s->ranks().isSplit()) s->ranks().sum(sample);
     std::size_t at = 0;
     for (auto* sums : {&volume_, &smallVolume_, &mass_, &momentum_})
         for (std::size_t k = 0; k < n; ++k) (*sums)[k] += sample[at++];
@@ -159,7 +159,7 @@ void DepthProfile::restore(const std::vector<double>& v) {
 }
 
 void DepthProfile::write(const std::string& path, const Simulation* s) const {
-    if (s && s->rank() != 0) return;
+    if (s && s->ranks().rank() != 0) return;
     replaceFile(path, [&](std::ostream& out) {
         out << "# z volumeFraction vx smallConcentration   (" << samples_ << " samples, slabs of " << bin_ << ")\n";
         const double slab = bin_ * length_ * width_ * static_cast<double>(std::max<std::size_t>(samples_, 1));

@@ -1,7 +1,7 @@
-// What a chute-flow driver measures while it runs (Theory/Chutes.md eq. (7)): bulk quantities of the flowing
-// particles, the plateau of their time series (a steady flow), and depth profiles.
-// These are quick diagnostics for running a study; the coarse-graining tool (Tools/CG) gives
-// the proper continuum fields afterwards.
+// What a chute-flow driver measures while it runs (Theory/Chutes.md eq. (7)): bulk quantities of
+// the flowing particles, the plateau of their time series (a steady flow), and depth profiles.
+// These are quick diagnostics for running a study; the coarse-graining tool (Tools/CG) gives the
+// proper continuum fields afterwards.
 #pragma once
 
 #include <cmath>

@@ -8,8 +8,9 @@
 #include "Contacts/ContactHistory.h"
 #include "Particles/ParticleStore.h"
 #include "Species/LinearSpringDashpot.h"
+#include "Math/LaneNamespace.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 // Contacts inside a lasting contact, gathered in batches of `size` and computed lane by lane in
 // one loop of plain numbers that the compiler vectorises (LinearSpringDashpot::lastingContact):
@@ -76,8 +77,8 @@ struct ContactBatch {
         }
     }
 
-    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2, vt = v - vn n - (ai wi + aj wj) x n)
-    // and the law's lasting-contact step, for every lane.
+    // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2,
+    // vt = v - vn n - (ai wi + aj wj) x n) and the law's lasting-contact step, for every lane.
     [[gnu::noinline]] void compute(double dt) {
         for (int l = 0; l < count; ++l) {
             const double distance = std::sqrt(dx[l] * dx[l] + dy[l] * dy[l] + dz[l] * dz[l]), inverse = 1 / distance;
@@ -109,4 +110,4 @@ struct ContactBatch {
     }
 };
 
-}  // namespace talus
+}  // namespace talus::TALUS_LANES

@@ -9,14 +9,15 @@
 namespace talus {
 
 // What a pair remembers from step to step: whether it touches, the tangential spring of
-// Theory/ContactLaws.md eq. (13), and the normal force it applied at the last step (to tell its own part of the
-// particles' last forces from the rest, ContactKinematics::otherAcceleration). A pair that is apart but will touch within the next step is "approaching"
-// (LinearSpringDashpot::approachForce); it has no spring then, and the same three numbers hold
-// the push applied ahead of the touch, the approach speed and the overlap (minus the gap) then.
-// A pair that stopped touching at this step and applied its separation impulse is "separated"
-// for one step. So a pair that applied a force at the last step is never "apart", and the force
-// loop's sweep, which skips pairs apart and out of reach, always visits it: its lastNormalForce
-// is then either used or cleared, never left stale (ContactForces.h).
+// Theory/ContactLaws.md eq. (13), and the normal force it applied at the last step (to tell its own
+// part of the particles' last forces from the rest, ContactKinematics::otherAcceleration). A pair
+// that is apart but will touch within the next step is "approaching"
+// (LinearSpringDashpot::approachForce); it has no spring then, and the same three numbers hold the
+// push applied ahead of the touch, the approach speed and the overlap (minus the gap) then. A pair
+// that stopped touching at this step and applied its separation impulse is "separated" for one
+// step. So a pair that applied a force at the last step is never "apart", and the force loop's
+// sweep, which skips pairs apart and out of reach, always visits it: its lastNormalForce is then
+// either used or cleared, never left stale (ContactForces.h).
 struct ContactHistory {
     enum State : std::uint8_t { apart = 0, approaching = 1, touching = 2, separated = 3 };
 
@@ -42,9 +43,9 @@ struct ContactHistory {
 // The histories of a list of pairs: the force loop reads the state of every listed pair each
 // step but the spring only of the few that touch or are about to, so the states are kept apart,
 // one byte each; the spring and the last normal force, read and written together, share one
-// 32-byte record (one memory stream instead of two: on the hosts of 2026-12 a pass that reads
-// 16 or more arrays at once gets under half the bandwidth of one that reads a single array of
-// records; Documentation/CacheCliff.md).
+// 32-byte record (one memory stream instead of two: a pass that reads 16 or more arrays at once
+// can get under half the bandwidth of one that reads a single array of records;
+// Documentation/CacheCliff.md).
 class ContactHistories {
 public:
     std::size_t size() const { return states_.size(); }

@@ -1,7 +1,7 @@
 // Lasting contacts of two ellipsoids, gathered in batches and taken one Newton iteration forward
 // lane by lane, in loops of plain numbers that the compiler vectorises: the warm-started exact
-// stage of Theory/Superquadrics.md for the common case, as ContactBatch (ContactBatch.h) does the sphere
-// contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
+// stage of Theory/Superquadrics.md for the common case, as ContactBatch (ContactBatch.h) does the
+// sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
 // residual, normal, the two distances); one at a time, the core cannot overlap it with the next
 // contact's (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
 //
@@ -24,15 +24,17 @@
 #include "Math/Vector.h"
 #include "Species/ContactKinematics.h"
 #include "Species/LinearSpringDashpot.h"
+#include "Math/LaneNamespace.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 struct EllipsoidContactBatch {
     static constexpr int size = 16;
     int count = 0;
     std::uint32_t k[size], i[size], j[size];
     // In: centres (j's periodic image), quadrics Q (symmetric: xx, yy, zz, xy, xz, yz), the warm
-    // start (point, multiplier) and the length that scales the residual (the smaller bounding radius).
+    // start (point, multiplier) and the length that scales the residual (the smaller bounding
+    // radius).
     double cix[size], ciy[size], ciz[size], cjx[size], cjy[size], cjz[size];
     double qi0[size], qi1[size], qi2[size], qi3[size], qi4[size], qi5[size];
     double qj0[size], qj1[size], qj2[size], qj3[size], qj4[size], qj5[size];
@@ -182,7 +184,8 @@ struct EllipsoidContactBatch {
             const Slope J{atStart ? j0.value : j1.value, atStart ? j0.gx : j1.gx, atStart ? j0.gy : j1.gy,
                           atStart ? j0.gz : j1.gz};
             const double gradientLength = atStart ? length0 : length1;
-            // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient of Fi.
+            // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient
+            // of Fi.
             const double inverseLength = 1 / gradientLength;
             const double ux = I.gx * inverseLength, uy = I.gy * inverseLength, uz = I.gz * inverseLength;
             const double di = distance(Qi, I, I.gx, I.gy, I.gz, gradientLength),
@@ -200,4 +203,4 @@ struct EllipsoidContactBatch {
     }
 };
 
-}  // namespace talus
+}  // namespace talus::TALUS_LANES

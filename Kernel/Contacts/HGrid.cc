@@ -29,7 +29,8 @@ void HGrid::buildLevels(const ParticleStore& particles, const Domain& domain, do
             level.cell[a] = level.size;
             if (!domain.periodic[a]) continue;
             const double L = domain.length(a);
-            // Theory/ContactLaws.md eq. (1)-(3) pairs use the nearest image, which is unique only if no pair spans half the box.
+            // Theory/ContactLaws.md eq. (1)-(3) pairs use the nearest image, which is unique only
+            // if no pair spans half the box.
             require(L >= 2 * maxDiameter, "periodic length along " + std::string(1, "xyz"[a]) + " (" +
                                               std::to_string(L) + ") must be at least twice the largest interaction "
                                               "diameter 2r + skin (" + std::to_string(maxDiameter) + ")");
@@ -179,7 +180,8 @@ void HGrid::findPairs(const ParticleStore& particles, const Domain& domain, doub
         // Each pair of one level once, as (i, j) with the partner j before i in the particle
         // order: the force loop goes through the list in the order of i, so a partner's data was
         // read shortly before, for its own pairs, and is still in the caches (with j after i it
-        // is not yet: at 10^6 particles the step took 4.5-6.5% longer; Documentation/Performance.md).
+        // is not yet: at 10^6 particles the step took 4.5-6.5% longer;
+        // Documentation/Performance.md).
         auto consider = [&](std::uint32_t j, bool ownLevel) {
             if (ownLevel && j >= i) return;
             if (fixedI && particles.fixed[j]) return;

@@ -2,11 +2,11 @@
 //
 // Pairs closer than ri + rj + reach are listed by the HGrid, where reach = skin + 2 vmax dt
 // looks one step ahead (vmax the largest particle speed); the list stays valid while no particle
-// can have moved reach/2 by the end of the next step (Documentation/Architecture.md "Data layout"). So every pair
-// that can touch within the next step is listed, even with skin 0.
-// Each listed pair and each particle-wall candidate carries its tangential spring; a rebuild
-// carries the springs of touching pairs over by the particles' global ids, so rebuilding
-// (or reordering particles) never loses history.
+// can have moved reach/2 by the end of the next step (Documentation/Architecture.md "Data layout").
+// So every pair that can touch within the next step is listed, even with skin 0. Each listed pair
+// and each particle-wall candidate carries its tangential spring; a rebuild carries the springs of
+// touching pairs over by the particles' global ids, so rebuilding (or reordering particles) never
+// loses history.
 #pragma once
 
 #include <cstdint>
@@ -32,8 +32,8 @@ struct WallCandidate {
 // A particle as the force loop's sweep reads it (Contacts/PairSweep.h): its position and its
 // radius as the sweep tests it (grown by the step's reach), in one 32-byte record: one memory
 // stream and half a cache line per particle, where two arrays would be two streams and up to
-// three lines (a pass that reads many arrays side by side gets a fraction of the bandwidth of
-// one reading records on our hosts; Documentation/CacheCliff.md).
+// three lines (a pass that reads many arrays side by side can get a fraction of the bandwidth
+// of one reading records: Documentation/CacheCliff.md).
 struct SweepPoint {
     double x, y, z, radius;
 };
@@ -121,9 +121,9 @@ public:
     bool sweepInFlowFrame = defaultSweepInFlowFrame();
     static bool defaultSweepInFlowFrame();
     // The near list of the force loop, made with nearSkinFraction x skin (0: the whole list is
-    // swept every step), and its scratch points (positions, radii grown by half that skin). 0.15 was the fastest of 0.06-0.4 on the
-    // benchmark chute (Documentation/Performance.md); the environment variable
-    // TALUS_NEAR_SKIN_FRACTION sets another (for measurements).
+    // swept every step), and its scratch points (positions, radii grown by half that skin). 0.15
+    // was the fastest of 0.06-0.4 on the benchmark chute (Documentation/Performance.md); the
+    // environment variable TALUS_NEAR_SKIN_FRACTION sets another (for measurements).
     NearPairs near;
     double nearSkinFraction = defaultNearSkinFraction();
     static double defaultNearSkinFraction();
@@ -169,12 +169,12 @@ public:
     void noteJumped(std::uint32_t slot, const Vec3& jump);
     const std::vector<std::uint32_t>& noted() const { return noted_; }
     // Lists the pairs, one-way pairs and wall candidates of the noted particles by the rule of a
-    // build, applied to the reference positions (a new particle's is where it was added), and carries
-    // their histories over by ids. The list then holds every pair that can touch before the next
-    // build, as a build would. It searches all particles for each noted one, so beyond
+    // build, applied to the reference positions (a new particle's is where it was added), and
+    // carries their histories over by ids. The list then holds every pair that can touch before the
+    // next build, as a build would. It searches all particles for each noted one, so beyond
     // maxRelisted noted particles, for a noted particle within reach of a ghost (on ranks, the
-    // caller also checks that no other rank needs it as a ghost), or with pairs oriented by ids
-    // it forces a rebuild instead.
+    // caller also checks that no other rank needs it as a ghost), or with pairs oriented by ids it
+    // forces a rebuild instead.
     void relist(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls);
     static constexpr std::size_t defaultMaxRelisted = 64;
     std::size_t maxRelisted = defaultMaxRelisted;  // 0: every change to the particles forces a rebuild (--relist off)

@@ -1,11 +1,11 @@
-// The members of the force loop (ContactForceLoop, Contacts/ContactForces.h) for pairs and wall
+// The members of the force loop (ContactForceLoopInLanes, Contacts/ContactForceLoop.h) for pairs and wall
 // contacts with superquadric particles (Theory/Superquadrics.md), which only scenes with shapes reach: kept
-// apart from the sphere path. Included at the end of ContactForces.h.
+// apart from the sphere path. Included at the end of ContactForceLoop.h.
 #pragma once
 
-#include "Contacts/ContactForces.h"
+#include "Contacts/ContactForceLoop.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 // A pair with a superquadric: the exact contact (warm-started), then the law on the
 // kinematics of the contact point, with the branch vectors from the centres to it. The ends
@@ -19,7 +19,7 @@ namespace talus {
 // bounding spheres are apart: the bound is then never stale.
 // (The separation comes as three numbers, in registers: a Vec3 would go through memory.)
 template <class Law>
-void ContactForceLoop<Law>::shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
+void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                        double dy, double dz) {
     // (The bound is lowered in place: a skipped pair reads and writes nothing else.)
     if (list.history.state(k) == ContactHistory::approaching && list.history.gapBoundOf(k) > 0) {
@@ -49,7 +49,7 @@ void ContactForceLoop<Law>::shapedPair(PairList& list, std::size_t k, std::uint3
 
 // (Shaped particles only; two spheres have the closed form of findSuperquadricContact.)
 template <class Law>
-bool ContactForceLoop<Law>::isEllipsoid(std::uint32_t i) const {
+bool ContactForceLoopInLanes<Law>::isEllipsoid(std::uint32_t i) const {
     return p_.shape[i] >= 0 && (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isEllipsoid();
 }
 
@@ -57,7 +57,7 @@ bool ContactForceLoop<Law>::isEllipsoid(std::uint32_t i) const {
 // scalar path, from the same warm start. With the linear law the finished lanes' contact
 // step is batched too, except on output steps, where the scalar path records each contact.
 template <class Law>
-void ContactForceLoop<Law>::flushEllipsoids(PairList& list) {
+void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
     EllipsoidContactBatch& b = ellipsoids_;
     if (b.count == 0) return;
     b.compute(SuperquadricContactSettings{}.tolerance);
@@ -98,7 +98,7 @@ void ContactForceLoop<Law>::flushEllipsoids(PairList& list) {
 
 // Lane l's contact, computed in the lanes, applied (as shapedPairWith and shapedContact would).
 template <class Law>
-void ContactForceLoop<Law>::laneContact(PairList& list, int l, ContactHistory history) {
+void ContactForceLoopInLanes<Law>::laneContact(PairList& list, int l, ContactHistory history) {
     const EllipsoidContactBatch& b = ellipsoids_;
     const std::uint32_t i = b.i[l], j = b.j[l];
     history.warmPoint = Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i];
@@ -124,7 +124,7 @@ void ContactForceLoop<Law>::laneContact(PairList& list, int l, ContactHistory hi
 // Pair k with its exact geometry g: the warm start kept, the contact's force (or none), the
 // gap bound of a pair apart.
 template <class Law>
-void ContactForceLoop<Law>::shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j,
+void ContactForceLoopInLanes<Law>::shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j,
                                            const Vec3& xj, ContactHistory history, const ShapedContactGeometry& g) {
     if (!g.converged) detectionFailed(i, j);
     history.warmPoint = g.solution.point;
@@ -141,7 +141,7 @@ void ContactForceLoop<Law>::shapedPairWith(PairList& list, std::size_t k, std::u
 }
 
 template <class Law>
-void ContactForceLoop<Law>::shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,
+void ContactForceLoopInLanes<Law>::shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,
                                        const std::vector<PrescribedMotion>& motions) {
     ContactHistory history = list.wallHistory.get(k);
     const ShapedContactGeometry g = shapedWallGeometry(p_, list.shapedFrameScratch, i, wall, Law::usesEffectiveRadius);
@@ -155,7 +155,7 @@ void ContactForceLoop<Law>::shapedWall(PairList& list, std::size_t k, std::uint3
 }
 
 template <class Law>
-void ContactForceLoop<Law>::shapedContact(ContactHistory& history, const ShapedContactGeometry& g, std::uint32_t i,
+void ContactForceLoopInLanes<Law>::shapedContact(ContactHistory& history, const ShapedContactGeometry& g, std::uint32_t i,
                                           std::int64_t j, const Vec3& xj, const Vec3& vj, const Vec3& wj,
                                           double invMassJ, const Law& law, double size) {
     if (!g.touching) {
@@ -206,4 +206,4 @@ void ContactForceLoop<Law>::shapedContact(ContactHistory& history, const ShapedC
                        f.tangentialForce, law.elasticEnergy(c, history.spring)});
 }
 
-}  // namespace talus
+}  // namespace talus::TALUS_LANES

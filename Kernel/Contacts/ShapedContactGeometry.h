@@ -1,5 +1,6 @@
 // Where and how deep a non-spherical particle touches another particle or a plane wall: the
-// geometry the force loop needs (Contacts/ContactForces.h), from the exact stage of Theory/Superquadrics.md eq. (5)-(8).
+// geometry the force loop needs (Contacts/ContactForces.h), from the exact stage of
+// Theory/Superquadrics.md eq. (5)-(8).
 #pragma once
 
 #include <algorithm>
@@ -26,8 +27,9 @@ struct ShapedContactGeometry {
 };
 
 // The radius of curvature 1/|K| of a body's surface at x, from the mean curvature
-// K = (g^T H g - |g|^2 tr H) / (2 |g|^3) of its shape function (Theory/Superquadrics.md eq. (12)), capped at ten bounding
-// radii so that a flat face does not make a Hertzian contact infinitely stiff.
+// K = (g^T H g - |g|^2 tr H) / (2 |g|^3) of its shape function (Theory/Superquadrics.md eq. (12)),
+// capped at ten bounding radii so that a flat face does not make a Hertzian contact infinitely
+// stiff.
 inline double curvatureRadius(const PlacedSuperquadric& body, const Vec3& x) {
     const ShapeValue v = body.at(x);
     const double g = v.gradient.norm();
@@ -92,8 +94,9 @@ inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const st
     return g;
 }
 
-// Particle i against a wall: its point deepest into the wall (or the drum's tangent plane) is the one furthest along the
-// wall's outward direction -N (Superquadric::furthestPointAlong, in the body frame).
+// Particle i against a wall: its point deepest into the wall (or the drum's tangent plane) is the
+// one furthest along the wall's outward direction -N (Superquadric::furthestPointAlong, in the body
+// frame).
 inline ShapedContactGeometry shapedWallGeometry(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
                                                 std::size_t i, const Wall& wall, bool withRadius) {
     const PlacedSuperquadric& body = frames[i];

@@ -239,7 +239,8 @@ SuperquadricContact findContact(const PlacedSuperquadric& i, const PlacedSuperqu
     }
     if (i.shape->isSphere() && j.shape->isSphere()) {
         // Closed form: Fi = Fj on the line of centres where it divides them as ri : rj, and
-        // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (Theory/ContactLaws.md eq. (1)-(3)).
+        // mu^2 = rj/ri there; the overlap is the sphere path's ri + rj - rij (Theory/ContactLaws.md
+        // eq. (1)-(3)).
         contact.converged = true;
         contact.touching = true;
         const double distance = std::sqrt(distance2);
@@ -279,7 +280,8 @@ SuperquadricContact findContact(const PlacedSuperquadric& i, const PlacedSuperqu
         // Fi = Fj = t > 0 at Xc: f + 1 is homogeneous of degree 2/e1, so the level set F = t is the
         // body scaled by (1 + t)^(e1/2) about its centre, and the two scaled bodies touch at Xc. A
         // convex body holding the ball of its smallest semi-axis r grows by at least (scale - 1) r
-        // in every direction when scaled, so the bodies are at least (si - 1) ri + (sj - 1) rj apart.
+        // in every direction when scaled, so the bodies are at least (si - 1) ri + (sj - 1) rj
+        // apart.
         const double t = atI.value;
         auto growth = [t](const PlacedSuperquadric& body) {
             const double e1 = body.shape->e1();

@@ -1,5 +1,5 @@
-// Contact detection between two convex superquadrics, the exact stage of Theory/Superquadrics.md eq. (5)-(8) (after the
-// neighbour grid and the bounding spheres).
+// Contact detection between two convex superquadrics, the exact stage of Theory/Superquadrics.md
+// eq. (5)-(8) (after the neighbour grid and the bounding spheres).
 //
 // The contact point Xc minimises Fi + Fj subject to Fi = Fj (F the lab-frame shape functions),
 // found by a damped Newton solve of
@@ -33,7 +33,8 @@ struct PlacedSuperquadric {
         if (s->isEllipsoid()) quadric = r * s->semiAxes().cwiseInverse().cwiseAbs2().asDiagonal() * r.transpose();
     }
 
-    // F, grad F and the Hessian in the lab frame (Theory/Superquadrics.md eq. (2): A grad f, A H A^T).
+    // F, grad F and the Hessian in the lab frame (Theory/Superquadrics.md eq. (2): A grad f, A H
+    // A^T).
     ShapeValue at(const Vec3& x) const;
     double valueAt(const Vec3& x) const {
         if (shape->isEllipsoid()) {

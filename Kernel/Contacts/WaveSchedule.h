@@ -70,8 +70,8 @@ public:
     // at level t) goes along with strip q's wave, seamLag rows behind it, and the seam between
     // the last strip and the first (one strip: its own edges) along with the last strip's: so
     // that a seam's cells are advanced while strip q's side of them is still cached, instead of
-    // in a wave of their own after all strips (which read them from memory again: at 10^5
-    // particles in strips of 24 columns 54 against 58 ns per particle-step; TimeSkewing.md).
+    // in a wave of their own after all strips, which read them from memory again (slower by
+    // 6% at 10^5 particles: Documentation/TimeSkewing.md, "The wave").
     template <class Visit>
     void forEachRegion(Visit visit) const {
         constexpr int seamLag = 1;  // (a seam region needs strip q's rows beside it at its level)

@@ -1,8 +1,7 @@
-// Strict reading of numbers from the words of input files and flags, shared by every reader of
-// the kernel: the whole word must be the number (no trailing text), reals must be finite (no
-// nan, no inf, no overflow), integers must be whole decimal numbers in range ("1.7" and "1e30"
-// are not integers). Readers say where a word comes from with an InputPlace, so that every
-// failure is a talus::Error "<file description> line <L>: <problem>".
+// Strict reading of numbers from the words of input files and flags, for every reader of the
+// kernel. The conversions and the wording of their problems live in the formats library
+// (Formats/Numbers.h), shared with talus-cg; here readers say where a word comes from with an
+// InputPlace, so that every failure is a talus::Error "<file description> line <L>: <problem>".
 #pragma once
 
 #include <cstdint>
@@ -10,14 +9,13 @@
 #include <string>
 #include <string_view>
 
+#include "Formats/Numbers.h"
+
 namespace talus {
 
-// The conversions alone: false when `word` is not such a number (value is then unspecified).
-// A leading '+' is allowed, and hexadecimal reals (0x1p-3); subnormal reals read exactly, reals
-// below them read as 0.
-bool toFiniteReal(std::string_view word, double& value);
-bool toInteger(std::string_view word, std::int64_t& value);
-bool toCount(std::string_view word, std::uint64_t& value);  // no sign but '+': "-0" is not a count
+using formats::toCount;
+using formats::toFiniteReal;
+using formats::toInteger;
 
 // A line of an input file, for messages ("restart file run.restart line 12: ..."), and the
 // conversions that name it, and what the word was due to be, when a word is not that number.

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <numeric>
 
+#include "Formats/DataFormat.h"
+#include "Formats/FstatFormat.h"
+
 namespace talus {
 
 namespace {
@@ -26,8 +29,7 @@ std::vector<std::uint32_t> slotsById(const ParticleStore& particles) {
     return order;
 }
 
-// .data: header "N t xmin ymin zmin xmax ymax zmax " then per particle
-// "x y z vx vy vz r thx thy thz wx wy wz species" (positions 15 digits, the rest 10, as MercuryDPM).
+// .data: the header and a line per particle in the columns of Formats/DataFormat.h.
 // Sphere orientation is not tracked, so their three angle columns are 0; a non-spherical
 // particle's are the roll, pitch and yaw angles (Tait-Bryan Z-Y-X) of its orientation, as
 // MercuryDPM writes them, and r is its bounding radius.
@@ -35,7 +37,7 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
                      const Spill& spill) {
     const ParticleStore& p = state.particles;
     const Domain& d = state.domain;
-    append(out, "%zu %.10g %.10g %.10g %.10g %.10g %.10g %.10g \n", p.size(), state.time, d.lo.x(), d.lo.y(), d.lo.z(),
+    append(out, formats::data::headerLine, p.size(), state.time, d.lo.x(), d.lo.y(), d.lo.z(),
            d.hi.x(), d.hi.y(), d.hi.z());
     for (std::uint32_t i : order) {
         const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
@@ -46,14 +48,15 @@ void appendDataFrame(std::string& out, const SimulationState& state, const std::
             th.y() = std::asin(std::clamp(2 * (q.w() * q.y() - q.z() * q.x()), -1.0, 1.0));
             th.z() = std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
         }
-        append(out, "%.15g %.15g %.15g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %u\n", x.x(), x.y(),
-               x.z(), v.x(), v.y(), v.z(), p.radius[i], th.x(), th.y(), th.z(), w.x(), w.y(), w.z(), p.species[i]);
+        // (in the order of formats::data::Column)
+        append(out, formats::data::particleLine, x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), p.radius[i], th.x(), th.y(),
+               th.z(), w.x(), w.y(), w.z(), p.species[i]);
         if (spill && out.size() >= spillBytes) spill(out);
     }
 }
 
-// .fstat: three header lines, then "t i j cx cy cz dn dt fn |ft| nx ny nz tx ty tz" per contact
-// side; i, j are global ids, walls are j = -(wall + 1). A pair is written from both sides
+// .fstat: three header lines, then a line per contact side in the columns of
+// Formats/FstatFormat.h; i, j are global ids, walls are j = -(wall + 1). A pair is written from both sides
 // (n and t negated on the second) except from the side of a fixed particle; a wall contact
 // once, with n and t pointing into the wall as MercuryDPM writes them.
 void appendFstatFrame(std::string& out, const SimulationState& state, const ContactRecordList& contacts,
@@ -66,15 +69,15 @@ void appendFstatFrame(std::string& out, const SimulationState& state, const Cont
         rmin = *lo;
         rmax = *hi;
     }
-    append(out, "# %.10g 1\n# %.10g %.10g %.10g %.10g %.10g %.10g\n# %.10g %.10g 0 0 0 0\n", state.time, d.lo.x(),
-           d.lo.y(), d.lo.z(), d.hi.x(), d.hi.y(), d.hi.z(), rmin, rmax);
+    append(out, formats::fstat::header, state.time, formats::fstat::contactPointMarker, d.lo.x(), d.lo.y(), d.lo.z(),
+           d.hi.x(), d.hi.y(), d.hi.z(), rmin, rmax);
     auto line = [&](std::uint64_t i, long long j, const ContactRecord& c, double sign) {
         const double ft = c.tangentialForce.norm();
         const Vec3 t = ft > 0 ? Vec3(c.tangentialForce / ft) : Vec3::Zero();
         const Vec3 n = sign * c.normal, tt = sign * t;
-        append(out, "%.10g %llu %lld %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n",
-               state.time, static_cast<unsigned long long>(i), j, c.contactPoint.x(), c.contactPoint.y(),
-               c.contactPoint.z(), c.overlap, -c.springLength, c.normalForce, ft, n.x(), n.y(), n.z(), tt.x(), tt.y(),
+        // (in the order of formats::fstat::Column)
+        append(out, formats::fstat::contactLine, state.time, static_cast<unsigned long long>(i), j, c.contactPoint.x(),
+               c.contactPoint.y(), c.contactPoint.z(), c.overlap, -c.springLength, c.normalForce, ft, n.x(), n.y(), n.z(), tt.x(), tt.y(),
                tt.z());
     };
     for (const ContactRecord& c : contacts) {

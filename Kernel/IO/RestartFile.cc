@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "Error.h"
+#include "Formats/RestartFormat.h"
 #include "IO/DurableFile.h"
 #include "IO/InputNumbers.h"
 #include "Particles/RigidBodyRotation.h"
@@ -17,9 +18,10 @@ namespace talus {
 
 namespace {
 
-// 2: the run line ends with the reorder flag; 3: kept values; 4: the one-way periodic box
-// (maser) and its pairs; 7: the summation line (the order of the force sums)
-constexpr int formatVersion = 7;
+// The keys, the version and the fields talus-cg reads by position: Formats/RestartFormat.h.
+namespace key = formats::restart::key;
+constexpr int formatVersion = formats::restart::version;
+constexpr const char* item = formats::restart::itemIndent;
 
 class Writer {
 public:
@@ -168,49 +170,50 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
     replaceFile(path, [&s](std::ostream& out) {
         Writer w(out);
         const RunSettings& c = s.settings;
-        w.key("Talus restart") << std::uint64_t(formatVersion); w.end();
-        w.key("name") << c.name; w.end();
-        w.key("run") << c.timeStep << c.endTime << c.outputInterval << c.skin << c.cellSizeRatio << c.progressInterval
+        w.key(formats::restart::magicWords[0]) << std::string(formats::restart::magicWords[1])
+                                               << std::uint64_t(formatVersion); w.end();
+        w.key(key::name) << c.name; w.end();
+        w.key(key::run) << c.timeStep << c.endTime << c.outputInterval << c.skin << c.cellSizeRatio << c.progressInterval
                      << c.maxOverlapFraction << c.maxInitialOverlapFraction << std::uint64_t(c.reorderParticles); w.end();
-        w.key("files") << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
+        w.key(key::files) << std::uint64_t(c.writeData) << std::uint64_t(c.writeFstat) << std::uint64_t(c.writeEne)
                        << std::uint64_t(c.writeVtu) << std::uint64_t(c.writeRestart); w.end();
-        w.key("summation") << std::uint64_t(c.idOrderedSums) << std::uint64_t(c.relist)
+        w.key(key::summation) << std::uint64_t(c.idOrderedSums) << std::uint64_t(c.relist)
                            << std::uint64_t(c.stepper.waveSteps) << std::uint64_t(c.stepper.waveStripColumns); w.end();
-        w.key("time") << s.time << s.step; w.end();
-        w.key("gravity") << s.gravity; w.end();
-        w.key("domain") << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
+        w.key(key::time) << s.time << s.step; w.end();
+        w.key(key::gravity) << s.gravity; w.end();
+        w.key(key::domain) << s.domain.lo << s.domain.hi << std::uint64_t(s.domain.periodic[0])
                         << std::uint64_t(s.domain.periodic[1]) << std::uint64_t(s.domain.periodic[2]); w.end();
         const OneWayPeriodicBox& box = s.domain.oneWay;
-        w.key("oneway") << std::uint64_t(box.active) << box.lo << box.hi << std::uint64_t(box.outflowSpecies.size());
+        w.key(key::oneWay) << std::uint64_t(box.active) << box.lo << box.hi << std::uint64_t(box.outflowSpecies.size());
         for (std::int32_t species : box.outflowSpecies) w << std::int64_t(species);
         w.end();
-        w.key("species") << std::uint64_t(s.species.size()); w.end();
+        w.key(key::species) << std::uint64_t(s.species.size()); w.end();
         for (std::size_t k = 0; k < s.species.size(); ++k) {
-            w.key("  ") << s.species[k].name << s.species[k].density;
+            w.key(item) << s.species[k].name << s.species[k].density;
             writeLaw(w, s.species[k].law);
             w.end();
         }
-        w.key("pairs") << std::uint64_t(s.species.explicitPairs().size()); w.end();
+        w.key(key::pairs) << std::uint64_t(s.species.explicitPairs().size()); w.end();
         for (const auto& [key, law] : s.species.explicitPairs()) {
-            w.key("  ") << std::uint64_t(key.first) << std::uint64_t(key.second);
+            w.key(item) << std::uint64_t(key.first) << std::uint64_t(key.second);
             writeLaw(w, law);
             w.end();
         }
-        w.key("motions") << std::uint64_t(s.motions.size()); w.end();
-        for (const PrescribedMotion& m : s.motions) { w.key("  ") << m.velocity << m.angularVelocity << m.centre; w.end(); }
-        w.key("walls") << std::uint64_t(s.walls.size()); w.end();
+        w.key(key::motions) << std::uint64_t(s.motions.size()); w.end();
+        for (const PrescribedMotion& m : s.motions) { w.key(item) << m.velocity << m.angularVelocity << m.centre; w.end(); }
+        w.key(key::walls) << std::uint64_t(s.walls.size()); w.end();
         for (const Wall& wall : s.walls) {
-            w.key("  ") << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion)
+            w.key(item) << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion)
                         << wall.radius;
             w.end();
         }
         const ParticleStore& p = s.particles;
         const bool shapes = p.hasShapes();
-        w.key("shapes") << std::uint64_t(shapes) << std::uint64_t(s.shapes.size()); w.end();
-        for (const Superquadric& q : s.shapes) { w.key("  ") << q.semiAxes() << q.e1() << q.e2(); w.end(); }
-        w.key("particles") << std::uint64_t(p.size()) << s.nextId; w.end();
+        w.key(key::shapes) << std::uint64_t(shapes) << std::uint64_t(s.shapes.size()); w.end();
+        for (const Superquadric& q : s.shapes) { w.key(item) << q.semiAxes() << q.e1() << q.e2(); w.end(); }
+        w.key(key::particles) << std::uint64_t(p.size()) << s.nextId; w.end();
         for (std::size_t i = 0; i < p.size(); ++i) {
-            w.key("  ") << p.id[i] << p.position[i] << p.velocity[i] << p.angularVelocity[i] << p.force[i] << p.torque[i]
+            w.key(item) << p.id[i] << p.position[i] << p.velocity[i] << p.angularVelocity[i] << p.force[i] << p.torque[i]
                         << p.radius[i] << p.mass[i] << p.invMass[i] << p.invInertia[i] << std::uint64_t(p.species[i])
                         << std::uint64_t(p.fixed[i]) << std::int64_t(p.motion[i]);
             if (shapes) {
@@ -221,32 +224,32 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             w.end();
         }
         const PairList& l = s.pairList;
-        w.key("pairlist") << l.skin << l.reach << l.maxSpeed << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
+        w.key(key::pairList) << l.skin << l.reach << l.maxSpeed << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size())
                           << std::uint64_t(l.interiorPairs); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
+            w.key(item) << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
             writeHistory(w, l.history.get(k), shapes);
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
+            w.key(item) << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
             writeHistory(w, l.wallHistory.get(k), shapes);
         }
-        for (const Vec3& x : l.referencePosition) { w.key("  ") << x; w.end(); }
-        w.key("onewaypairs") << std::uint64_t(l.oneWayPairs.size()); w.end();
+        for (const Vec3& x : l.referencePosition) { w.key(item) << x; w.end(); }
+        w.key(key::oneWayPairs) << std::uint64_t(l.oneWayPairs.size()); w.end();
         for (std::size_t k = 0; k < l.oneWayPairs.size(); ++k) {
-            w.key("  ") << std::uint64_t(l.oneWayPairs[k].i) << std::uint64_t(l.oneWayPairs[k].j);
+            w.key(item) << std::uint64_t(l.oneWayPairs[k].i) << std::uint64_t(l.oneWayPairs[k].j);
             writeHistory(w, l.oneWayHistory.get(k), shapes);
         }
         std::ostringstream random;
         random << s.random;
-        w.key("random") << random.str(); w.end();
-        w.key("output") << s.output.savedFrames << s.output.dataBytes << s.output.fstatBytes << s.output.eneBytes
+        w.key(key::random) << random.str(); w.end();
+        w.key(key::output) << s.output.savedFrames << s.output.dataBytes << s.output.fstatBytes << s.output.eneBytes
                         << std::uint64_t(s.output.frameTimes.size()); w.end();
-        for (double t : s.output.frameTimes) { w.key("  ") << t; w.end(); }
-        w.key("values") << std::uint64_t(s.keptValues.size()); w.end();
-        for (const auto& [name, value] : s.keptValues) { w.key("  ") << name << value; w.end(); }
-        w.key("end"); w.end();
+        for (double t : s.output.frameTimes) { w.key(item) << t; w.end(); }
+        w.key(key::values) << std::uint64_t(s.keptValues.size()); w.end();
+        for (const auto& [name, value] : s.keptValues) { w.key(item) << name << value; w.end(); }
+        w.key(key::end); w.end();
     });
 }
 
@@ -254,16 +257,15 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     std::ifstream in(path);
     if (!in) throw Error("cannot open restart file " + path);
     Reader r(in, path);
-    r.expect("Talus");
-    r.expect("restart");
+    for (const char* word : formats::restart::magicWords) r.expect(word);
     if (const auto v = r.count("format version"); v != formatVersion)
         r.fail("format version " + std::to_string(v) + " is not supported (this build reads version " +
                std::to_string(formatVersion) + ")");
     SimulationState t;  // filled completely before it replaces s
     RunSettings& c = t.settings;
-    r.expect("name");
+    r.expect(key::name);
     c.name = r.token("name");
-    r.expect("run");
+    r.expect(key::run);
     c.timeStep = r.real("time step");
     c.endTime = r.real("end time");
     c.outputInterval = r.real("output interval");
@@ -273,30 +275,30 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     c.maxOverlapFraction = r.real("maximum overlap fraction");
     c.maxInitialOverlapFraction = r.real("maximum initial overlap fraction");
     c.reorderParticles = r.flag("reorder flag");
-    r.expect("files");
+    r.expect(key::files);
     c.writeData = r.flag("data flag");
     c.writeFstat = r.flag("fstat flag");
     c.writeEne = r.flag("ene flag");
     c.writeVtu = r.flag("vtu flag");
     c.writeRestart = r.flag("restart flag");
-    r.expect("summation");
+    r.expect(key::summation);
     c.idOrderedSums = r.flag("id-ordered sums flag");
     c.relist = r.flag("relist flag");
     c.stepper.waveSteps = static_cast<int>(r.count("wave steps", 255));
     if (c.stepper.waveSteps < 1) r.fail("wave steps must be 1 to 255, got 0");
     c.stepper.waveStripColumns = static_cast<int>(r.count("wave strip columns", 1u << 30));
-    r.expect("time");
+    r.expect(key::time);
     t.time = r.real("time");
     t.step = r.count("step");
-    r.expect("gravity");
+    r.expect(key::gravity);
     t.gravity = r.vec("gravity");
-    r.expect("domain");
+    r.expect(key::domain);
     t.domain.lo = r.vec("domain lower corner");
     t.domain.hi = r.vec("domain upper corner");
     if (!((t.domain.hi - t.domain.lo).minCoeff() > 0))
         r.fail("domain: the upper corner must lie above the lower corner along x, y and z");
     for (int a = 0; a < 3; ++a) t.domain.periodic[a] = r.flag("periodic flag");
-    r.expect("oneway");
+    r.expect(key::oneWay);
     t.domain.oneWay.active = r.flag("one-way box flag");
     t.domain.oneWay.lo = r.real("one-way box lower end");
     t.domain.oneWay.hi = r.real("one-way box upper end");
@@ -308,7 +310,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         if (species < -1 || species >= (1 << 16)) r.fail("one-way box outflow species out of range");
         t.domain.oneWay.outflowSpecies.push_back(static_cast<std::int32_t>(species));
     }
-    r.expect("species");
+    r.expect(key::species);
     const auto speciesCount = r.count("species count", 1u << 16);
     for (std::uint64_t k = 0; k < speciesCount; ++k) {
         std::string name = r.token("species name");
@@ -320,7 +322,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
             r.fail(e.what());
         }
     }
-    r.expect("pairs");
+    r.expect(key::pairs);
     const auto pairCount = r.count("pair count", speciesCount * speciesCount);
     for (std::uint64_t k = 0; k < pairCount; ++k) {
         const auto a = r.index("species index", speciesCount), b = r.index("species index", speciesCount);
@@ -332,7 +334,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
             r.fail(e.what());
         }
     }
-    r.expect("motions");
+    r.expect(key::motions);
     const auto motionCount = r.count("motion count", 1u << 20);
     t.motions.resize(motionCount);
     for (PrescribedMotion& m : t.motions) {
@@ -345,7 +347,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         if (m < -1 || m >= static_cast<std::int64_t>(motionCount)) r.fail(std::string(what) + " out of range");
         return static_cast<std::int32_t>(m);
     };
-    r.expect("walls");
+    r.expect(key::walls);
     t.walls.resize(r.count("wall count", 1u << 20));
     for (Wall& w : t.walls) {
         w.normal = r.vec("wall normal");
@@ -355,7 +357,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         w.radius = r.real("wall radius");
         if (!(w.radius >= 0)) r.fail("wall radius must be 0 (a plane) or positive (a cylinder)");
     }
-    r.expect("shapes");
+    r.expect(key::shapes);
     const bool shapes = r.flag("shapes flag");
     t.shapes.clear();
     const auto shapeCount = r.count("shape count", 1u << 20);
@@ -368,7 +370,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
             r.fail(e.what());
         }
     }
-    r.expect("particles");
+    r.expect(key::particles);
     const auto n = r.count("particle count", 0xffffffffu);
     t.nextId = r.count("next id");
     ParticleStore& p = t.particles;
@@ -418,7 +420,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         }
         if (p.id.back() >= t.nextId) r.fail("particle id " + std::to_string(p.id.back()) + " is not below the next id");
     }
-    r.expect("pairlist");
+    r.expect(key::pairList);
     PairList& l = t.pairList;
     l.skin = r.real("skin");
     l.reach = r.real("reach");
@@ -440,14 +442,14 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         l.wallHistory.push_back(readHistory(r, shapes));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
-    r.expect("onewaypairs");
+    r.expect(key::oneWayPairs);
     const auto oneWayPairs = r.count("one-way pair count", 1ull << 40);
     for (std::uint64_t k = 0; k < oneWayPairs; ++k) {
         const auto i = r.index("one-way pair particle", n), j = r.index("one-way pair particle", n);
         l.oneWayPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         l.oneWayHistory.push_back(readHistory(r, shapes));
     }
-    r.expect("random");
+    r.expect(key::random);
     {
         std::istringstream engine;
         std::string state;
@@ -456,14 +458,14 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         engine >> t.random;
         if (!engine) r.fail("bad random generator state");
     }
-    r.expect("output");
+    r.expect(key::output);
     t.output.savedFrames = r.count("saved frames");
     t.output.dataBytes = r.count("data bytes");
     t.output.fstatBytes = r.count("fstat bytes");
     t.output.eneBytes = r.count("ene bytes");
     const auto frames = r.count("frame count", 1ull << 32);
     for (std::uint64_t k = 0; k < frames; ++k) t.output.frameTimes.push_back(r.real("frame time"));
-    r.expect("values");
+    r.expect(key::values);
     const auto values = r.count("value count", 1ull << 20);
     for (std::uint64_t k = 0; k < values; ++k) {
         std::string name = r.token("value name");
@@ -472,7 +474,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::int32_t species : t.domain.oneWay.outflowSpecies)
         if (species >= static_cast<std::int32_t>(t.species.size()) || t.domain.oneWay.outflowSpecies.size() > t.species.size())
             r.fail("one-way box: outflow species " + std::to_string(species) + " does not exist");
-    r.expect("end");
+    r.expect(key::end);
     if (!r.atEnd()) r.fail("unexpected text after 'end'");
     s = std::move(t);
 }

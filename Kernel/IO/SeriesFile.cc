@@ -35,7 +35,7 @@ SeriesFile::SeriesFile(Simulation& simulation, std::string suffix, const std::ve
 void SeriesFile::write(std::initializer_list<Value> row) {
     require(row.size() == columns_, "series file '" + suffix_ + "': a row of " + std::to_string(row.size()) +
                                         " values for " + std::to_string(columns_) + " columns");
-    if (simulation_.rank() != 0) return;
+    if (simulation_.ranks().rank() != 0) return;
     std::ostringstream line;
     line.precision(precision_);
     const char* separator = "";
@@ -66,7 +66,7 @@ void SeriesFile::open() {
 }
 
 void SeriesFile::append(const std::string& lines) {
-    if (simulation_.rank() != 0) return;
+    if (simulation_.ranks().rank() != 0) return;
     if (!file_) open();
     errno = 0;
     if (std::fwrite(lines.data(), 1, lines.size(), file_) != lines.size() || std::fflush(file_) != 0)

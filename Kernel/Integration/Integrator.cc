@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "Integration/StepWorkspace.h"
+#include "Math/LaneForm.h"
 #include "SimulationState.h"
 
 namespace talus {
@@ -49,7 +50,7 @@ void Integrator::describeChoice(const StepHost& host, std::ostream& out, const s
     }
     out << name << ": stepper " << chosen->name();
     if (chosen == &waves_) out << " (single steps between waves by the " << driftPass_.name() << ")";
-    out << declined << std::endl;
+    out << declined << "; lanes " << laneFormName(laneForm()) << std::endl;
 }
 
 }  // namespace talus

@@ -31,7 +31,7 @@ struct StepperTuning {
         waveStripColumns = stripColumns;
     }
     // The strip width the waves take: the one set, else 8 columns per step of the wave (64 for
-    // waves of 8: strips of 64-128 columns measured fastest, Documentation/TimeSkewing.md).
+    // waves of 8: the width measured fastest, Documentation/TimeSkewing.md "Strip width").
     int stripColumns() const { return waveStripColumns > 0 ? waveStripColumns : 8 * waveSteps; }
 
     bool operator==(const StepperTuning&) const = default;

@@ -176,11 +176,10 @@ std::uint64_t WaveStepper::stepsNext(StepHost& host, std::uint64_t stepsLeft, st
 
 // Where a wave is allowed but the list has no room left for it, the list is built anew before
 // it (at the positions between two steps, as a step's build would be after its drift), so that
-// waves go on. Otherwise the list's last (N + 1) 2 vmax dt of room went in single steps (about
-// 20 of the 370 steps between builds in the benchmark's flow), which beyond the caches cost
-// about twice a step in a wave: in the flow, waves of 8, best of five interleaved rounds, 41.8
-// against 44.1 ns per particle-step at 108000 particles, 49.1 against 50.3 at 972000
-// (Documentation/TimeSkewing.md).
+// waves go on. Otherwise the list's last (N + 1) 2 vmax dt of room would go in single steps
+// (about 20 of the 370 steps between builds in the benchmark's flow), which beyond the caches
+// cost about twice a step in a wave (Documentation/TimeSkewing.md, "Using it"; the measured
+// gain is in Documentation/Performance/History.md).
 // Not when a new list would have no room either (a speed too large for waves: single steps go
 // on, rebuilding as they need).
 void WaveStepper::buildListForWave(StepHost& host) {

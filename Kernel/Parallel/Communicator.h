@@ -32,8 +32,17 @@ public:
     virtual std::vector<Bytes> exchange(const std::vector<Bytes>& outgoing) = 0;
     // Point to point between partners that know of each other and of the sizes: outgoing[k] goes
     // to sendTo[k]; incoming[k], sized by the caller, is filled from receiveFrom[k].
-    virtual void exchangeWith(const std::vector<int>& sendTo, const std::vector<Bytes>& outgoing,
-                              const std::vector<int>& receiveFrom, std::vector<Bytes>& incoming) = 0;
+    void exchangeWith(const std::vector<int>& sendTo, const std::vector<Bytes>& outgoing,
+                      const std::vector<int>& receiveFrom, std::vector<Bytes>& incoming) {
+        startExchangeWith(sendTo, outgoing, receiveFrom, incoming);
+        finishExchange();
+    }
+    // The same in two halves, so that other work (a collective too) runs while the messages
+    // travel: start posts the receives and sends and returns at once; finish waits for them. In
+    // between, outgoing and incoming must stay as they are; one exchange at a time.
+    virtual void startExchangeWith(const std::vector<int>& sendTo, const std::vector<Bytes>& outgoing,
+                                   const std::vector<int>& receiveFrom, std::vector<Bytes>& incoming) = 0;
+    virtual void finishExchange() = 0;
     // Every rank's bytes, in rank order, on every rank.
     virtual std::vector<Bytes> allGather(const Bytes& mine) = 0;
     // Every rank's bytes, in rank order, on rank 0 (empty elsewhere).

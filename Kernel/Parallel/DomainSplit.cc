@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <unordered_map>
 
 #include "Contacts/ContactForces.h"
@@ -269,42 +270,80 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
     }
     sendSlots_ = std::move(slots);
     p.ghostCount = p.size() - owned;
+    // (Decided by all ranks at once, so that all use the allreduce or none.)
+    double allPartners = n > 1 && static_cast<int>(sendTo_.size()) == n - 1 &&
+                         static_cast<int>(receiveFrom_.size()) == n - 1;
+    communicator_.allReduce(&allPartners, 1, Communicator::Reduction::min);
+    partnersAreAll_ = allPartners > 0;
 }
 
 namespace {
 
 // What a ghost needs from its owner each step (the force loop's inputs that change).
-template <class F>
-void forEachMovingField(ParticleStore& p, F&& f) {
+template <class Store, class F>
+void forEachMovingField(Store& p, F&& f) {
     f(p.position); f(p.velocity); f(p.angularVelocity); f(p.force);
     if (p.hasShapes()) f(p.orientation);
 }
 
 }  // namespace
 
-void DomainSplit::updateGhosts(ParticleStore& p) {
+// One message per partner, field by field: the positions of all its ghosts, then their
+// velocities, and so on. The ghosts from one partner sit in consecutive slots, so each field
+// arrives with one copy. A slot beyond the owned ones (a particle removed since the ghosts were
+// made, which forces a list build on every rank: the update is then not applied) sends zeros,
+// so that every message has the size its receiver expects.
+void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine) {
     if (sendTo_.empty() && receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
     std::size_t bytesPerParticle = 0;
-    forEachMovingField(p, [&](auto& array) { bytesPerParticle += sizeof(array[0]); });
+    forEachMovingField(p, [&](const auto& array) { bytesPerParticle += sizeof(array[0]); });
     outgoing_.resize(sendTo_.size());
     for (std::size_t k = 0; k < sendTo_.size(); ++k) {
-        outgoing_[k].clear();
-        outgoing_[k].reserve(sendSlots_[k].size() * bytesPerParticle);
-        Packer out(outgoing_[k]);
-        for (std::uint32_t i : sendSlots_[k]) forEachMovingField(p, [&](auto& array) { out.put(array[i]); });
+        const std::vector<std::uint32_t>& slots = sendSlots_[k];
+        outgoing_[k].assign(sizeof(Agreement) + slots.size() * bytesPerParticle, 0);
+        char* out = outgoing_[k].data();
+        std::memcpy(out, mine.data(), sizeof(Agreement));
+        out += sizeof(Agreement);
+        forEachMovingField(p, [&](const auto& array) {
+            constexpr std::size_t size = sizeof(array[0]);
+            for (std::uint32_t i : slots) {
+                if (i < p.owned()) std::memcpy(out, &array[i], size);
+                out += size;
+            }
+        });
     }
     incoming_.resize(receiveFrom_.size());
-    for (std::size_t k = 0; k < receiveFrom_.size(); ++k) incoming_[k].resize(receiveCount_[k] * bytesPerParticle);
-    communicator_.exchangeWith(sendTo_, outgoing_, receiveFrom_, incoming_);
+    for (std::size_t k = 0; k < receiveFrom_.size(); ++k)
+        incoming_[k].resize(sizeof(Agreement) + receiveCount_[k] * bytesPerParticle);
+    communicator_.startExchangeWith(sendTo_, outgoing_, receiveFrom_, incoming_);
+}
+
+void DomainSplit::finishGhostUpdate(Agreement& agreement) {
+    if (sendTo_.empty() && receiveFrom_.empty()) return;
+    const Stopwatch watch(seconds.ghosts);
+    communicator_.finishExchange();
+    if (!partnersAreAll_) return;
+    for (const Bytes& in : incoming_) {
+        Agreement theirs;
+        std::memcpy(theirs.data(), in.data(), sizeof(Agreement));
+        for (std::size_t k = 0; k < theirs.size(); ++k) agreement[k] = std::max(agreement[k], theirs[k]);
+    }
+}
+
+void DomainSplit::applyGhostUpdate(ParticleStore& p) {
+    if (receiveFrom_.empty()) return;
+    const Stopwatch watch(seconds.ghosts);
     std::size_t slot = p.owned();
     for (std::size_t k = 0; k < receiveFrom_.size(); ++k) {
-        Unpacker in(incoming_[k]);
-        for (std::size_t g = 0; g < receiveCount_[k]; ++g, ++slot)
-            forEachMovingField(p, [&](auto& array) {
-                using T = typename std::decay_t<decltype(array)>::value_type;
-                array[slot] = in.template get<T>();
-            });
+        const std::size_t n = receiveCount_[k];
+        const char* in = incoming_[k].data() + sizeof(Agreement);
+        forEachMovingField(p, [&](auto& array) {
+            const std::size_t bytes = n * sizeof(array[0]);
+            std::memcpy(static_cast<void*>(array.data() + slot), in, bytes);
+            in += bytes;
+        });
+        slot += n;
     }
 }
 

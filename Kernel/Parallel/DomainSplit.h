@@ -11,7 +11,7 @@
 // ghosts are dropped, particles that left their slab move to their new owner together with the
 // contact histories that involve them, and the ghosts are made anew. Between rebuilds each
 // step sends the ghosts' positions, velocities, spins, orientations and last forces from their
-// owners (updateGhosts).
+// owners (startGhostUpdate, finishGhostUpdate).
 //
 // Ghosts keep their owners' wrapped coordinates: a pair across a periodic face is found and
 // computed through the nearest image exactly as in a serial run, and a pair across a rank
@@ -66,8 +66,18 @@ public:
     // Appends as ghosts the particles of other ranks closer than width to this rank's slab.
     void makeGhosts(ParticleStore& particles, const Domain& domain, double width);
     // Each step: the ghosts get their owners' positions, velocities, spins, last forces and
-    // orientations.
-    void updateGhosts(ParticleStore& particles);
+    // orientations, in one message per partner rank, which also carries this rank's numbers for
+    // the step's agreement (their maximum over the ranks decides whether the list is rebuilt).
+    // start sends and returns; finish waits for the partners' messages; apply puts their states
+    // into the ghosts' slots (not on a step that rebuilds: the ghosts are then made anew). When
+    // every other rank is a partner both ways (two ranks; three along a periodic axis), finish
+    // makes `agreement` the maximum over all ranks and no allreduce is needed
+    // (agreesThroughGhosts); otherwise the caller agrees between start and finish.
+    using Agreement = std::array<double, 4>;
+    void startGhostUpdate(const ParticleStore& particles, const Agreement& mine);
+    void finishGhostUpdate(Agreement& agreement);
+    void applyGhostUpdate(ParticleStore& particles);
+    bool agreesThroughGhosts() const { return partnersAreAll_; }
     // Whether a particle of this species at x, owned here, is one that no other rank needs as a
     // ghost by the width of the last makeGhosts (the neighbour list's relisting on ranks), and
     // whether the owned particle in a slot is sent to another rank as a ghost.
@@ -89,9 +99,10 @@ public:
     std::uint64_t migrated = 0, migratedFar = 0;
     std::array<std::uint64_t, 3> migratedAlong{0, 0, 0};
 
-    // Wall seconds this rank spent on the split (Documentation/Parallel.md): sending ghosts each
-    // step, agreeing with the other ranks each step (which includes waiting for the slowest:
-    // load imbalance shows here), and migration with ghost making at list builds.
+    // Wall seconds this rank spent on the split (Documentation/Parallel.md): the ghost exchange
+    // each step, the allreduce of the step's agreement where it is needed (both include waiting
+    // for the slowest rank: load imbalance shows here; when the agreement rides on the ghost
+    // messages, all of it is in ghosts), and migration with ghost making at list builds.
     struct Timings {
         double ghosts = 0, agreement = 0, rebuild = 0;
         double total() const { return ghosts + agreement + rebuild; }
@@ -118,6 +129,7 @@ private:
     std::vector<int> sendTo_, receiveFrom_;
     std::vector<std::vector<std::uint32_t>> sendSlots_;
     double ghostWidth_ = 0;  // of the last makeGhosts
+    bool partnersAreAll_ = false;  // on every rank: each other rank is a partner both ways
     // Calls f(r) for every rank r other than this one whose cell lies within width of x (through
     // the periodic images, and through an active maser box's image for its members): those that
     // hold a particle at x as a ghost.

@@ -66,18 +66,23 @@ public:
         return incoming;
     }
 
-    void exchangeWith(const std::vector<int>& sendTo, const std::vector<Bytes>& outgoing,
-                      const std::vector<int>& receiveFrom, std::vector<Bytes>& incoming) override {
-        std::vector<MPI_Request> requests(sendTo.size() + receiveFrom.size());
+    void startExchangeWith(const std::vector<int>& sendTo, const std::vector<Bytes>& outgoing,
+                           const std::vector<int>& receiveFrom, std::vector<Bytes>& incoming) override {
+        require(requests_.empty(), "startExchangeWith: the last exchange has not been finished");
+        requests_.resize(sendTo.size() + receiveFrom.size());
         for (std::size_t k = 0; k < receiveFrom.size(); ++k)
             check(MPI_Irecv(incoming[k].data(), countOf(incoming[k].size()), MPI_BYTE, receiveFrom[k], tag,
-                            MPI_COMM_WORLD, &requests[k]),
+                            MPI_COMM_WORLD, &requests_[k]),
                   "MPI_Irecv");
         for (std::size_t k = 0; k < sendTo.size(); ++k)
             check(MPI_Isend(outgoing[k].data(), countOf(outgoing[k].size()), MPI_BYTE, sendTo[k], tag, MPI_COMM_WORLD,
-                            &requests[receiveFrom.size() + k]),
+                            &requests_[receiveFrom.size() + k]),
                   "MPI_Isend");
-        check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+    }
+    void finishExchange() override {
+        const int count = static_cast<int>(requests_.size());
+        if (count > 0) check(MPI_Waitall(count, requests_.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+        requests_.clear();
     }
 
     std::vector<Bytes> allGather(const Bytes& mine) override { return gather(mine, /*everywhere*/ true); }
@@ -117,6 +122,7 @@ private:
     }
 
     int rank_ = 0, size_ = 1;
+    std::vector<MPI_Request> requests_;  // of the exchange started and not yet finished
 };
 
 }  // namespace

@@ -1,3 +1,4 @@
+// Particles/DriftPass.h in the lanes of one form: compiled once per form (Math/LaneKernels.h).
 #include "Particles/DriftPass.h"
 
 #include <algorithm>
@@ -6,12 +7,13 @@
 #include <cstdint>
 #include <limits>
 
-#include "Contacts/PairSweep.h"
-#include "Math/EightParticleLanes.h"
-#include "Math/FourParticleLanes.h"
-#include "Particles/VelocityVerlet.h"
+#include "Contacts/PairSweepLanes.h"
+#include "Math/LaneKernels.h"
+#include "Math/LaneNamespace.h"
+#include "Math/Lanes.h"
+#include "Particles/VelocityVerletLanes.h"
 
-namespace talus {
+namespace talus::TALUS_LANES {
 
 namespace {
 
@@ -36,7 +38,7 @@ struct Maxima {
     std::uint64_t positionsBefore = 0, positionsAfter = 0;  // (positionSum, before and after the pass)
 };
 
-// One particle, as the separate passes do it (the lanes below do the same for eight).
+// One particle, as the separate passes do it (the lanes below do the same for W at a time).
 struct OneParticle {
     double* x;
     double* v;
@@ -98,279 +100,98 @@ struct OneParticle {
     }
 };
 
-#if defined(TALUS_AVX512_LANES) || defined(TALUS_AVX2_LANES)
-// The box as the lanes below compare with it, axis by axis: the wrap's bounds (lo and hi along
-// the periodic axes, -inf and +inf along the others: never outside), and the nearest image's
-// lengths and half lengths.
-struct BoxPerAxis {
-    double low[3], high[3], length[3], half[3];
-    BoxPerAxis(const Domain& domain, const PeriodicImage& image) {
-        const Domain::WrapBounds bounds = domain.wrapBounds();
-        for (int a = 0; a < 3; ++a) {
-            low[a] = bounds.low[a], high[a] = bounds.high[a];
-            length[a] = image.length(a), half[a] = image.halfLength(a);
-        }
-    }
-};
-template <class Lanes>
-void perAxis(const double (&value)[3], Lanes (&out)[3]) {
-    lanes::perAxis(value[0], value[1], value[2], out);
-}
-#endif
-
-#ifdef TALUS_AVX512_LANES
-// The eight particles' values of one axis (0: x, 1: y, 2: z) from the three vectors that hold
-// their coordinates in storage order (EightParticleLanes.h).
-inline __m512d axisOf(const __m512d (&a)[3], int axis) {
-    const __m512i first = axis == 0   ? _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0)
-                          : axis == 1 ? _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1)
-                                      : _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2);
-    const __m512i second = axis == 0   ? _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0)
-                           : axis == 1 ? _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0)
-                                       : _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0);
-    return _mm512_permutex2var_pd(_mm512_permutex2var_pd(a[0], first, a[1]), second, a[2]);
-}
-
-// The eight particles' |a|^2 (squaredNorm's rounding).
-inline __m512d squaredNorms(const __m512d (&a)[3]) {
-    const __m512d x = axisOf(a, 0), y = axisOf(a, 1), z = axisOf(a, 2);
-    return _mm512_fmadd_pd(z, z, _mm512_fmadd_pd(y, y, _mm512_mul_pd(x, x)));
-}
-
-inline __m512i bitsOf(__m512d v) { return _mm512_castpd_si512(v); }
-
-// (The zero-masking forms of max and sqrt below, and these reductions by hand: GCC 12 warns,
-// wrongly, of uninitialised operands in the plain ones, as EightParticleLanes.h notes.)
-inline __m512i largerOf(__m512i a, __m512i b) { return _mm512_maskz_max_epu64(0xff, a, b); }
-inline std::uint64_t largestOf(__m512i a) {
-    alignas(64) std::uint64_t lanes[8];
-    _mm512_store_si512(lanes, a);
-    return *std::max_element(lanes, lanes + 8);
-}
-// The sum of the eight 64-bit lanes, modulo 2^64 (a checksum: the same in any order). Not
-// _mm512_reduce_add_epi64, which adds them as signed numbers (an overflow, for UBSan).
-inline std::uint64_t checksumOf(__m512i a) {
-    alignas(64) std::uint64_t lanes[8];
-    _mm512_store_si512(lanes, a);
-    std::uint64_t sum = 0;
-    for (const std::uint64_t lane : lanes) sum += lane;
-    return sum;
-}
-inline double sumOf(__m512d a) {
-    alignas(64) double lanes[8];
-    _mm512_store_pd(lanes, a);
-    return ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3])) + ((lanes[4] + lanes[5]) + (lanes[6] + lanes[7]));
-}
-
-// The eight sweep points (x, y, z, grown radius) from the positions' three vectors and the
-// grown radii: two points per vector.
-inline void storePoints(const __m512d (&x)[3], __m512d grown, double* out) {
-    const __m512i pick[4] = {_mm512_set_epi64(0, 5, 4, 3, 0, 2, 1, 0), _mm512_set_epi64(0, 11, 10, 9, 0, 8, 7, 6),
-                             _mm512_set_epi64(0, 9, 8, 7, 0, 6, 5, 4), _mm512_set_epi64(0, 7, 6, 5, 0, 4, 3, 2)};
-    const __m512d low[4] = {x[0], x[0], x[1], x[2]}, high[4] = {x[1], x[1], x[2], x[2]};
-    for (int k = 0; k < 4; ++k) {
-        const __m512d coordinates = _mm512_permutex2var_pd(low[k], pick[k], high[k]);
-        const __m512i radii = _mm512_set_epi64(2 * k + 1, 0, 0, 0, 2 * k, 0, 0, 0);
-        _mm512_storeu_pd(out + 8 * k, _mm512_mask_permutexvar_pd(coordinates, 0x88, radii, grown));
-    }
-}
-
-// The blocks of eight particles of the pass; returns where the scalar loop goes on.
-// Slots [first, n) while whole groups are left; returns where it stopped.
-template <bool Close>
-std::size_t inEightParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
-                                std::size_t n) {
+#if TALUS_LANES_WIDTH > 1
+// The blocks of W particles of the pass in lanes L (Math/Lanes.h): the kicks, the drift and the
+// forces in storage order, the norms and the sweep points per axis; the same operations as
+// OneParticle, to the bit. Slots [first, n) while whole blocks are left; returns where it stopped.
+template <bool Close, class L>
+std::size_t inParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
+                            std::size_t n) {
+    constexpr std::size_t W = L::width;
     std::size_t i = first;
-    const BoxPerAxis box(domain, one.image);
-    __m512d low[3], high[3], length[3], halfLength[3], g[3], u[3];
-    perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
+    // The box as the lanes compare with it, axis by axis: the wrap's bounds (lo and hi along the
+    // periodic axes, -inf and +inf along the others: never outside), and the nearest image's
+    // lengths and half lengths.
+    const Domain::WrapBounds bounds = domain.wrapBounds();
+    const double lengths[3] = {one.image.length(0), one.image.length(1), one.image.length(2)};
+    const double halves[3] = {one.image.halfLength(0), one.image.halfLength(1), one.image.halfLength(2)};
+    const double minusHalves[3] = {-halves[0], -halves[1], -halves[2]};
+    L low[3], high[3], length[3], half[3], minusHalf[3], g[3];  // (in storage order)
+    lanes::perAxis(bounds.low, low), lanes::perAxis(bounds.high, high);
+    lanes::perAxis(lengths, length), lanes::perAxis(halves, half), lanes::perAxis(minusHalves, minusHalf);
     lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
-    lanes::perAxis(one.frame.x(), one.frame.y(), one.frame.z(), u);
-    const __m512d drift = _mm512_set1_pd(one.dt), half = _mm512_set1_pd(one.half), zero = _mm512_setzero_pd();
-    const __m512d reach = _mm512_set1_pd(reachMargin * one.dt), margin = _mm512_set1_pd(radiusMargin);
-    __m512i displacement2 = _mm512_setzero_si512(), speed2 = displacement2, coordinate = displacement2,
-            growth = displacement2;
-    __m512d velocitySum[3] = {_mm512_setzero_pd(), _mm512_setzero_pd(), _mm512_setzero_pd()};
-    __m512i positionsBefore = _mm512_setzero_si512(), positionsAfter = positionsBefore;
-    const __m512i magnitude = _mm512_set1_epi64(0x7fffffffffffffff);  // (all bits but the sign)
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes kick(one.fixed + i, one.half, one.invMass + i);
-        m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(kick.of[0])) +  // (three lanes a particle)
-                                             std::popcount(static_cast<unsigned>(kick.of[1])) +
-                                             std::popcount(static_cast<unsigned>(kick.of[2]))) / 3;
-        __m512d turn[3], weight[3];
-        lanes::spread(_mm512_mul_pd(half, _mm512_loadu_pd(one.invInertia + i)), turn);
-        lanes::spread(_mm512_loadu_pd(one.mass + i), weight);
-        __m512d x[3], v[3];
+    const L u[3] = {L::broadcast(one.frame.x()), L::broadcast(one.frame.y()), L::broadcast(one.frame.z())};  // (per axis)
+    const L drift = L::broadcast(one.dt), halfStep = L::broadcast(one.half), zero = L::zero();
+    const L reach = L::broadcast(reachMargin * one.dt), margin = L::broadcast(radiusMargin);
+    L displacement2 = zero, speed2 = zero, coordinate = zero, growth = zero;  // (bit patterns)
+    L velocitySum[3] = {zero, zero, zero};                                    // (per axis)
+    L positionsBefore = zero, positionsAfter = zero;                          // (bit patterns)
+    for (; i + W <= n; i += W) {
+        const lanes::MobileLanes<L> mobile(one.fixed + i);
+        m.mobile += static_cast<std::size_t>(count(mobile.particles));
+        L kick[3], turn[3], weight[3];
+        lanes::spread(halfStep * L::load(one.invMass + i), kick);
+        lanes::spread(halfStep * L::load(one.invInertia + i), turn);
+        lanes::spread(L::load(one.mass + i), weight);
+        L x[3], v[3];
         for (int c = 0; c < 3; ++c) {
-            const std::size_t at = 3 * i + 8 * c;
-            const __m512d f = _mm512_loadu_pd(one.oldForce + at), t = _mm512_loadu_pd(one.torque + at);
-            v[c] = _mm512_loadu_pd(one.v + at);
-            __m512d w = _mm512_loadu_pd(one.w + at);
+            const std::size_t at = 3 * i + W * c;
+            const typename L::Mask moves = mobile.of[c];
+            const L f = L::load(one.oldForce + at), t = L::load(one.torque + at);
+            v[c] = L::load(one.v + at);
+            L w = L::load(one.w + at);
             if constexpr (Close) {
-                v[c] = kick.advance(v[c], kick.factor[c], f, c);
-                w = kick.advance(w, turn[c], t, c);
-                _mm512_storeu_pd(one.keptForce + at, f);
+                v[c] = multiplyAddWhere(moves, kick[c], f, v[c]);
+                w = multiplyAddWhere(moves, turn[c], t, w);
+                f.store(one.keptForce + at);
             }
-            v[c] = kick.advance(v[c], kick.factor[c], f, c);
-            _mm512_storeu_pd(one.v + at, v[c]);
-            velocitySum[c] = _mm512_mask_add_pd(velocitySum[c], kick.of[c], velocitySum[c], v[c]);
-            const __m512d before = _mm512_loadu_pd(one.x + at);
-            positionsBefore = _mm512_add_epi64(positionsBefore, _mm512_castpd_si512(before));
-            x[c] = kick.advance(before, drift, v[c], c);
-            _mm512_storeu_pd(one.w + at, kick.advance(w, turn[c], t, c));
-            _mm512_storeu_pd(one.torque + at, zero);
-            _mm512_storeu_pd(one.force + at, _mm512_maskz_mul_pd(kick.of[c], weight[c], g[c]));
+            v[c] = multiplyAddWhere(moves, kick[c], f, v[c]);
+            v[c].store(one.v + at);
+            const L before = L::load(one.x + at);
+            positionsBefore = addBits(positionsBefore, before);
+            x[c] = multiplyAddWhere(moves, drift, v[c], before);
+            multiplyAddWhere(moves, turn[c], t, w).store(one.w + at);
+            zero.store(one.torque + at);
+            multiplyWhere(moves, weight[c], g[c]).store(one.force + at);
         }
-        __mmask8 outside = 0;
+        typename L::Mask outside{};
         for (int c = 0; c < 3; ++c) {
-            _mm512_storeu_pd(one.x + 3 * i + 8 * c, x[c]);
-            outside |= _mm512_cmp_pd_mask(x[c], high[c], _CMP_GE_OQ) | _mm512_cmp_pd_mask(x[c], low[c], _CMP_LT_OQ);
+            x[c].store(one.x + 3 * i + W * c);
+            outside = outside | (x[c] >= high[c]) | (x[c] < low[c]);
         }
-        if (outside) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
-            domain.wrap(p.position.data() + i, 8);
-            for (int c = 0; c < 3; ++c) x[c] = _mm512_loadu_pd(one.x + 3 * i + 8 * c);
+        if (any(outside)) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
+            domain.wrap(p.position.data() + i, W);
+            for (int c = 0; c < 3; ++c) x[c] = L::load(one.x + 3 * i + W * c);
         }
-        for (int c = 0; c < 3; ++c) positionsAfter = _mm512_add_epi64(positionsAfter, _mm512_castpd_si512(x[c]));
+        for (int c = 0; c < 3; ++c) positionsAfter = addBits(positionsAfter, x[c]);
         if (one.reference) {
-            __m512d d[3];
-            for (int c = 0; c < 3; ++c) {
-                const __m512d raw = _mm512_sub_pd(x[c], _mm512_loadu_pd(one.reference + 3 * i + 8 * c));
-                const __mmask8 above = _mm512_cmp_pd_mask(raw, halfLength[c], _CMP_GT_OQ);
-                const __mmask8 below =
-                    _mm512_cmp_pd_mask(raw, _mm512_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
-                d[c] = _mm512_mask_add_pd(_mm512_mask_sub_pd(raw, above, raw, length[c]), below, raw, length[c]);
-            }
-            displacement2 = largerOf(displacement2, bitsOf(squaredNorms(d)));
+            L d[3], dAxis[3];
+            for (int c = 0; c < 3; ++c)
+                d[c] = lanes::nearestOf(x[c] - L::load(one.reference + 3 * i + W * c), length[c], half[c], minusHalf[c]);
+            L::toAxes(d, dAxis);
+            displacement2 = largerBits(displacement2, lanes::squaredNorms(dAxis));
         }
-        const __m512d s2 = squaredNorms(v);
-        speed2 = largerOf(speed2, bitsOf(s2));
-        for (int c = 0; c < 3; ++c) coordinate = largerOf(coordinate, _mm512_and_si512(bitsOf(x[c]), magnitude));
-        __m512d relative[3];
-        for (int c = 0; c < 3; ++c) relative[c] = _mm512_sub_pd(v[c], u[c]);
-        const __m512d radius = _mm512_loadu_pd(one.radius + i);
-        const __m512d grown =
-            _mm512_fmadd_pd(reach, _mm512_maskz_sqrt_pd(0xff, squaredNorms(relative)), _mm512_mul_pd(radius, margin));
-        storePoints(x, grown, reinterpret_cast<double*>(one.points + i));
+        L vAxis[3], relative[3];
+        L::toAxes(v, vAxis);
+        speed2 = largerBits(speed2, lanes::squaredNorms(vAxis));
+        for (int c = 0; c < 3; ++c) {
+            coordinate = largerBits(coordinate, magnitude(x[c]));
+            velocitySum[c] = addWhere(mobile.particles, velocitySum[c], vAxis[c]);
+            relative[c] = vAxis[c] - u[c];
+        }
+        const L radius = L::load(one.radius + i);
+        const L grown = multiplyAdd(reach, sqrt(lanes::squaredNorms(relative)), radius * margin);
+        L::storePoints(x, grown, reinterpret_cast<double*>(one.points + i));
         // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
-        growth = largerOf(growth, bitsOf(_mm512_maskz_max_pd(0xff, zero, _mm512_sub_pd(grown, radius))));
+        growth = largerBits(growth, max(zero, grown - radius));
     }
-    m.displacement2 = largestOf(displacement2);
-    m.positionsBefore += checksumOf(positionsBefore);
-    m.positionsAfter += checksumOf(positionsAfter);
-    m.speed2 = largestOf(speed2);
-    m.coordinate = largestOf(coordinate);
-    m.growth = largestOf(growth);
-    for (int axis = 0; axis < 3; ++axis) m.velocitySum[axis] = sumOf(axisOf(velocitySum, axis));
-    return i;
-}
-#endif
-
-#ifdef TALUS_AVX2_LANES
-// The same for blocks of four particles in AVX2 lanes (Math/FourParticleLanes.h): the kicks,
-// the drift and the forces in storage order, the norms and the sweep points per axis.
-// Slots [first, n) while whole groups are left; returns where it stopped.
-template <bool Close>
-std::size_t inFourParticleLanes(const OneParticle& one, const Domain& domain, ParticleStore& p, Maxima& m, std::size_t first,
-                                std::size_t n) {
-    std::size_t i = first;
-    const BoxPerAxis box(domain, one.image);
-    __m256d low[3], high[3], length[3], halfLength[3], g[3];
-    perAxis(box.low, low), perAxis(box.high, high), perAxis(box.length, length), perAxis(box.half, halfLength);
-    lanes::perAxis(one.gravity.x(), one.gravity.y(), one.gravity.z(), g);
-    const __m256d u[3] = {_mm256_set1_pd(one.frame.x()), _mm256_set1_pd(one.frame.y()), _mm256_set1_pd(one.frame.z())};
-    const __m256d drift = _mm256_set1_pd(one.dt), half = _mm256_set1_pd(one.half), zero = _mm256_setzero_pd();
-    const __m256d reach = _mm256_set1_pd(reachMargin * one.dt), margin = _mm256_set1_pd(radiusMargin);
-    __m256i displacement2 = _mm256_setzero_si256(), speed2 = displacement2, coordinate = displacement2,
-            growth = displacement2;
-    __m256d velocitySum[3] = {zero, zero, zero};
-    __m256i positionsBefore = _mm256_setzero_si256(), positionsAfter = positionsBefore;
-    const __m256i magnitude = _mm256_set1_epi64x(0x7fffffffffffffff);  // (all bits but the sign)
-    for (; i + 4 <= n; i += 4) {
-        const __m256d mobile = lanes::mobileOf(one.fixed + i);
-        m.mobile += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(_mm256_movemask_pd(mobile))));
-        __m256d moves[3], kick[3], turn[3], weight[3];
-        lanes::spread(mobile, moves);
-        lanes::spread(_mm256_mul_pd(half, _mm256_loadu_pd(one.invMass + i)), kick);
-        lanes::spread(_mm256_mul_pd(half, _mm256_loadu_pd(one.invInertia + i)), turn);
-        lanes::spread(_mm256_loadu_pd(one.mass + i), weight);
-        __m256d x[3], v[3];
-        for (int c = 0; c < 3; ++c) {
-            const std::size_t at = 3 * i + 4 * c;
-            const __m256d f = _mm256_loadu_pd(one.oldForce + at), t = _mm256_loadu_pd(one.torque + at);
-            v[c] = _mm256_loadu_pd(one.v + at);
-            __m256d w = _mm256_loadu_pd(one.w + at);
-            if constexpr (Close) {
-                v[c] = lanes::advance(v[c], kick[c], f, moves[c]);
-                w = lanes::advance(w, turn[c], t, moves[c]);
-                _mm256_storeu_pd(one.keptForce + at, f);
-            }
-            v[c] = lanes::advance(v[c], kick[c], f, moves[c]);
-            _mm256_storeu_pd(one.v + at, v[c]);
-            const __m256d before = _mm256_loadu_pd(one.x + at);
-            positionsBefore = _mm256_add_epi64(positionsBefore, _mm256_castpd_si256(before));
-            x[c] = lanes::advance(before, drift, v[c], moves[c]);
-            _mm256_storeu_pd(one.w + at, lanes::advance(w, turn[c], t, moves[c]));
-            _mm256_storeu_pd(one.torque + at, zero);
-            _mm256_storeu_pd(one.force + at, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
-        }
-        __m256d outside = zero;
-        for (int c = 0; c < 3; ++c) {
-            _mm256_storeu_pd(one.x + 3 * i + 4 * c, x[c]);
-            outside = _mm256_or_pd(outside, _mm256_or_pd(_mm256_cmp_pd(x[c], high[c], _CMP_GE_OQ),
-                                                         _mm256_cmp_pd(x[c], low[c], _CMP_LT_OQ)));
-        }
-        if (_mm256_movemask_pd(outside)) [[unlikely]] {  // (few blocks a step: wrapped one by one, then read back)
-            domain.wrap(p.position.data() + i, 4);
-            for (int c = 0; c < 3; ++c) x[c] = _mm256_loadu_pd(one.x + 3 * i + 4 * c);
-        }
-        for (int c = 0; c < 3; ++c) positionsAfter = _mm256_add_epi64(positionsAfter, _mm256_castpd_si256(x[c]));
-        if (one.reference) {
-            __m256d d[3], dAxis[3];
-            for (int c = 0; c < 3; ++c) {  // PeriodicImage::nearest
-                const __m256d raw = _mm256_sub_pd(x[c], _mm256_loadu_pd(one.reference + 3 * i + 4 * c));
-                const __m256d above = _mm256_cmp_pd(raw, halfLength[c], _CMP_GT_OQ);
-                const __m256d below = _mm256_cmp_pd(raw, _mm256_sub_pd(zero, halfLength[c]), _CMP_LT_OQ);
-                d[c] = _mm256_blendv_pd(_mm256_blendv_pd(raw, _mm256_sub_pd(raw, length[c]), above),
-                                        _mm256_add_pd(raw, length[c]), below);
-            }
-            lanes::toAxes(d, dAxis);
-            displacement2 = lanes::largerBits(displacement2, _mm256_castpd_si256(lanes::squaredNorms(dAxis)));
-        }
-        __m256d vAxis[3], xAxis[3], relative[3];
-        lanes::toAxes(v, vAxis);
-        lanes::toAxes(x, xAxis);
-        speed2 = lanes::largerBits(speed2, _mm256_castpd_si256(lanes::squaredNorms(vAxis)));
-        for (int c = 0; c < 3; ++c) {
-            coordinate = lanes::largerBits(coordinate, _mm256_and_si256(_mm256_castpd_si256(x[c]), magnitude));
-            velocitySum[c] = _mm256_add_pd(velocitySum[c], _mm256_and_pd(vAxis[c], mobile));
-            relative[c] = _mm256_sub_pd(vAxis[c], u[c]);
-        }
-        const __m256d radius = _mm256_loadu_pd(one.radius + i);
-        const __m256d grown =
-            _mm256_fmadd_pd(reach, _mm256_sqrt_pd(lanes::squaredNorms(relative)), _mm256_mul_pd(radius, margin));
-        // The four points (x, y, z, grown radius): a 4 x 4 transposition.
-        const __m256d xy0 = _mm256_unpacklo_pd(xAxis[0], xAxis[1]), xy1 = _mm256_unpackhi_pd(xAxis[0], xAxis[1]);
-        const __m256d zr0 = _mm256_unpacklo_pd(xAxis[2], grown), zr1 = _mm256_unpackhi_pd(xAxis[2], grown);
-        double* points = reinterpret_cast<double*>(one.points + i);
-        _mm256_storeu_pd(points, _mm256_permute2f128_pd(xy0, zr0, 0x20));
-        _mm256_storeu_pd(points + 4, _mm256_permute2f128_pd(xy1, zr1, 0x20));
-        _mm256_storeu_pd(points + 8, _mm256_permute2f128_pd(xy0, zr0, 0x31));
-        _mm256_storeu_pd(points + 12, _mm256_permute2f128_pd(xy1, zr1, 0x31));
-        // (max(0, g) is g for a NaN g, as std::max(g, 0.0) is.)
-        growth = lanes::largerBits(growth, _mm256_castpd_si256(_mm256_max_pd(zero, _mm256_sub_pd(grown, radius))));
-    }
-    m.displacement2 = lanes::largestBits(displacement2);
-    m.positionsBefore += lanes::sumOfLanes(positionsBefore);
-    m.positionsAfter += lanes::sumOfLanes(positionsAfter);
-    m.speed2 = lanes::largestBits(speed2);
-    m.coordinate = lanes::largestBits(coordinate);
-    m.growth = lanes::largestBits(growth);
-    for (int axis = 0; axis < 3; ++axis) {
-        alignas(32) double sums[4];
-        _mm256_store_pd(sums, velocitySum[axis]);
-        m.velocitySum[axis] = (sums[0] + sums[1]) + (sums[2] + sums[3]);
-    }
+    m.displacement2 = largestBits(displacement2);
+    m.positionsBefore += sumOfBits(positionsBefore);
+    m.positionsAfter += sumOfBits(positionsAfter);
+    m.speed2 = largestBits(speed2);
+    m.coordinate = largestBits(coordinate);
+    m.growth = largestBits(growth);
+    for (int c = 0; c < 3; ++c) m.velocitySum[c] = sum(velocitySum[c]);
     return i;
 }
 #endif
@@ -393,13 +214,6 @@ double largestDisplacement(const ParticleStore& p, const std::vector<Vec3>& refe
         largest = std::max(largest, std::bit_cast<std::uint64_t>(squaredNorm(d[0], d[1], d[2])));
     }
     return std::sqrt(std::bit_cast<double>(largest));
-}
-
-DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
-                                        const std::vector<Vec3>* reference, const Vec3& gravity,
-                                        const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points) {
-    startFirstHalf(p, previousForce, points);
-    return kickDriftAndStartForces(p, previousForce, domain, reference, gravity, frameVelocity, dt, points, 0, p.size());
 }
 
 void startFirstHalf(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points) {
@@ -442,10 +256,8 @@ DriftPassResult driftPass(ParticleStore& p, const double* oldForce, double* kept
                           dt};
     Maxima m;
     std::size_t i = first;
-#if defined(TALUS_AVX512_LANES)
-    i = inEightParticleLanes<Close>(one, domain, p, m, first, last);
-#elif defined(TALUS_AVX2_LANES)
-    i = inFourParticleLanes<Close>(one, domain, p, m, first, last);
+#if TALUS_LANES_WIDTH > 1
+    i = inParticleLanes<Close, lanes::ParticleLanes>(one, domain, p, m, first, last);
 #endif
     for (; i < last; ++i) one.operator()<Close>(i, m);
     result.moves = {std::bit_cast<double>(m.displacement2), std::bit_cast<double>(m.speed2),
@@ -479,4 +291,7 @@ DriftPassResult closeKickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>
                            dt, points, first, last);
 }
 
-}  // namespace talus
+const DriftPassKernels driftPassKernels{positionSum, startFirstHalf, largestDisplacement, kickDriftAndStartForces,
+                                        closeKickDriftAndStartForces};
+
+}  // namespace talus::TALUS_LANES

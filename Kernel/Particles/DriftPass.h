@@ -1,5 +1,6 @@
-// The first half of a velocity Verlet step of spheres (Theory/Integration.md eq. (3)-(6)) in one pass over the particles,
-// with everything else that a step reads the positions and velocities for before the contacts:
+// The first half of a velocity Verlet step of spheres (Theory/Integration.md eq. (3)-(6)) in one
+// pass over the particles, with everything else that a step reads the positions and velocities for
+// before the contacts:
 //   1. the half kick v += (dt/2) F/m, w += (dt/2) T/I and the drift x += dt v of the mobile
 //      particles (Particles/VelocityVerlet.h halfKickAndDrift, the same arithmetic);
 //   2. the wrap into the periodic box (Domain::wrap);

@@ -1,4 +1,5 @@
-// All particles of a simulation as a structure of arrays (Documentation/Architecture.md "Data layout").
+// All particles of a simulation as a structure of arrays (Documentation/Architecture.md "Data
+// layout").
 //
 // Index i is a particle's current slot (it may change when particles are reordered or removed);
 // id[i] is its global id, unique for the life of the simulation and written to every output
@@ -29,11 +30,11 @@ struct ParticleStore {
     std::vector<std::uint8_t> fixed;   // 1: not integrated (still collides)
     std::vector<std::int32_t> motion;  // index into Simulation's prescribed motions, or -1
 
-    // Non-spherical particles (Theory/Superquadrics.md), present only in scenes that have them: these arrays are
-    // empty otherwise, so that spheres pay nothing. shape[i] indexes SimulationState::shapes (-1: a
-    // sphere); a shaped particle's radius is its bounding radius (what the neighbour search needs),
-    // its rotation state the lab angular momentum, from which angularVelocity is derived
-    // (Particles/RigidBodyRotation.h), and invInertia is unused.
+    // Non-spherical particles (Theory/Superquadrics.md), present only in scenes that have them:
+    // these arrays are empty otherwise, so that spheres pay nothing. shape[i] indexes
+    // SimulationState::shapes (-1: a sphere); a shaped particle's radius is its bounding radius
+    // (what the neighbour search needs), its rotation state the lab angular momentum, from which
+    // angularVelocity is derived (Particles/RigidBodyRotation.h), and invInertia is unused.
     std::vector<Quat> orientation;       // body to lab
     std::vector<Vec3> angularMomentum;   // lab frame
     std::vector<Vec3> principalInertia;  // about the body axes (0 for spheres and fixed particles)

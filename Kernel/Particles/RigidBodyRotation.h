@@ -1,5 +1,6 @@
-// Rotation of a non-spherical rigid particle (Theory/Integration.md eq. (7)-(10): "the full rigid-body equations, not
-// scalar"); Documentation/Superquadrics/RigidBodyRotation.md derives what is written here.
+// Rotation of a non-spherical rigid particle (Theory/Integration.md eq. (7)-(10): "the full
+// rigid-body equations, not scalar"); Documentation/Superquadrics/RigidBodyRotation.md derives what
+// is written here.
 //
 // State of one particle:
 //   orientation q      unit quaternion, body to lab: x_lab = A(q) x_body, A = R(q);
@@ -193,8 +194,8 @@ namespace detail {
 
 // The exact flow of T_k = rate M_k^2 / 2 (e the body axis k) for a time t: the body turns about
 // its own axis at the constant rate `rate M_k`, q <- q (cos(phi/2), sin(phi/2) e) with
-// phi = rate M_k t, and the body components of the lab-fixed L turn the other way, M <- R_e(-phi) M,
-// as in DLM: M - 2 sin^2(phi/2) (M - e M_k) - 2 sin(phi/2) cos(phi/2) (e x M), which leaves M_k
+// phi = rate M_k t, and the body components of the lab-fixed L turn the other way, M <- R_e(-phi)
+// M, as in DLM: M - 2 sin^2(phi/2) (M - e M_k) - 2 sin(phi/2) cos(phi/2) (e x M), which leaves M_k
 // exactly as it was. A zero rate or time is the identity, exactly (sin 0 = 0, cos 0 = 1).
 template <class SinCos>
 [[gnu::always_inline]] inline void rotateAboutBodyAxis(RotationLane& r, double& Mx, double& My, double& Mz,

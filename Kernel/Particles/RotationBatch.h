@@ -16,16 +16,6 @@
 
 namespace talus {
 
-// One particle's turn: L += kick torque, then (drift > 0) the drift, then omega.
-template <class SinCos>
-[[gnu::always_inline]] inline void turnRigidBody(RotationLane& r, double tx, double ty, double tz, double kick,
-                                                 double drift, SinCos sinCos) {
-    r.Lx += kick * tx, r.Ly += kick * ty, r.Lz += kick * tz;
-    r.largestAngle = 0;
-    if (drift > 0) driftOrientation(r, drift, sinCos);
-    turnedSpin(r);
-}
-
 class RotationBatch {
 public:
     static constexpr int size = 16;
@@ -34,70 +24,51 @@ public:
 
     void add(std::uint32_t slot, const ParticleStore& p) {
         const int l = count_++;
-        slot_[l] = slot;
+        slots[l] = slot;
         const Quat& q = p.orientation[slot];
-        qw_[l] = q.w(), qx_[l] = q.x(), qy_[l] = q.y(), qz_[l] = q.z();
+        qw[l] = q.w(), qx[l] = q.x(), qy[l] = q.y(), qz[l] = q.z();
         const Vec3 &L = p.angularMomentum[slot], &t = p.torque[slot];
-        Lx_[l] = L.x(), Ly_[l] = L.y(), Lz_[l] = L.z(), tx_[l] = t.x(), ty_[l] = t.y(), tz_[l] = t.z();
+        Lx[l] = L.x(), Ly[l] = L.y(), Lz[l] = L.z(), tx[l] = t.x(), ty[l] = t.y(), tz[l] = t.z();
         const RotationAxes a = rotationAxesOf(p.principalInertia[slot]);
-        medianRate_[l] = a.medianRate, outerRate_[l] = a.outerRate, innerRate_[l] = a.innerRate;
-        for (int k = 0; k < 3; ++k) outer_[k][l] = a.outer[k], inner_[k][l] = a.inner[k], inverseInertia_[k][l] = a.inverseInertia[k];
+        medianRate[l] = a.medianRate, outerRate[l] = a.outerRate, innerRate[l] = a.innerRate;
+        for (int k = 0; k < 3; ++k) outer[k][l] = a.outer[k], inner[k][l] = a.inner[k], inverseInertia[k][l] = a.inverseInertia[k];
     }
 
-    // Every lane turned, written back to the particles.
-    void flush(ParticleStore& p, double kick, double drift) {
-        if (drift > 0)
-            compute<true>(kick, drift);
-        else
-            compute<false>(kick, drift);
-        for (int l = 0; l < count_; ++l) {
-            const std::uint32_t i = slot_[l];
-            if (!(large_[l] <= detail::smallAngle)) [[unlikely]] {  // again, from the saved state, with the library's sine and cosine
-                RotationLane r = lane(l);
-                turnRigidBody(r, tx_[l], ty_[l], tz_[l], kick, drift,
-                              [](double x, double& s, double& c) { detail::sinCos(x, s, c); });
-                store(r, l);
-            }
-            p.orientation[i] = Quat(outQw_[l], outQx_[l], outQy_[l], outQz_[l]);
-            p.angularMomentum[i] = Vec3(outLx_[l], outLy_[l], outLz_[l]);
-            p.angularVelocity[i] = Vec3(wx_[l], wy_[l], wz_[l]);
-        }
-        count_ = 0;
-    }
+    // Every lane turned, written back to the particles (in the lanes of the form in use:
+    // Particles/RotationBatchLanes.h).
+    void flush(ParticleStore& p, double kick, double drift);
 
-private:
-    template <bool withDrift>
-    [[gnu::noinline]] void compute(double kick, double drift) {
-        for (int l = 0; l < count_; ++l) {
-            RotationLane r = lane(l);
-            turnRigidBody(r, tx_[l], ty_[l], tz_[l], kick, withDrift ? drift : 0.0, detail::smallSinCos);
-            store(r, l);
-        }
-    }
-
+    // Lane l as one particle's numbers, and back (for the form's pass).
     [[gnu::always_inline]] RotationLane lane(int l) const {
-        const RotationAxes a{medianRate_[l],
-                             {outer_[0][l], outer_[1][l], outer_[2][l]},
-                             outerRate_[l],
-                             {inner_[0][l], inner_[1][l], inner_[2][l]},
-                             innerRate_[l],
-                             {inverseInertia_[0][l], inverseInertia_[1][l], inverseInertia_[2][l]}};
-        return {qw_[l], qx_[l], qy_[l], qz_[l], Lx_[l], Ly_[l], Lz_[l], a, 0, 0, 0, 0};
+        const RotationAxes a{medianRate[l],
+                             {outer[0][l], outer[1][l], outer[2][l]},
+                             outerRate[l],
+                             {inner[0][l], inner[1][l], inner[2][l]},
+                             innerRate[l],
+                             {inverseInertia[0][l], inverseInertia[1][l], inverseInertia[2][l]}};
+        return {qw[l], qx[l], qy[l], qz[l], Lx[l], Ly[l], Lz[l], a, 0, 0, 0, 0};
     }
     [[gnu::always_inline]] void store(const RotationLane& r, int l) {
-        outQw_[l] = r.qw, outQx_[l] = r.qx, outQy_[l] = r.qy, outQz_[l] = r.qz;
-        outLx_[l] = r.Lx, outLy_[l] = r.Ly, outLz_[l] = r.Lz;
-        wx_[l] = r.wx, wy_[l] = r.wy, wz_[l] = r.wz;
-        large_[l] = r.largestAngle;
+        outQw[l] = r.qw, outQx[l] = r.qx, outQy[l] = r.qy, outQz[l] = r.qz;
+        outLx[l] = r.Lx, outLy[l] = r.Ly, outLz[l] = r.Lz;
+        wx[l] = r.wx, wy[l] = r.wy, wz[l] = r.wz;
+        large[l] = r.largestAngle;
     }
 
+    int count() const { return count_; }
+    void clear() { count_ = 0; }
+
+    // The lanes, by particle number l: the slot, orientation, angular momentum and torque, the
+    // rotation axes (RotationAxes), and the turned orientation, momentum and spin.
+    std::uint32_t slots[size];
+    double qw[size], qx[size], qy[size], qz[size], Lx[size], Ly[size], Lz[size], tx[size], ty[size], tz[size];
+    double medianRate[size], outerRate[size], innerRate[size];  // (RotationAxes, lane by lane)
+    double outer[3][size], inner[3][size], inverseInertia[3][size];
+    double outQw[size], outQx[size], outQy[size], outQz[size], outLx[size], outLy[size], outLz[size];
+    double wx[size], wy[size], wz[size], large[size];
+
+private:
     int count_ = 0;
-    std::uint32_t slot_[size];
-    double qw_[size], qx_[size], qy_[size], qz_[size], Lx_[size], Ly_[size], Lz_[size], tx_[size], ty_[size], tz_[size];
-    double medianRate_[size], outerRate_[size], innerRate_[size];  // (RotationAxes, lane by lane)
-    double outer_[3][size], inner_[3][size], inverseInertia_[3][size];
-    double outQw_[size], outQx_[size], outQy_[size], outQz_[size], outLx_[size], outLy_[size], outLz_[size];
-    double wx_[size], wy_[size], wz_[size], large_[size];
 };
 
 }  // namespace talus

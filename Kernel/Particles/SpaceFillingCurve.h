@@ -1,4 +1,5 @@
-// Particle order along a space-filling curve, for cache locality (Documentation/Architecture.md "Data layout").
+// Particle order along a space-filling curve, for cache locality (Documentation/Architecture.md
+// "Data layout").
 //
 // The force loop reads the data of both particles of every listed pair. If the particles that are
 // near in space are near in memory, those reads hit the cache; a granular flow stirs its particles,

@@ -1,189 +1,27 @@
 // The kicks and the drift of the velocity Verlet (kick-drift-kick) step of the mobile particles
-// (Theory/Integration.md eq. (3)-(6)): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v.
-// Fixed particles are left alone (prescribed motions move them elsewhere).
-//
-// The loops run over the coordinates as plain arrays. Written over std::vector<Vec3>, the
-// compiler has to assume that every store into a particle's coordinates may change the vectors'
-// own data pointers, reloads them for every particle and keeps the loops scalar: they took 15%
-// of a dilute chute flow's step (Documentation/Performance.md). Here they vectorise, with the
-// same arithmetic per particle as before (the results are the same to the bit).
-//
-// With AVX-512 they take eight particles at a time in lanes written by hand
-// (Math/EightParticleLanes.h), 2.5x faster than GCC's vectorisation of the loops below, which is
-// left for the last few particles; with AVX2 only, four at a time (Math/FourParticleLanes.h), and
-// without either (a portable build) as GCC vectorises the loops below.
+// (Documentation/Theory/Integration.md eq. (3)-(6)): v += (dt/2) F/m, w += (dt/2) T/I, x += dt v. Fixed
+// particles are left alone (prescribed motions move them elsewhere). Each pass runs in the lanes
+// of the form in use (Math/LaneForm.h; the passes themselves: Particles/VelocityVerletLanes.h).
 #pragma once
 
-#include <bit>
 #include <cstddef>
-#include <cstdint>
 
-#include "Math/EightParticleLanes.h"
-#include "Math/FourParticleLanes.h"
+#include "Math/Vector.h"
 #include "Particles/ParticleStore.h"
 
 namespace talus {
 
-namespace detail {
-// x unless keep (all bits set), then `moved`. The fixed particles keep x by this bit mask: with a
-// branch or a conditional expression GCC 12 does not vectorise the loop, and with a zero step
-// instead x + 0 r would turn -0 into +0.
-inline double unlessKept(double x, double moved, std::uint64_t keep) {
-    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(x) & keep) | (std::bit_cast<std::uint64_t>(moved) & ~keep));
-}
-
-// x[c] += step * scale[i] * rate[c] for the three coordinates c of every particle i in [0, n)
-// that is not fixed.
-inline void advanceMobile(double* __restrict x, const double* __restrict rate, const double* __restrict scale,
-                          const std::uint8_t* __restrict fixed, std::size_t n, double step) {
-    std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, step, scale + i);
-        for (int c = 0; c < 3; ++c) {
-            double* xc = x + 3 * i + 8 * c;
-            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), block.factor[c], _mm512_loadu_pd(rate + 3 * i + 8 * c), c));
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], factor[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(scale + i)), factor);
-        for (int c = 0; c < 3; ++c) {
-            double* xc = x + 3 * i + 4 * c;
-            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), factor[c], _mm256_loadu_pd(rate + 3 * i + 4 * c), moves[c]));
-        }
-    }
-#endif
-    for (; i < n; ++i) {
-        const double s = step * scale[i];
-        const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
-        // (Three statements, not a loop of three: GCC would vectorise that inner loop instead.)
-        double* xi = x + 3 * i;
-        const double* ri = rate + 3 * i;
-        xi[0] = unlessKept(xi[0], lanes::multiplyAdd(s, ri[0], xi[0]), keep);
-        xi[1] = unlessKept(xi[1], lanes::multiplyAdd(s, ri[1], xi[1]), keep);
-        xi[2] = unlessKept(xi[2], lanes::multiplyAdd(s, ri[2], xi[2]), keep);
-    }
-}
-
-// The half kick of the velocities and the drift in one pass: v += step F/m as advanceMobile does
-// it, then x += dt v (the same results to the bit as a kick pass and a drift pass), the
-// velocities read once.
-inline void kickAndDriftMobile(double* __restrict x, double* __restrict v, const double* __restrict force,
-                               const double* __restrict invMass, const std::uint8_t* __restrict fixed, std::size_t n,
-                               double step, double dt) {
-    std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, step, invMass + i);
-        const __m512d drift = _mm512_set1_pd(dt);
-        for (int c = 0; c < 3; ++c) {
-            double* vc = v + 3 * i + 8 * c;
-            double* xc = x + 3 * i + 8 * c;
-            const __m512d kicked =
-                block.advance(_mm512_loadu_pd(vc), block.factor[c], _mm512_loadu_pd(force + 3 * i + 8 * c), c);
-            _mm512_storeu_pd(vc, kicked);
-            _mm512_storeu_pd(xc, block.advance(_mm512_loadu_pd(xc), drift, kicked, c));
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    const __m256d drift = _mm256_set1_pd(dt);
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], factor[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_mul_pd(_mm256_set1_pd(step), _mm256_loadu_pd(invMass + i)), factor);
-        for (int c = 0; c < 3; ++c) {
-            double* vc = v + 3 * i + 4 * c;
-            double* xc = x + 3 * i + 4 * c;
-            const __m256d kicked =
-                lanes::advance(_mm256_loadu_pd(vc), factor[c], _mm256_loadu_pd(force + 3 * i + 4 * c), moves[c]);
-            _mm256_storeu_pd(vc, kicked);
-            _mm256_storeu_pd(xc, lanes::advance(_mm256_loadu_pd(xc), drift, kicked, moves[c]));
-        }
-    }
-#endif
-    for (; i < n; ++i) {
-        const double s = step * invMass[i];
-        const std::uint64_t keep = fixed[i] ? ~std::uint64_t{0} : 0;
-        double* xi = x + 3 * i;
-        double* vi = v + 3 * i;
-        const double* fi = force + 3 * i;
-        const double v0 = unlessKept(vi[0], lanes::multiplyAdd(s, fi[0], vi[0]), keep),
-                     v1 = unlessKept(vi[1], lanes::multiplyAdd(s, fi[1], vi[1]), keep),
-                     v2 = unlessKept(vi[2], lanes::multiplyAdd(s, fi[2], vi[2]), keep);
-        vi[0] = v0, vi[1] = v1, vi[2] = v2;
-        xi[0] = unlessKept(xi[0], lanes::multiplyAdd(dt, v0, xi[0]), keep);
-        xi[1] = unlessKept(xi[1], lanes::multiplyAdd(dt, v1, xi[1]), keep);
-        xi[2] = unlessKept(xi[2], lanes::multiplyAdd(dt, v2, xi[2]), keep);
-    }
-}
-}  // namespace detail
-
 // The forces a step starts from, before the contacts add theirs: gravity m g on the mobile
 // particles, none on the fixed ones; no torques. (All particles, ghosts included.)
-inline void startForcesWithGravity(ParticleStore& p, const Vec3& gravity) {
-    const std::size_t n = p.size();
-    p.force.resize(n);
-    p.torque.resize(n);
-    if (n == 0) return;
-    double* __restrict force = p.force[0].data();
-    double* __restrict torque = p.torque[0].data();
-    const double* __restrict mass = p.mass.data();
-    const std::uint8_t* __restrict fixed = p.fixed.data();
-    std::size_t i = 0;
-#ifdef TALUS_AVX512_LANES
-    __m512d g[3];
-    lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
-    for (; i + 8 <= n; i += 8) {
-        const lanes::MobileLanes block(fixed + i, 1.0, mass + i);  // (1 m is m, exactly)
-        for (int c = 0; c < 3; ++c) {
-            _mm512_storeu_pd(force + 3 * i + 8 * c, _mm512_maskz_mul_pd(block.of[c], block.factor[c], g[c]));
-            _mm512_storeu_pd(torque + 3 * i + 8 * c, _mm512_setzero_pd());
-        }
-    }
-#elif defined(TALUS_AVX2_LANES)
-    __m256d g[3];
-    lanes::perAxis(gravity.x(), gravity.y(), gravity.z(), g);
-    for (; i + 4 <= n; i += 4) {
-        __m256d moves[3], weight[3];
-        lanes::spread(lanes::mobileOf(fixed + i), moves);
-        lanes::spread(_mm256_loadu_pd(mass + i), weight);
-        for (int c = 0; c < 3; ++c) {
-            _mm256_storeu_pd(force + 3 * i + 4 * c, _mm256_and_pd(_mm256_mul_pd(weight[c], g[c]), moves[c]));
-            _mm256_storeu_pd(torque + 3 * i + 4 * c, _mm256_setzero_pd());
-        }
-    }
-#endif
-    for (; i < n; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            force[3 * i + c] = fixed[i] ? 0.0 : mass[i] * gravity[c];
-            torque[3 * i + c] = 0;
-        }
-    }
-}
+void startForcesWithGravity(ParticleStore& p, const Vec3& gravity);
 
 // The half kick of the mobile particles in slots [first, last): v += (dt/2) F/m, w += (dt/2) T/I.
-inline void halfKick(ParticleStore& p, std::size_t first, std::size_t last, double halfStep) {
-    if (first >= last) return;
-    const std::size_t n = last - first;
-    detail::advanceMobile(p.velocity[first].data(), p.force[first].data(), p.invMass.data() + first,
-                          p.fixed.data() + first, n, halfStep);
-    detail::advanceMobile(p.angularVelocity[first].data(), p.torque[first].data(), p.invInertia.data() + first,
-                          p.fixed.data() + first, n, halfStep);
-}
+void halfKick(ParticleStore& p, std::size_t first, std::size_t last, double halfStep);
 // The same among the first n.
 inline void halfKick(ParticleStore& p, std::size_t n, double halfStep) { halfKick(p, 0, n, halfStep); }
 
 // The first half kick and the drift of the mobile particles among the first n in one pass over
 // the translational data (halfKick then drift, the same to the bit).
-inline void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, double dt) {
-    if (n == 0) return;
-    detail::kickAndDriftMobile(p.position[0].data(), p.velocity[0].data(), p.force[0].data(), p.invMass.data(),
-                               p.fixed.data(), n, halfStep, dt);
-    detail::advanceMobile(p.angularVelocity[0].data(), p.torque[0].data(), p.invInertia.data(), p.fixed.data(),
-                                n, halfStep);
-}
+void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, double dt);
 
 }  // namespace talus

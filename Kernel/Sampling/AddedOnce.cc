@@ -5,7 +5,7 @@
 namespace talus {
 
 namespace {
-bool addsHere(const Simulation& simulation) { return !simulation.onRanks() || simulation.rank() == 0; }
+bool addsHere(const Simulation& simulation) { return !simulation.ranks().isSplit() || simulation.ranks().rank() == 0; }
 }  // namespace
 
 void addParticleOnce(Simulation& simulation, const Vec3& position, double radius, std::size_t species,

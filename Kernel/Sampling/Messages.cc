@@ -9,7 +9,7 @@
 namespace talus {
 
 void say(const Simulation& simulation, const char* format, ...) {
-    if (simulation.rank() != 0) return;
+    if (simulation.ranks().rank() != 0) return;
     va_list arguments;
     va_start(arguments, format);
     std::vprintf(format, arguments);
@@ -17,11 +17,11 @@ void say(const Simulation& simulation, const char* format, ...) {
 }
 
 void writeFileOnce(const Simulation& simulation, const std::string& path, const std::function<void(std::ostream&)>& write) {
-    if (simulation.rank() == 0) replaceFile(path, write);
+    if (simulation.ranks().rank() == 0) replaceFile(path, write);
 }
 
 void requireOnAllRanks(const Simulation& simulation, bool condition, const std::string& message) {
-    if (!condition) throw CollectiveError(message, simulation.rank() != 0);
+    if (!condition) throw CollectiveError(message, simulation.ranks().rank() != 0);
 }
 
 }  // namespace talus

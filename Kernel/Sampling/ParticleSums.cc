@@ -59,7 +59,7 @@ Totals totalsOver(const Simulation& simulation, const Selection& selection) {
             sum[8 + k] += m * p.position[i][k];
         }
     }
-    simulation.sumOverRanks(sum);
+    simulation.ranks().sum(sum);
     Totals t;
     t.count = sum[0], t.mass = sum[1], t.volume = sum[2], t.translationalEnergy = sum[3], t.rotationalEnergy = sum[4];
     t.momentum = Vec3(sum[5], sum[6], sum[7]);
@@ -75,7 +75,7 @@ std::vector<double> sumsOver(const Simulation& simulation, const Selection& sele
         if (!selection(p, i)) continue;
         for (std::size_t q = 0; q < quantities.size(); ++q) sum[q] += quantities[q](p, i);
     }
-    simulation.sumOverRanks(sum);
+    simulation.ranks().sum(sum);
     return sum;
 }
 
@@ -84,7 +84,7 @@ double sumOver(const Simulation& simulation, const Selection& selection, const P
 }
 
 std::vector<double> sumOverScene(const Simulation& simulation, std::vector<double> parts) {
-    simulation.sumOverRanks(parts);
+    simulation.ranks().sum(parts);
     return parts;
 }
 
@@ -93,7 +93,7 @@ double maxOver(const Simulation& simulation, const Selection& selection, const P
     double largest = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < p.owned(); ++i)
         if (selection(p, i)) largest = std::max(largest, quantity(p, i));
-    return simulation.maxOverRanks(largest);
+    return simulation.ranks().max(largest);
 }
 
 double minOver(const Simulation& simulation, const Selection& selection, const ParticleQuantity& quantity) {
@@ -114,7 +114,7 @@ ParticleStore gatherParticles(const Simulation& simulation, const Selection& sel
     ParticleStore out;
     // One process holds the whole scene (one rank, or setupInitialConditions, which every rank
     // runs on the whole scene): a copy in slot order, the selected slots first, the rest cut off.
-    if (!simulation.onRanks()) {
+    if (!simulation.ranks().isSplit()) {
         out = p;
         out.dropGhosts();
         std::vector<std::size_t> order = selected;
@@ -129,10 +129,11 @@ ParticleStore gatherParticles(const Simulation& simulation, const Selection& sel
     // On ranks: each rank writes its particles' numbers into its own stretch of one list, zeros
     // elsewhere; the sum over ranks is then every rank's numbers exactly (x + 0 = x).
     constexpr std::size_t fields = 21;
-    std::vector<double> counts(static_cast<std::size_t>(simulation.ranks()), 0.0);
-    counts[static_cast<std::size_t>(simulation.rank())] = static_cast<double>(selected.size());
-    simulation.sumOverRanks(counts);
-    const auto before = static_cast<std::size_t>(std::accumulate(counts.begin(), counts.begin() + simulation.rank(), 0.0));
+    const RankContext& ranks = simulation.ranks();
+    std::vector<double> counts(static_cast<std::size_t>(ranks.count()), 0.0);
+    counts[static_cast<std::size_t>(ranks.rank())] = static_cast<double>(selected.size());
+    ranks.sum(counts);
+    const auto before = static_cast<std::size_t>(std::accumulate(counts.begin(), counts.begin() + ranks.rank(), 0.0));
     const auto total = static_cast<std::size_t>(std::accumulate(counts.begin(), counts.end(), 0.0));
     std::vector<double> numbers(total * fields, 0.0);
     for (std::size_t k = 0; k < selected.size(); ++k) {
@@ -146,7 +147,7 @@ ParticleStore gatherParticles(const Simulation& simulation, const Selection& sel
                                     double(p.fixed[i]), p.isShaped(i) ? double(p.shape[i]) : -1.0, q.w(), q.x(), q.y(), q.z()};
         std::copy(row, row + fields, n);
     }
-    simulation.sumOverRanks(numbers);
+    simulation.ranks().sum(numbers);
     std::vector<std::size_t> byId(total);
     std::iota(byId.begin(), byId.end(), 0);
     std::sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) {

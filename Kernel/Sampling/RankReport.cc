@@ -10,14 +10,14 @@
 namespace talus {
 
 std::string describeRanks(const Simulation& simulation) {
-    const DomainSplit::Timings& seconds = simulation.domainSplit()->seconds;
+    const DomainSplit::Timings& seconds = simulation.ranks().split()->seconds;
     std::vector<double> sums = {seconds.total(), double(simulation.scene().particles().ghostCount), seconds.ghosts,
                                 seconds.agreement};
-    simulation.sumOverRanks(sums);
-    const double ranks = simulation.ranks(), wall = std::max(simulation.lastRun().wallSeconds, 1e-300);
+    simulation.ranks().sum(sums);
+    const double ranks = simulation.ranks().count(), wall = std::max(simulation.lastRun().wallSeconds, 1e-300);
     char text[200];
     std::snprintf(text, sizeof text, "ranks %d  communication %.1f%%  ghosts %.0f  (ghost exchange %.1f%%, agreement %.1f%%)",
-                  simulation.ranks(), 100 * sums[0] / ranks / wall, sums[1], 100 * sums[2] / ranks / wall,
+                  simulation.ranks().count(), 100 * sums[0] / ranks / wall, sums[1], 100 * sums[2] / ranks / wall,
                   100 * sums[3] / ranks / wall);
     return text;
 }

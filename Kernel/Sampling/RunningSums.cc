@@ -25,7 +25,7 @@ void RunningSums::addStepIntegral(std::size_t k, const Selection& selection, con
 }
 
 void RunningSums::sumParts() {
-    simulation_.sumOverRanks(unsummed_);
+    simulation_.ranks().sum(unsummed_);
     for (std::size_t k = 0; k < totals_.size(); ++k) totals_[k] += unsummed_[k];
     unsummed_.assign(totals_.size(), 0.0);
 }

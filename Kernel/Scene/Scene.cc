@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "Particles/RigidBodyRotation.h"
+#include "Parallel/RankContext.h"
 
 namespace talus {
 
@@ -44,7 +45,7 @@ std::size_t Scene::addParticle(const Vec3& position, double radius, std::size_t 
     // New particles go before the ghosts: with a valid list they move the ghosts up a slot and
     // have their pairs relisted (PairList::relist); otherwise the ghosts go until the next build.
     const bool beforeGhosts = p.ghostCount > 0 && state_.pairList.valid;
-    if (p.ghostCount > 0 && !beforeGhosts) ranks_.releaseGhosts();
+    if (p.ghostCount > 0 && !beforeGhosts) ranks_.releaseGhosts(state_);
     p.position.push_back(position);
     p.velocity.push_back(velocity);
     p.angularVelocity.push_back(angularVelocity);
@@ -55,9 +56,7 @@ std::size_t Scene::addParticle(const Vec3& position, double radius, std::size_t 
     p.invMass.push_back(1.0 / mass);
     p.invInertia.push_back(1.0 / (0.4 * mass * radius * radius));
     p.species.push_back(static_cast<std::uint32_t>(species));
-    // On ranks a new particle gets a provisional id, unique to this rank, until all ranks number
-    // their new particles together (renumberNewParticles, at the next list build or save).
-    p.id.push_back(ranks_.onRanks() ? ranks_.provisionalId() : state_.nextId++);
+    p.id.push_back(ranks_.idOfNewParticle(state_));  // (on ranks a provisional one)
     p.fixed.push_back(0);
     p.motion.push_back(-1);
     if (p.hasShapes()) {
@@ -68,7 +67,7 @@ std::size_t Scene::addParticle(const Vec3& position, double radius, std::size_t 
     }
     const std::size_t slot = beforeGhosts ? p.moveLastBeforeGhosts() : p.size() - 1;
     // The list relists the new particle's pairs at the next force computation (on ranks if no
-    // other rank needs it: Scene::updateNeighbourhoodOnRanks).
+    // other rank needs it: RankContext::updateNeighbourhood).
     // (p.position[slot], not `position`: that may be a reference into the array the push_back
     // above moved, as the maser's copies are made.)
     state_.pairList.noteInserted(static_cast<std::uint32_t>(slot), p.position[slot]);
@@ -140,13 +139,13 @@ void Scene::moveParticleBy(std::size_t slot, const Vec3& jump) {
     state_.particles.position[slot] += jump;
     // On ranks a particle that another rank holds as a ghost makes the list build anew (its
     // ghost would jump there unseen by that rank's list).
-    if (ranks_.onRanks() && ranks_.isSentAsGhost(slot)) state_.pairList.valid = false;
+    if (ranks_.isSentAsGhost(slot)) state_.pairList.valid = false;
     else state_.pairList.noteJumped(static_cast<std::uint32_t>(slot), jump);
 }
 
 void Scene::removeParticle(std::size_t slot) {
     require(slot < state_.particles.owned(), "removeParticle: slot " + std::to_string(slot) + " does not exist");
-    if (state_.particles.ghostCount > 0) ranks_.releaseGhosts();
+    if (state_.particles.ghostCount > 0) ranks_.releaseGhosts(state_);
     const auto last = static_cast<std::uint32_t>(state_.particles.size() - 1);
     state_.particles.removeBySwap(slot);
     state_.pairList.followRemoval(static_cast<std::uint32_t>(slot), last);
@@ -235,7 +234,7 @@ std::size_t Scene::slotOf(std::uint64_t id, bool ghosts) const {
     const auto end = ids.begin() + static_cast<std::ptrdiff_t>(ghosts ? ids.size() : state_.particles.owned());
     const auto it = std::find(ids.begin(), end, id);
     require(it != end, "no particle has id " + std::to_string(id) +
-                           (ranks_.onRanks() ? " on rank " + std::to_string(ranks_.rank()) : ""));
+                           (ranks_.isSplit() ? " on rank " + std::to_string(ranks_.rank()) : ""));
     return static_cast<std::size_t>(it - ids.begin());
 }
 

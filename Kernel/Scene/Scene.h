@@ -2,7 +2,7 @@
 // species, particles (spheres and superquadrics), walls, prescribed motions and boundaries, as a
 // driver builds them in setupInitialConditions() and edits them during a run, each call checking
 // its input; validate() checks the whole before the run starts. A driver reaches it through
-// Simulation::scene(); it works on the simulation's state and asks the rank context (SceneRanks)
+// Simulation::scene(); it works on the simulation's state and asks the rank context (Parallel/RankContext.h)
 // what splitting the scene over ranks changes.
 #pragma once
 
@@ -16,28 +16,11 @@
 namespace talus {
 
 class Boundary;
-
-// What the scene asks of the ranks the run is split over (Parallel/DomainSplit.h); Simulation
-// answers. Without a split: not on ranks, nothing to release, nobody else holds a ghost.
-class SceneRanks {
-public:
-    virtual bool onRanks() const = 0;
-    virtual int rank() const = 0;
-    virtual double sumOverRanks(double x) const = 0;
-    // The ghosts go (before the particle arrays change in a way the ghost slots cannot follow).
-    virtual void releaseGhosts() = 0;
-    // An id for a particle added on this rank, unique until the ranks renumber their new ones.
-    virtual std::uint64_t provisionalId() = 0;
-    // Whether another rank holds this particle as a ghost.
-    virtual bool isSentAsGhost(std::size_t slot) const = 0;
-
-protected:
-    ~SceneRanks() = default;
-};
+class RankContext;
 
 class Scene {
 public:
-    Scene(SimulationState& state, SceneRanks& ranks) : state_(state), ranks_(ranks) {}
+    Scene(SimulationState& state, RankContext& ranks) : state_(state), ranks_(ranks) {}
 
     // --- gravity and the box ---
     void setGravity(const Vec3& g);
@@ -118,7 +101,7 @@ private:
     std::size_t fixParticle(std::size_t slot, int motion);
 
     SimulationState& state_;
-    SceneRanks& ranks_;
+    RankContext& ranks_;
     std::vector<Boundary*> boundaries_;
 };
 

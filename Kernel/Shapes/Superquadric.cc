@@ -33,8 +33,9 @@ Superquadric::Superquadric(double a, double b, double c, double e1, double e2) :
     if (!(e2 > 0 && e2 <= 1)) throw Error("superquadric blockiness e2 must lie in (0, 1] (convex shapes), got " + str(e2));
     // The surface in angles eta (latitude), omega (longitude): x = a cos^e1(eta) cos^e2(omega),
     // y = b cos^e1(eta) sin^e2(omega), z = c sin^e1(eta). Its squared distance from the centre is
-    // cos^(2 e1)(eta) g + c^2 sin^(2 e1)(eta) with g = a^2 cos^(2 e2)(omega) + b^2 sin^(2 e2)(omega):
-    // the longitude maximises g alone, then the latitude the rest, both of the form above.
+    // cos^(2 e1)(eta) g + c^2 sin^(2 e1)(eta) with g = a^2 cos^(2 e2)(omega) + b^2 sin^(2
+    // e2)(omega): the longitude maximises g alone, then the latitude the rest, both of the form
+    // above.
     const double inPlane = largestOfPowerSum(a * a, b * b, e2);
     boundingRadius_ = std::sqrt(largestOfPowerSum(inPlane, c * c, e1));
 }
@@ -108,10 +109,10 @@ Vec3 Superquadric::principalInertia(double density) const {
 // symmetry, signs restored at the end) with N = (a|nx|, b|ny|, c|nz|) the task is to maximise
 // N.(X, Y, Z) on (X^p + Y^p)^r + Z^q = 1 (p = 2/e2, q = 2/e1, r = e2/e1). Lagrange's condition
 // gives Y/X = alpha = (Ny/Nx)^(1/(p-1)) and Z/X = beta = ((1 + alpha^p)^(r-1) Nz/Nx)^(1/(q-1)),
-// and the constraint X = ((1 + alpha^p)^r + beta^q)^(-1/q) (the thesis's eqs. 5.46-5.50, whose extracted
-// exponents are garbled). The in-plane axis with the larger N is the reference, so alpha <= 1;
-// for beta > 1 the same equation is solved for Z first, so that nothing overflows when n is
-// nearly along z.
+// and the constraint X = ((1 + alpha^p)^r + beta^q)^(-1/q) (the thesis's eqs. 5.46-5.50, whose
+// extracted exponents are garbled). The in-plane axis with the larger N is the reference, so
+// alpha <= 1; for beta > 1 the same equation is solved for Z first, so that nothing overflows when
+// n is nearly along z.
 Vec3 Superquadric::furthestPointAlong(const Vec3& n) const {
     if (isEllipsoid()) {  // x^T D^-2 x = 1 with D = diag(a, b, c): x = D^2 n / |D n|, no powers
         const Vec3 scaledNormal = axes_.cwiseProduct(n);

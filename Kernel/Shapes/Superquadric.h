@@ -1,6 +1,6 @@
-// A convex superquadric in its body frame (Theory/Superquadrics.md eq. (1)): semi-axes a, b, c along x, y, z and
-// blockiness e1 (along z) and e2 (in the x-y plane), 0 < e1, e2 <= 1. e1 = e2 = 1 is an
-// ellipsoid; small e1 with e2 = 1 a cylinder, small e1 and e2 a block.
+// A convex superquadric in its body frame (Theory/Superquadrics.md eq. (1)): semi-axes a, b, c
+// along x, y, z and blockiness e1 (along z) and e2 (in the x-y plane), 0 < e1, e2 <= 1. e1 = e2 = 1
+// is an ellipsoid; small e1 with e2 = 1 a cylinder, small e1 and e2 a block.
 //
 // Shape function (negative inside, zero on the surface):
 //   f(x) = nu^(e2/e1) + |z/c|^(2/e1) - 1,   nu = |x/a|^(2/e2) + |y/b|^(2/e2).
@@ -40,15 +40,18 @@ public:
     Vec3 gradient(const Vec3& x) const;
     ShapeValue evaluate(const Vec3& x) const;  // f, gradient and Hessian
 
-    // V = 2abc e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2) (Theory/Superquadrics.md eq. (3); Jaklic et al. 2000).
+    // V = 2abc e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2) (Theory/Superquadrics.md eq. (3); Jaklic et al.
+    // 2000).
     double volume() const;
-    // Principal moments of inertia of a body of this density (Theory/Superquadrics.md eq. (4)): for a sphere 2/5 m r^2.
+    // Principal moments of inertia of a body of this density (Theory/Superquadrics.md eq. (4)): for
+    // a sphere 2/5 m r^2.
     Vec3 principalInertia(double density) const;
     // The largest distance of a surface point from the centre, exact (see the .cc).
     double boundingRadius() const { return boundingRadius_; }
 
     // The surface point that lies furthest along the unit direction n: the deepest point into a
-    // flat wall whose inward normal is -n (Theory/Superquadrics.md eq. (13), the thesis's eqs. 5.44-5.54, derived anew in the .cc).
+    // flat wall whose inward normal is -n (Theory/Superquadrics.md eq. (13), the thesis's eqs.
+    // 5.44-5.54, derived anew in the .cc).
     Vec3 furthestPointAlong(const Vec3& n) const;
 
     bool operator==(const Superquadric&) const = default;

@@ -1,10 +1,10 @@
-// The bidisperse collision rule of Theory/ContactLaws.md "Bidisperse mixtures" (Denissen 2019, app. 3.C.2): in a mixture of large spheres
-// (diameter dL) and small ones (dS), every pair type has the same restitution e, and the
-// collision time scales with the square root of the pair's diameter, tc(d) = tcL sqrt(d/dL),
-// with d = dL, dS and (dL + dS)/2 for LL, SS and LS contacts; kt = 2/7 kn and gt = gn.
-// Each pair's stiffness and damping then follow from its reduced mass (LinearSpringDashpot::
-// fromCollision). Friction coefficients are kept: the species' own for LL and SS, and for LS
-// the mean of the two unless given.
+// The bidisperse collision rule of Theory/ContactLaws.md "Bidisperse mixtures" (Denissen 2019, app.
+// 3.C.2): in a mixture of large spheres (diameter dL) and small ones (dS), every pair type has the
+// same restitution e, and the collision time scales with the square root of the pair's diameter,
+// tc(d) = tcL sqrt(d/dL), with d = dL, dS and (dL + dS)/2 for LL, SS and LS contacts; kt = 2/7 kn
+// and gt = gn. Each pair's stiffness and damping then follow from its reduced mass
+// (LinearSpringDashpot::fromCollision). Friction coefficients are kept: the species' own for LL
+// and SS, and for LS the mean of the two unless given.
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,6 @@
-// What a contact law needs to know about one contact, and what it returns (Theory/ContactLaws.md eq. (1)-(3)).
-// Filled by the force loop for particle-particle and particle-wall contacts alike, so that each
-// law is written once for both.
+// What a contact law needs to know about one contact, and what it returns (Theory/ContactLaws.md
+// eq. (1)-(3)). Filled by the force loop for particle-particle and particle-wall contacts alike, so
+// that each law is written once for both.
 #pragma once
 
 #include <algorithm>
@@ -38,10 +38,11 @@ struct ContactForce {
 // (Contacts/ContactForces.h) can run them on lanes of contacts that the compiler vectorises;
 // the Vec3 forms wrap them for the scalar paths.
 
-// Tangential spring: forward Euler of Theory/ContactLaws.md eq. (13), d(xi)/dt = vt - rij (xi . vij) / rij^2, which
-// keeps xi in the tangent plane as the contact rotates. A wall's normal only turns with the
-// wall, so there (inverseDistance 0) the spring is advanced with vt and projected back onto the
-// tangent plane. (n, v, t: normal, relative velocity of the centres, tangential velocity.)
+// Tangential spring: forward Euler of Theory/ContactLaws.md eq. (13), d(xi)/dt = vt - rij (xi .
+// vij) / rij^2, which keeps xi in the tangent plane as the contact rotates. A wall's normal only
+// turns with the wall, so there (inverseDistance 0) the spring is advanced with vt and projected
+// back onto the tangent plane. (n, v, t: normal, relative velocity of the centres, tangential
+// velocity.)
 [[gnu::always_inline]] inline void advanceTangentialSpring(double& sx, double& sy, double& sz, double nx, double ny,
                                                            double nz, double vx, double vy, double vz, double tx,
                                                            double ty, double tz, double inverseDistance, double dt) {
@@ -63,7 +64,8 @@ struct ContactForce {
 
 // A superquadric contact's spring, turned into the new tangent plane with its length kept (the
 // normal there turns with the bodies' shapes, not only with the line of centres): projected
-// onto the plane and stretched back (Denissen 2019, app. 5.A.3). A spring along n is left projected.
+// onto the plane and stretched back (Denissen 2019, app. 5.A.3). A spring along n is left
+// projected.
 [[gnu::always_inline]] inline void turnSpringIntoTangentPlane(double& sx, double& sy, double& sz, double nx, double ny,
                                                               double nz) {
     const double length2 = sx * sx + sy * sy + sz * sz, along = sx * nx + sy * ny + sz * nz;
@@ -74,10 +76,10 @@ struct ContactForce {
     sx *= stretch, sy *= stretch, sz *= stretch;
 }
 
-// Coulomb sliding (Theory/ContactLaws.md eq. (14)): caps |ft| at mu |fn| and resets the spring so that it is
-// consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. A frictionless contact (or
-// one without normal force) that would slide keeps no tangential force and no spring. Returns
-// whether it slides.
+// Coulomb sliding (Theory/ContactLaws.md eq. (14)): caps |ft| at mu |fn| and resets the spring so
+// that it is consistent with the capped force, xi = -(mu |fn| t + gt vt) / kt. A frictionless
+// contact (or one without normal force) that would slide keeps no tangential force and no spring.
+// Returns whether it slides.
 [[gnu::always_inline]] inline bool applyCoulombLimit(double& fx, double& fy, double& fz, double& sx, double& sy,
                                                      double& sz, double normalForce, double friction,
                                                      double tangentialStiffness, double tangentialDamping, double tx,

@@ -45,7 +45,8 @@ struct LinearSpringDashpot {
 
     LinearSpringDashpot& withFriction(double mu) { friction = mu; return *this; }
 
-    // Theory/ContactLaws.md eq. (10)-(11): tc = pi / sqrt(kn/m - (gn/(2m))^2); infinite when overdamped.
+    // Theory/ContactLaws.md eq. (10)-(11): tc = pi / sqrt(kn/m - (gn/(2m))^2); infinite when
+    // overdamped.
     double collisionTime(double reducedMass) const {
         const double w2 = normalStiffness / reducedMass - std::pow(normalDamping / (2 * reducedMass), 2);
         return w2 > 0 ? pi / std::sqrt(w2) : INFINITY;
@@ -128,7 +129,8 @@ struct LinearSpringDashpot {
     // inlined into the force loop): the dashpot on the end-of-step speed, solved implicitly,
     // u(n+1) = u + dt/2 ((kn dn - gn u(n+1))/m* + a), a from the other forces on the pair.
     [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
-        // (The rare cases get copies, so that k and history never leave registers on the common path.)
+        // (The rare cases get copies, so that k and history never leave registers on the common
+        // path.)
         if (!treatContactEnds) [[unlikely]]
             return coldCall(&LinearSpringDashpot::plainForce, k, history, dt);
         if (!history.isTouching()) [[unlikely]]
@@ -150,7 +152,8 @@ struct LinearSpringDashpot {
     };
     static constexpr bool batched = true;
     [[gnu::always_inline]] void lastingContact(Lane& c, double dt) const {
-        // Normal: the dashpot on the end-of-step speed, u(n+1) = u + dt/2 ((kn dn - gn u(n+1))/m* + a).
+        // Normal: the dashpot on the end-of-step speed, u(n+1) = u + dt/2 ((kn dn - gn
+        // u(n+1))/m* + a).
         const double halfStepOverMass = 0.5 * dt * c.inverseReducedMass;
         const double elastic = normalStiffness * c.overlap;
         const double speedNow = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
@@ -158,13 +161,15 @@ struct LinearSpringDashpot {
         c.normalForce = elastic - normalDamping * speedNow;
         tangentialStep(c, dt);
     }
-    // Theory/ContactLaws.md eq. (7)-(8) as plain velocity Verlet evaluates it: the half-step velocities, no treatment of
-    // the contact's ends (superquadric contacts, see plainForce; batched in EllipsoidContactBatch.h).
+    // Theory/ContactLaws.md eq. (7)-(8) as plain velocity Verlet evaluates it: the half-step
+    // velocities, no treatment of the contact's ends (superquadric contacts, see plainForce;
+    // batched in EllipsoidContactBatch.h).
     [[gnu::always_inline]] void plainContact(Lane& c, double dt) const {
         c.normalForce = normalStiffness * c.overlap - normalDamping * c.normalVelocity;
         tangentialStep(c, dt);
     }
-    // The spring advanced, the tangential force, the Coulomb limit (Theory/ContactLaws.md eq. (14)).
+    // The spring advanced, the tangential force, the Coulomb limit
+    // (Theory/ContactLaws.md eq. (14)).
     [[gnu::always_inline]] void tangentialStep(Lane& c, double dt) const {
         advanceTangentialSpring(c.sx, c.sy, c.sz, c.nx, c.ny, c.nz, c.vx, c.vy, c.vz, c.tx, c.ty, c.tz, c.inverseDistance,
                                 dt);

@@ -3,7 +3,8 @@
 // Each species has a density and a contact law; a pair of different species uses the law's
 // mixing rule unless the driver sets the pair's parameters explicitly (setPair). All species of
 // one simulation use the same kind of law, so the force loop is compiled once per kind and
-// reads a dense table (PairTable) with no dispatch per contact (Documentation/Architecture.md "Data layout").
+// reads a dense table (PairTable) with no dispatch per contact (Documentation/Architecture.md "Data
+// layout").
 #pragma once
 
 #include <cstddef>
@@ -54,8 +55,8 @@ public:
     void setPair(std::size_t a, std::size_t b, ContactLaw law);
     // The law used between a and b (a == b: the species' own law).
     ContactLaw pairLaw(std::size_t a, std::size_t b) const;
-    // Access to a pair's parameters for editing (e.g. pair<LinearSpringDashpot>(0, 1).friction = 0.375);
-    // the first call copies the mixed law.
+    // Access to a pair's parameters for editing (e.g. pair<LinearSpringDashpot>(0,
+    // 1).friction = 0.375); the first call copies the mixed law.
     template <class Law>
     Law& pair(std::size_t a, std::size_t b) {
         auto key = keyOf(a, b);

@@ -1,6 +1,6 @@
 // A wall: an infinite plane of any orientation, or the inside of an infinite cylinder (the
-// mantle of a rotating drum, Theory/RotatingDrum.md). Both are described by a point, a unit vector and a
-// radius:
+// mantle of a rotating drum, Theory/RotatingDrum.md). Both are described by a point, a unit vector
+// and a radius:
 //   plane (radius 0): `normal` points into the half-space the particles occupy; a sphere of
 //     radius r at x touches the wall when (x - point) . normal < r;
 //   cylinder (radius R > 0): `point` lies on the axis and `normal` is the axis direction; the
@@ -8,9 +8,9 @@
 // signedDistance is the distance from the wall, positive on the particles' side, and normalAt
 // the unit normal of the wall nearest to x, pointing to the particles' side (for a cylinder:
 // towards the axis). A non-spherical particle meets the tangent plane of the wall nearest to its
-// centre (the linearisation of Theory/Superquadrics.md "Walls"; its error grows with elongation and curvature).
-// A wall may follow a prescribed motion (motion >= 0), which moves its point and turns its
-// normal (a drum turning about its own axis keeps both, and its surface moves with the motion).
+// centre (the linearisation of Theory/Superquadrics.md "Walls"; its error grows with elongation and
+// curvature). A wall may follow a prescribed motion (motion >= 0), which moves its point and turns
+// its normal (a drum turning about its own axis keeps both, and its surface moves with the motion).
 #pragma once
 
 #include <cmath>

@@ -12,6 +12,10 @@ And the user pages (Documentation/**/*.md) say what Talus is and does, not how i
 the word "session" is refused there (the dated history of the measured performance,
 Performance/History.md, dates its rows instead).
 
+Nor do the sources (Kernel/, Drivers/, Tools/, UnitTests/, SelfTests/, Scripts/) carry calendar
+dates (YYYY-MM-DD or YYYY-MM): a measurement that a comment relies on is stated, with its date and
+processor, in Documentation/Performance.md or Performance/History.md, and the comment cites it.
+
 Prints file:line and the offending text of each finding and exits 1; otherwise
 "citations ok: N files".
 
@@ -31,6 +35,9 @@ BESIDE = re.compile(r"\.\./" + "shared")
 # The default of a path variable built from the repository's top, in code.
 BESIDE_AS_DEFAULT = re.compile(r"(\$top|\$\{[A-Z_]+\}|\$\{?[A-Za-z_]+\}?)/\.\./" + "shared")
 SESSION = re.compile(r"\bsessions?\b", re.IGNORECASE)
+# A calendar date, year and month at least (YYYY-MM, YYYY-MM-DD).
+DATE = re.compile(r"\b(19|20)[0-9]{2}" + r"-(0[1-9]|1[0-2])(-[0-3][0-9])?\b")
+SOURCE_FOLDERS = ("Kernel", "Drivers", "Tools", "UnitTests", "SelfTests", "Scripts")
 
 
 def tracked_files(repository):
@@ -50,6 +57,7 @@ def findings(path, text):
     problems = []
     lines = text.split("\n")
     user_page = path.startswith("Documentation" + os.sep) and path.endswith(".md")
+    source = path.split(os.sep)[0] in SOURCE_FOLDERS
     for number, line in enumerate(lines, start=1):
         for pattern, what in ((NOTE, "cites a note outside the repository"),
                               (SEED_LINE, "cites a line of the thesis's extracted text")):
@@ -61,6 +69,11 @@ def findings(path, text):
                 problems.append(f"{path}:{number}: cites the folder beside the repository: "
                                 f"'{line.strip()[:80]}'")
                 break
+        if source:
+            match = DATE.search(line)
+            if match:
+                problems.append(f"{path}:{number}: a date in the sources (measurements belong in "
+                                f"Documentation/Performance.md and its history): '{match.group(0)}'")
         if user_page:
             match = SESSION.search(line)
             if match:

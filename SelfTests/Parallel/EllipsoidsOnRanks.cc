@@ -5,13 +5,14 @@
 // periodic face, frictional contacts. They start on a loose lattice at random orientations and
 // spins, moving towards the cloud's centre (velocity -2 (x - centre), which would shrink the cloud
 // to a point at t = 0.5, plus a random part), so that they collide within a few hundred steps,
-// and the rank boundaries cut the crowd. Only contact forces act, each applied with its reaction at one contact point: the total momentum and the
-// total angular momentum about any point (orbital m x × v plus each body's spin, the lab angular
-// momentum of Particles/RigidBodyRotation.h) are constants of the motion, and velocity Verlet
-// keeps both exactly but for round-off (a step's half kicks use forces and torques at one set of
-// positions, where the pair sums cancel; the drift changes x × v by dt v × v = 0; the torque-free
-// turn keeps the lab angular momentum). Walls, gravity or a periodic image would each exert a net
-// torque, which is why the scene has none. After every step, summed over the ranks:
+// and the rank boundaries cut the crowd. Only contact forces act, each applied with its reaction at
+// one contact point: the total momentum and the total angular momentum about any point (orbital
+// m x × v plus each body's spin, the lab angular momentum of Particles/RigidBodyRotation.h) are
+// constants of the motion, and velocity Verlet keeps both exactly but for round-off (a step's half
+// kicks use forces and torques at one set of positions, where the pair sums cancel; the drift
+// changes x × v by dt v × v = 0; the torque-free turn keeps the lab angular momentum). Walls,
+// gravity or a periodic image would each exert a net torque, which is why the scene has none. After
+// every step, summed over the ranks:
 //  - the particle count and the sums of ids and squared ids equal their initial values exactly,
 //    and every owned particle's mass is the one it started with, to the bit (so the mass is
 //    conserved exactly, whatever order the ranks sum it in);
@@ -23,10 +24,10 @@
 //    errors; the tolerance is 1e-14 + 4e-16 per step, twice and a half the drift's slope.
 // A chain of 19 ellipsoids at rest, tip to tip, lies far below the cloud (see below): its slow
 // lasting contacts take the batched ellipsoid path (EllipsoidContactBatch.h), which the cloud's
-// fast collisions never do. Measured: 1344, 1437 and 1548 contacts in the lanes on 1, 2 and 3 ranks.
-// The ranks' trajectories are compared with the serial run's by ellipsoidsOnRanks.sh.
-// The run fails unless contacts happened, some of them in the batched lanes, and, on ranks,
-// particles changed rank.
+// fast collisions never do. Measured: 1344, 1437 and 1548 contacts in the lanes on 1, 2 and 3
+// ranks. The ranks' trajectories are compared with the serial run's by ellipsoidsOnRanks.sh. The
+// run fails unless contacts happened, some of them in the batched lanes, and, on ranks, particles
+// changed rank.
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -43,7 +44,7 @@ public:
 
     EllipsoidsOnRanks() {
         run().addFlag("per-side", "ellipsoids along each side of the starting lattice", perSide);
-        setRunsOnRanks(true);
+        ranks().setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
@@ -83,8 +84,8 @@ public:
         bool massesKept = true;
         for (std::size_t i = 0; i < p.owned(); ++i) massesKept &= p.mass[i] == initialMass_.at(p.id[i]);
         const Vec3 centre = Vec3::Constant(10);
-        // count, id sums (2), masses changed, momentum (3), angular momentum (3), their scales (2), contacts,
-        // contacts in EllipsoidContactBatch's lanes, kinetic energy, mass
+        // count, id sums (2), masses changed, momentum (3), angular momentum (3), their scales (2),
+        // contacts, contacts in EllipsoidContactBatch's lanes, kinetic energy, mass
         std::vector<double> t(16, 0.0);
         for (std::size_t i = 0; i < p.owned(); ++i) {
             const double id = static_cast<double>(p.id[i]);
@@ -100,7 +101,7 @@ public:
         t[3] = massesKept ? 0 : 1;
         t[12] = static_cast<double>(contactSummary().contacts);
         t[13] = static_cast<double>(contactSummary().contactsInLanes);
-        sumOverRanks(t);
+        ranks().sum(t);
         contacts_ += t[12];
         contactsInLanes_ += t[13];
         if (initial_.empty()) initial_ = t;
@@ -124,24 +125,25 @@ public:
                           static_cast<unsigned long long>(step()), e.kinetic, e.mass, t[14], t[15], t[0], initial_[0], t[1], t[2], initial_[1],
                           initial_[2], t[3] == 0 ? "masses kept" : "a mass changed", dp, dl, momentumTolerance,
                           angularMomentumTolerance(step()));
-            throw CollectiveError(m, rank() != 0);
+            throw CollectiveError(m, ranks().rank() != 0);
         }
     }
 
     void actionsAfterSolve() override {
-        const DomainSplit& split = *domainSplit();
-        const double moved = sumOverRanks(static_cast<double>(split.migrated));
-        if (rank() == 0)
+        const DomainSplit& split = *ranks().split();
+        const double moved = ranks().sum(static_cast<double>(split.migrated));
+        if (ranks().rank() == 0)
             std::printf("EllipsoidsOnRanks: %d ranks, %llu steps, %.0f contacts summed over steps (%.0f of them in the "
                         "batched ellipsoid lanes), %.0f particles changed rank: count, ids and masses kept exactly; "
                         "worst change of momentum %.2g, of angular momentum %.2g (of their scales)\n",
-                        ranks(), static_cast<unsigned long long>(lastRun().steps), contacts_, contactsInLanes_, moved,
-                        worstMomentum_, worstAngularMomentum_);
-        if (contacts_ == 0) throw CollectiveError("no contacts: the test tested nothing", rank() != 0);
+                        ranks().count(), static_cast<unsigned long long>(lastRun().steps), contacts_, contactsInLanes_,
+                        moved, worstMomentum_, worstAngularMomentum_);
+        if (contacts_ == 0) throw CollectiveError("no contacts: the test tested nothing", ranks().rank() != 0);
         if (contactsInLanes_ == 0)
             throw CollectiveError("no contact went through the batched ellipsoid lanes (EllipsoidContactBatch)",
-                                  rank() != 0);
-        if (ranks() > 1 && moved == 0) throw CollectiveError("no particle changed rank: the test tested little", rank() != 0);
+                                  ranks().rank() != 0);
+        if (ranks().count() > 1 && moved == 0)
+            throw CollectiveError("no particle changed rank: the test tested little", ranks().rank() != 0);
     }
 
 private:

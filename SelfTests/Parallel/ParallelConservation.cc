@@ -28,7 +28,7 @@ public:
     ParallelConservation() {
         run().addFlag("particles", "number of spheres", particleCount);
         run().addFlag("drift", "mean velocity along x (thermal speed 1)", drift);
-        setRunsOnRanks(true);
+        ranks().setRunsOnRanks(true);
     }
 
     void setupInitialConditions() override {
@@ -67,29 +67,30 @@ public:
                           static_cast<unsigned long long>(step()), now[0], initial_[0], now[1], now[2], initial_[1],
                           initial_[2], now[3], initial_[3], now[4], now[5], now[6], initial_[4], initial_[5],
                           initial_[6]);
-            throw CollectiveError(m, rank() != 0);
+            throw CollectiveError(m, ranks().rank() != 0);
         }
     }
 
     void actionsAfterSolve() override {
-        const DomainSplit& split = *domainSplit();
+        const DomainSplit& split = *ranks().split();
         std::vector<double> moved = {double(split.migrated), double(split.migratedFar), double(split.ghostsSent()),
                                      double(split.migratedAlong[0]), double(split.migratedAlong[1]),
                                      double(split.migratedAlong[2])};
-        sumOverRanks(moved);
+        ranks().sum(moved);
         const auto [gx, gy, gz] = split.grid();
-        if (rank() == 0)
+        if (ranks().rank() == 0)
             std::printf("ParallelConservation: %d ranks (%dx%dx%d), %llu steps: count, ids, mass and momentum kept every "
                         "step (worst momentum change %.2g of sum |m v|); %.0f particles changed rank (cell along x, "
                         "y, z: %.0f, %.0f, %.0f), %.0f of them across the periodic face, %.0f ghosts at the end\n",
-                        ranks(), gx, gy, gz, static_cast<unsigned long long>(lastRun().steps), worstMomentumError_,
-                        moved[0], moved[3], moved[4], moved[5], moved[1], moved[2]);
-        if (ranks() > 1 && moved[0] == 0) throw CollectiveError("no particle changed rank: the test tested nothing", rank() != 0);
+                        ranks().count(), gx, gy, gz, static_cast<unsigned long long>(lastRun().steps),
+                        worstMomentumError_, moved[0], moved[3], moved[4], moved[5], moved[1], moved[2]);
+        if (ranks().count() > 1 && moved[0] == 0)
+            throw CollectiveError("no particle changed rank: the test tested nothing", ranks().rank() != 0);
         for (int a = 0; a < 3; ++a)
             if (split.grid()[a] > 1 && moved[3 + a] == 0)
-                throw CollectiveError("no particle changed cell along axis " + std::to_string(a), rank() != 0);
+                throw CollectiveError("no particle changed cell along axis " + std::to_string(a), ranks().rank() != 0);
         if (gx > 2 && moved[1] == 0)
-            throw CollectiveError("no particle crossed the periodic face between ranks", rank() != 0);
+            throw CollectiveError("no particle crossed the periodic face between ranks", ranks().rank() != 0);
     }
 
 private:
@@ -107,7 +108,7 @@ private:
             t[4] += momentum.x(), t[5] += momentum.y(), t[6] += momentum.z();
             t[7] += momentum.norm();
         }
-        sumOverRanks(t);
+        ranks().sum(t);
         return t;
     }
     std::vector<double> initial_;

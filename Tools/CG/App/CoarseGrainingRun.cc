@@ -193,7 +193,8 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             fitSpeciesToFrame(options, inputs, frame);
             grainer = CoarseGrainer(setup);
             layout = grainer.layout();
-            // The first frame's sources before any output is opened: its input errors leave no file.
+            // The first frame's sources before any output is opened: its input errors leave no
+            // file.
             grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
             if (options.mixingSpecies && layout.species < 2) {
                 throw InputError("--mixing: needs a mixture of at least 2 species, the run has " + std::to_string(layout.species));

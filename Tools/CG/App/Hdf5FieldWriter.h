@@ -1,5 +1,5 @@
-// HDF5 output of talus-cg with an XDMF companion file (Documentation/FileFormats/vtu.md: ParaView-readable
-// HDF5 with XDMF; layout in Documentation/CoarseGraining.md "Output formats"):
+// HDF5 output of talus-cg with an XDMF companion file (Documentation/FileFormats/vtu.md:
+// ParaView-readable HDF5 with XDMF; layout in Documentation/CoarseGraining.md "Output formats"):
 //
 //   NAME.h5   /grid/x, /grid/y, /grid/z   cell-centre coordinates per axis (a grid; length 1 and
 //                                          value 0 on averaged axes), or /points (N x 3) for a list

@@ -289,7 +289,8 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
     if (o.widthScan) {
         const int ranges = int(o.scanRange[0].has_value()) + int(o.scanRange[1].has_value()) + int(o.scanRange[2].has_value());
         if (ranges == 0) {
-            // The thesis's scan of a chute (Denissen 2019, sec. 4.2.2): wx 0.1..1000, wz 0.1..10; fewer steps.
+            // The thesis's scan of a chute (Denissen 2019, sec. 4.2.2): wx 0.1..1000, wz 0.1..10;
+            // fewer steps.
             o.scanRange[0] = WidthScanRange{0.1, 1000, 41};
             o.scanRange[2] = WidthScanRange{0.1, 10, 21};
         } else if (ranges != 2) {

@@ -60,8 +60,9 @@ struct ProgramOptions {
     std::optional<int> mixingSpecies;             // --mixing K (Fields/MixingIndex.h)
     std::string mixingPath;                       // --mixing-output (default: -o with .mixing.csv for .csv)
 
-    // --width-scan (App/WidthScanRun.h, Fields/WidthScan.h; Theory/CoarseGraining.md "Choosing the widths"): the two scanned
-    // directions are those given a range (default x 0.1..1000 and z 0.1..10).
+    // --width-scan (App/WidthScanRun.h, Fields/WidthScan.h; Theory/CoarseGraining.md "Choosing the
+    // widths"): the two scanned directions are those given a range (default x 0.1..1000 and z
+    // 0.1..10).
     bool widthScan = false;
     std::array<std::optional<WidthScanRange>, 3> scanRange;  // --scan-x, --scan-y, --scan-z MIN MAX COUNT
     std::vector<Vec3> scanPoints;                 // --scan-point X Y Z (repeatable), or --points FILE

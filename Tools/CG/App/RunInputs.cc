@@ -103,7 +103,8 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
                            : in.restart      ? in.restart->speciesDensity
                                              : std::vector<double>{6.0 / std::numbers::pi};
     if (!options.densities && !in.restart) {
-        // The default 6/pi (Theory/Chutes.md "Units and axes": d = 1 has mass 1) for every species the data will show.
+        // The default 6/pi (Theory/Chutes.md "Units and axes": d = 1 has mass 1) for every species
+        // the data will show.
         setup.speciesDensity.assign(16, 6.0 / std::numbers::pi);
     }
     setup.periodic = options.periodic ? *options.periodic : in.restart ? in.restart->periodic : std::array<bool, 3>{false, false, false};

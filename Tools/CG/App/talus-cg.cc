@@ -1,5 +1,6 @@
-// talus-cg: coarse-grains .data/.fstat files into continuum fields (Theory/CoarseGraining.md eq. (5)-(10),
-// Documentation/CoarseGraining.md). Usage: talus-cg NAME [options]; talus-cg --help.
+// talus-cg: coarse-grains .data/.fstat files into continuum fields
+// (Theory/CoarseGraining.md eq. (5)-(10), Documentation/CoarseGraining.md). Usage: talus-cg NAME
+// [options]; talus-cg --help.
 #include <iostream>
 
 #include "App/CoarseGrainingRun.h"

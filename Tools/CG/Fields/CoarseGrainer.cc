@@ -92,6 +92,9 @@ void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox&
 
 void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
                              const std::string& dataPath, const std::string& fstatPath) {
+    if (!frame.mass.empty() && frame.mass.size() != frame.size())
+        throw InputError("the frame at t = " + str(frame.time) + " has " + std::to_string(frame.size()) +
+                         " particles but " + std::to_string(frame.mass.size()) + " masses");
     if (cylindrical_) {
         cylindrical_->setFrame(frame, dataPath);
         return;
@@ -125,8 +128,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              " species only (--density d0,d1,... or --restart)");
         }
         if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
-        const double r = frame.radius[p];
-        const double volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        const double volume = frame.sphereVolume(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
             lo[k] = frame.position[p][k] - halfExtent_[k];
@@ -142,7 +144,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
             }
             position_.push_back(x);
             velocity_.push_back(frame.velocity[p]);
-            mass_.push_back(setup_.speciesDensity[s] * volume);
+            mass_.push_back(frame.massOf(p, setup_.speciesDensity[s]));
             volume_.push_back(volume);
             species_.push_back(s);
             boxLo.push_back(lo);
@@ -201,7 +203,8 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              ": the .fstat and .data files do not describe the same particles");
         }
         // Branch b from the far end to x_i: the partner's centre (its image next to i: the
-        // normal points from j to i) for pairs, the contact point for walls (Theory/CoarseGraining.md eq. (10)).
+        // normal points from j to i) for pairs, the contact point for walls
+        // (Theory/CoarseGraining.md eq. (10)).
         Vec3 b;
         double weight = 1;
         if (c.isWall()) {

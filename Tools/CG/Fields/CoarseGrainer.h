@@ -1,6 +1,6 @@
 // Evaluates the coarse-grained sums (FieldSums.h) of one frame at any list of points
-// (Theory/CoarseGraining.md "Fields": evaluation needs no grid). One code path for every point set: a grid is just a
-// list of points, so identical points give bitwise identical values.
+// (Theory/CoarseGraining.md "Fields": evaluation needs no grid). One code path for every point set:
+// a grid is just a list of points, so identical points give bitwise identical values.
 //
 // Set up once with the kernel (shape, width matrix, coordinates); then per frame setFrame()
 // builds the sources (particles with their periodic images, contact segments) and their cell

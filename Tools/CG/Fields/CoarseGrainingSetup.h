@@ -1,6 +1,6 @@
-// What a coarse-graining evaluation is set up with (Theory/CoarseGraining.md eq. (5)-(10)): the kernel (shape, width,
-// coordinates), the periodic directions, the species densities, whether the contact stress is
-// evaluated, and which particles are left out.
+// What a coarse-graining evaluation is set up with (Theory/CoarseGraining.md eq. (5)-(10)): the
+// kernel (shape, width, coordinates), the periodic directions, the species densities, whether the
+// contact stress is evaluated, and which particles are left out.
 #pragma once
 
 #include <array>

@@ -1,14 +1,15 @@
-// Which directions the coarse-graining function resolves (Theory/CoarseGraining.md eq. (11)-(12) with averaging, Weinhart et
-// al. 2012 for depth profiles): `XYZ` is a 3-D field; `XZ` averages over y, `Z` over x and y
-// (a depth profile). The kernel then has the dimension of the resolved directions and each
-// field is divided by the lengths of the averaged directions, taken from the domain box of the
-// .data header, so that a depth profile of density integrates over z to mass per unit area.
+// Which directions the coarse-graining function resolves (Theory/CoarseGraining.md eq. (11)-(12)
+// with averaging, Weinhart et al. 2012 for depth profiles): `XYZ` is a 3-D field; `XZ` averages
+// over y, `Z` over x and y (a depth profile). The kernel then has the dimension of the resolved
+// directions and each field is divided by the lengths of the averaged directions, taken from the
+// domain box of the .data header, so that a depth profile of density integrates over z to mass per
+// unit area.
 //
-// Cylindrical coordinates about a drum axis along x, y or z (Theory/RotatingDrum.md): `RZ` resolves the
-// distance r from the axis and the coordinate s along it and averages over the angle; `R` also
-// averages along the axis (divided by the box length along it). Their points keep r in slot 0 and
-// s (the lab coordinate along the axis) in slot 2 of a Vec3; the fields are angular averages of
-// the 3-D (RZ) or cross-section 2-D (R) kernel (Fields/CylindricalCoarseGrainer.h).
+// Cylindrical coordinates about a drum axis along x, y or z (Theory/RotatingDrum.md): `RZ` resolves
+// the distance r from the axis and the coordinate s along it and averages over the angle; `R` also
+// averages along the axis (divided by the box length along it). Their points keep r in slot 0 and s
+// (the lab coordinate along the axis) in slot 2 of a Vec3; the fields are angular averages of the
+// 3-D (RZ) or cross-section 2-D (R) kernel (Fields/CylindricalCoarseGrainer.h).
 #pragma once
 
 #include <array>

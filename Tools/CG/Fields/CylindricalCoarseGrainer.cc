@@ -95,14 +95,14 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
         // C2 vanish, so the choice does not enter the fields).
         const double cosine = ri > 0 ? d1 / ri : 1.0, sine = ri > 0 ? d2 / ri : 0.0;
         const Vec3 u{v[across1] * cosine + v[across2] * sine, -v[across1] * sine + v[across2] * cosine, v[axis_]};
-        const double volume = 4.0 / 3.0 * std::numbers::pi * frame.radius[p] * frame.radius[p] * frame.radius[p];
+        const double volume = frame.sphereVolume(p);
         // Images along a periodic axis whose support overlaps the box.
         for (long image = -reach; image <= reach; ++image) {
             const double si = x[axis_] + double(image) * length;
             if (periodicAxis && !(si - reachAlong < frame.box.hi[axis_] && si + reachAlong > frame.box.lo[axis_])) continue;
             radius_.push_back(ri);
             axial_.push_back(si);
-            mass_.push_back(setup_.speciesDensity[s] * volume);
+            mass_.push_back(frame.massOf(p, setup_.speciesDensity[s]));
             volume_.push_back(volume);
             velocity_.push_back(u);
             species_.push_back(s);

@@ -1,12 +1,13 @@
-// Coarse-grained fields in cylindrical coordinates about a drum axis (Theory/RotatingDrum.md rotating drums,
-// Theory/CoarseGraining.md eq. (5)-(10) fields; derivation in Documentation/CoarseGraining.md "Cylindrical coordinates").
+// Coarse-grained fields in cylindrical coordinates about a drum axis (Theory/RotatingDrum.md
+// rotating drums, Theory/CoarseGraining.md eq. (5)-(10) fields; derivation in
+// Documentation/CoarseGraining.md "Cylindrical coordinates").
 //
-// The fields are the Cartesian fields of Theory/CoarseGraining.md eq. (5)-(10) (densities per unit volume) averaged over the
-// angle theta around the axis: rho(r, s) = (1/2 pi) int rho(r, theta, s) dtheta, so that
-// int rho 2 pi r dr ds is the mass. For a kernel W(x) = c_d/(wp^2 wa) f(u^2) that is isotropic
-// across the axis (width wp) with width wa along it, the average of one particle's kernel over the
-// circle of radius r is c_d/(wp^2 wa) C0(r, ri, s - si) (Kernels/AngularMoments.h): the exact
-// measure, not a 2-D kernel in an (r, s) plane.
+// The fields are the Cartesian fields of Theory/CoarseGraining.md eq. (5)-(10) (densities per unit
+// volume) averaged over the angle theta around the axis: rho(r, s) = (1/2 pi) int rho(r, theta, s)
+// dtheta, so that int rho 2 pi r dr ds is the mass. For a kernel W(x) = c_d/(wp^2 wa) f(u^2) that
+// is isotropic across the axis (width wp) with width wa along it, the average of one particle's
+// kernel over the circle of radius r is c_d/(wp^2 wa) C0(r, ri, s - si) (Kernels/AngularMoments.h):
+// the exact measure, not a 2-D kernel in an (r, s) plane.
 //
 // Vectors and tensors are averaged in the local basis (e_r, e_theta, e_s) of the point, e_theta =
 // e_s x e_r (right-handed about the positive axis direction). With phi = theta - theta_i,

@@ -1,22 +1,24 @@
-// Depth-averaged fields of chute flows (issue 5 item 4; the depth-averaged model of Theory/DepthAveraged.md eq. (4)-(9) and
-// Denissen 2019, sec. 3.2.1): per column of a grid whose last resolved axis is z, the coarse-grained fields
-// are integrated over z by the midpoint rule of the grid,
+// Depth-averaged fields of chute flows (issue 5 item 4; the depth-averaged model of
+// Theory/DepthAveraged.md eq. (4)-(9) and Denissen 2019, sec. 3.2.1): per column of a grid whose
+// last resolved axis is z, the coarse-grained fields are integrated over z by the midpoint rule of
+// the grid,
 //
-//   mass per area     m_A   = int rho dz                      (exact total mass per area when the
-//                                                              z range covers the flow: CG conserves mass)
-//   bulk density      rho_b = --bulk-density, else the mass-weighted mean density int rho^2 dz / m_A
-//   height            h     = m_A / rho_b                     (Denissen 2019, sec. 3.2.1: "the bulk density of the
-//                                                              flow is assumed constant")
-//   velocity          u_bar = int p dz / m_A                  (mass-weighted: h rho_b u_bar is the flux)
-//   concentration     phi_bar_s = int rho_s dz / m_A          (mass fraction of species s in the column)
-//   solid height      int nu dz                               (volume of the particles per area)
+//   mass per area     m_A   = int rho dz              (exact total mass per area when the z range
+//                                                      covers the flow: CG conserves mass)
+//   bulk density      rho_b = --bulk-density, else the mass-weighted mean density
+//                             int rho^2 dz / m_A
+//   height            h     = m_A / rho_b             (Denissen 2019, sec. 3.2.1: "the bulk density
+//                                                      of the flow is assumed constant")
+//   velocity          u_bar = int p dz / m_A          (mass-weighted: h rho_b u_bar is the flux)
+//   concentration     phi_bar_s = int rho_s dz / m_A  (mass fraction of species s in the column)
+//   solid height      int nu dz                       (volume of the particles per area)
 //
-// The thesis defines u_bar = (1/h) int_0^h u dz and phi_bar likewise (Denissen 2019, sec. 3.2.1), a volume
-// average; at constant bulk density it equals the mass-weighted one used here, which is also the
-// one that conserves mass and momentum for any density profile. With the mass-weighted mean
+// The thesis defines u_bar = (1/h) int_0^h u dz and phi_bar likewise (Denissen 2019, sec. 3.2.1), a
+// volume average; at constant bulk density it equals the mass-weighted one used here, which is also
+// the one that conserves mass and momentum for any density profile. With the mass-weighted mean
 // density, h = m_A^2 / int rho^2 dz is exact for a layer of uniform density; the smoothing of the
-// free surface and of the base over the kernel width lowers int rho^2 and raises h by a fraction
-// of the width (Documentation/CoarseGraining.md gives the size for Lucy).
+// free surface and of the base over the kernel width lowers int rho^2 and raises h by a fraction of
+// the width (Documentation/CoarseGraining.md gives the size for Lucy).
 #pragma once
 
 #include <optional>

@@ -1,5 +1,6 @@
 // Where fields are evaluated: a regular grid or a list of points from a file. Both become the
-// same std::vector<Vec3>, evaluated by the same code (Theory/CoarseGraining.md "Fields": evaluation needs no grid).
+// same std::vector<Vec3>, evaluated by the same code (Theory/CoarseGraining.md "Fields": evaluation
+// needs no grid).
 #pragma once
 
 #include <array>

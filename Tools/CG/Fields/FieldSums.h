@@ -1,5 +1,5 @@
-// The additive coarse-grained sums evaluated at each point (Theory/CoarseGraining.md; Goldhirsch 2010;
-// Weinhart et al. 2012), stored as one row of doubles per point:
+// The additive coarse-grained sums evaluated at each point (Theory/CoarseGraining.md; Goldhirsch
+// 2010; Weinhart et al. 2012), stored as one row of doubles per point:
 //
 //   Density            rho      = sum_i m_i W(r - r_i)
 //   VolumeFraction     nu       = sum_i V_i W(r - r_i)           (V_i particle volume)

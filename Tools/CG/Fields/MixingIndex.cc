@@ -22,7 +22,8 @@ MixingIndices mixingIndices(const FieldSums& layout, const std::vector<Vec3>& po
         const double rho = row[FieldSums::density];
         if (!(rho > 0)) continue;
         const double phi = std::clamp(row[layout.speciesDensityIndex(species)] / rho, 0.0, 1.0);
-        // Theory/CoarseGraining.md eq. (13)-(16): m = phi ln phi + (1 - phi) ln(1 - phi), with 0 ln 0 = 0.
+        // Theory/CoarseGraining.md eq. (13)-(16): m = phi ln phi + (1 - phi) ln(1 - phi), with 0 ln
+        // 0 = 0.
         double m = 0;
         if (phi > 0) m += phi * std::log(phi);
         if (phi < 1) m += (1 - phi) * std::log1p(-phi);

@@ -1,6 +1,7 @@
-// Mixing index M and segregation index S of a binary mixture (Theory/CoarseGraining.md eq. (13)-(16); Denissen 2019, sec. 5.2.2, eqs.
-// 5.1-5.9), from coarse-grained fields at the points of a regular grid (equal cell sizes, so the
-// midpoint rule's weights cancel in the ratios):
+// Mixing index M and segregation index S of a binary mixture
+// (Theory/CoarseGraining.md eq. (13)-(16); Denissen 2019, sec. 5.2.2, eqs. 5.1-5.9), from
+// coarse-grained fields at the points of a regular grid (equal cell sizes, so the midpoint rule's
+// weights cancel in the ratios):
 //
 //   phi  = rho_k / rho                         fraction of the chosen species k ("the spheres")
 //   m    = phi ln phi + (1 - phi) ln(1 - phi)  local mixing entropy (0 at phi = 0 or 1)
@@ -8,15 +9,15 @@
 //   S    = 1 - M   if species k is at the periphery,
 //          M - 1   if species k is at the core.
 //
-// Sign rule (Theory/CoarseGraining.md eq. (13)-(16) leaves "core" to the reader; this is ours): the core is the centre of
-// mass c of the material (rho-weighted mean of the points' resolved coordinates). Species k is
-// at the core when its mass-weighted mean distance from c is smaller than that of all the
-// material, D_k < D; otherwise (D_k >= D, ties included) at the periphery. In a rotating drum
-// (Theory/RotatingDrum.md) c is the centre of the circulating bed. M is symmetric in the two species (m(phi)
-// = m(1 - phi)); only the sign of S depends on k.
+// Sign rule (Theory/CoarseGraining.md eq. (13)-(16) leaves "core" to the reader; this is ours): the
+// core is the centre of mass c of the material (rho-weighted mean of the points' resolved
+// coordinates). Species k is at the core when its mass-weighted mean distance from c is smaller
+// than that of all the material, D_k < D; otherwise (D_k >= D, ties included) at the periphery. In
+// a rotating drum (Theory/RotatingDrum.md) c is the centre of the circulating bed. M is symmetric
+// in the two species (m(phi) = m(1 - phi)); only the sign of S depends on k.
 //
-// M is normalised by the state phi = 1/2 (the thesis's eq. 5.7): a perfectly mixed mixture of another
-// composition phi_0 has M = -m(phi_0)/ln 2 < 1.
+// M is normalised by the state phi = 1/2 (the thesis's eq. 5.7): a perfectly mixed mixture of
+// another composition phi_0 has M = -m(phi_0)/ln 2 < 1.
 #pragma once
 
 #include <vector>

@@ -14,8 +14,8 @@ namespace {
 constexpr double notANumber = std::numeric_limits<double>::quiet_NaN();
 
 // Particle centres of a frame inside the support |A (x - r)| < R of a diagonal kernel with
-// widths w (zero on averaged axes), periodic images included (Theory/CoarseGraining.md: the same sources as
-// CoarseGrainer::setFrame).
+// widths w (zero on averaged axes), periodic images included (Theory/CoarseGraining.md: the same
+// sources as CoarseGrainer::setFrame).
 long particlesInSupport(const ParticleFrame& frame, const std::vector<bool>& excluded, const Vec3& point, const Vec3& w,
                         double cutoff, const std::array<bool, 3>& periodic) {
     std::array<std::vector<double>, 3> shifts;

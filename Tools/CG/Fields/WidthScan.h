@@ -1,7 +1,8 @@
-// Automatic choice of anisotropic widths (Theory/CoarseGraining.md eq. (1), Denissen 2019, sec. 4.2.2, the thesis's figure 4.5):
-// a field is evaluated at a few points for every pair (wa, wb) of diagonal widths of two
-// directions on a log grid; where it does not change with the widths it is a property of the
-// flow, not of the kernel. The rule (Documentation/CoarseGraining.md "Choosing the widths"):
+// Automatic choice of anisotropic widths (Theory/CoarseGraining.md eq. (1), Denissen
+// 2019, sec. 4.2.2, the thesis's figure 4.5): a field is evaluated at a few points for every pair
+// (wa, wb) of diagonal widths of two directions on a log grid; where it does not change with the
+// widths it is a property of the flow, not of the kernel. The rule (Documentation/CoarseGraining.md
+// "Choosing the widths"):
 //
 //  1. A width pair is *trusted* at a point when the density there is positive, the kernel's
 //     support holds at least `minParticles` particle centres, and both scanned widths are at

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Formats/DataFormat.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
 
-namespace {
-constexpr int particleColumns = 14;  // data.md: x y z vx vy vz r th(3) w(3) info
-}
+namespace column = formats::data;  // the header fields and particle columns
 
 DataFileReader::DataFileReader(const std::string& path) : file_(path) {}
 
@@ -19,19 +18,19 @@ bool DataFileReader::readHeader(ParticleFrame& frame, long& count) {
         if (!file_.nextLine(line_)) return false;
         splitFields(line_, fields_);
     } while (fields_.empty());
-    if (fields_.size() == 6) {
+    if (fields_.size() == column::headerFields2d) {
         file_.fail("a 2-D .data header (6 fields: N t xmin ymin xmax ymax); only the 3-D layout "
                    "(8 fields) is supported");
     }
-    if (fields_.size() != 8) {
+    if (fields_.size() != column::headerFields) {
         file_.fail("expected a frame header of 8 fields (N t xmin ymin zmin xmax ymax zmax), found " +
                    std::to_string(fields_.size()));
     }
-    count = parseCount(fields_[0], file_, "the particle count N");
-    frame.time = parseReal(fields_[1], file_, "the time t");
+    count = parseCount(fields_[column::particleCount], file_, "the particle count N");
+    frame.time = parseReal(fields_[column::time], file_, "the time t");
     for (int k = 0; k < 3; ++k) {
-        frame.box.lo[k] = parseReal(fields_[2 + k], file_, "the domain minimum");
-        frame.box.hi[k] = parseReal(fields_[5 + k], file_, "the domain maximum");
+        frame.box.lo[k] = parseReal(fields_[column::lowerCorner + k], file_, "the domain minimum");
+        frame.box.hi[k] = parseReal(fields_[column::upperCorner + k], file_, "the domain maximum");
         if (frame.box.hi[k] < frame.box.lo[k]) {
             file_.fail("the domain maximum " + str(frame.box.hi[k]) + " lies below the minimum " + str(frame.box.lo[k]) +
                        " along " + "xyz"[k] + " (an inverted box)");
@@ -45,9 +44,9 @@ bool DataFileReader::readFrame(ParticleFrame& frame) {
     long count = 0;
     if (!readHeader(frame, count)) return false;
     frame.clear();
-    // A particle line has 14 numbers: at least 28 bytes. A corrupt count reserves no more than
-    // the file can hold.
-    const auto reserved = static_cast<std::size_t>(std::min<std::uintmax_t>(count, file_.size() / 28));
+    // A particle line has 14 numbers (column::columns): at least 28 bytes. A corrupt count
+    // reserves no more than the file can hold.
+    const auto reserved = static_cast<std::size_t>(std::min<std::uintmax_t>(count, file_.size() / (2 * column::columns)));
     frame.position.reserve(reserved);
     frame.velocity.reserve(reserved);
     frame.radius.reserve(reserved);
@@ -61,22 +60,22 @@ bool DataFileReader::readFrame(ParticleFrame& frame) {
                                  std::to_string(frame.headerLine) + "): truncated file?");
         }
         splitFields(line_, fields_);
-        if (fields_.size() != particleColumns) {
-            file_.fail("expected " + std::to_string(particleColumns) + " columns, found " +
+        if (fields_.size() != column::columns) {
+            file_.fail("expected " + std::to_string(column::columns) + " columns, found " +
                        std::to_string(fields_.size()));
         }
         Vec3 x, v;
         for (int k = 0; k < 3; ++k) {
-            x[k] = parseReal(fields_[k], file_, "the position");
-            v[k] = parseReal(fields_[3 + k], file_, "the velocity");
+            x[k] = parseReal(fields_[column::position + k], file_, "the position");
+            v[k] = parseReal(fields_[column::velocity + k], file_, "the velocity");
         }
-        const double r = parseReal(fields_[6], file_, "the radius");
-        if (!(r > 0)) file_.fail("radius must be positive, found " + std::string(fields_[6]));
+        const double r = parseReal(fields_[column::radius], file_, "the radius");
+        if (!(r > 0)) file_.fail("radius must be positive, found " + std::string(fields_[column::radius]));
         // The info column is a floating-point value in general (data.md); here it must be the
         // species index, since masses come from per-species densities.
-        const double info = parseReal(fields_[13], file_, "the info column (species)");
+        const double info = parseReal(fields_[column::info], file_, "the info column (species)");
         if (!(info >= 0) || info != std::floor(info) || info > 1e6) {
-            file_.fail("info column is " + std::string(fields_[13]) +
+            file_.fail("info column is " + std::string(fields_[column::info]) +
                        ", not a species index (0, 1, ...)");
         }
         frame.position.push_back(x);

@@ -2,12 +2,14 @@
 
 #include <cmath>
 
+#include "Formats/FstatFormat.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
 
+namespace column = formats::fstat;  // the contact columns
+
 namespace {
-constexpr int contactColumns = 16;  // fstat.md
 
 bool isHeader(std::string_view line) {
     const auto first = line.find_first_not_of(" \t");
@@ -37,16 +39,18 @@ bool FstatFileReader::readFrame(ContactFrame& frame) {
     frame.time = parseReal(values[0], file_, "the frame time");
     frame.headerLine = file_.lineNumber();
     const long marker = parseInteger(values[1], file_, "the format marker");
-    if (marker != 1) {
+    if (marker != column::contactPointMarker) {
         file_.fail("format marker " + std::to_string(marker) +
                    ": only marker 1 (columns 4-6 hold the contact point) is supported");
     }
-    for (int h = 0; h < 2; ++h) {
+    for (int h = 1; h < column::headerLines; ++h) {
         if (!file_.nextLine(line_)) {
             file_.failAtLine(file_.lineNumber() + 1, "file ends inside the header of the frame at t = " +
                                                          str(frame.time) + ": truncated file?");
         }
-        if (!isHeader(line_)) file_.fail("expected header line " + std::to_string(h + 2) + " of 3 starting with '#'");
+        if (!isHeader(line_))
+            file_.fail("expected header line " + std::to_string(h + 1) + " of " + std::to_string(column::headerLines) +
+                       " starting with '#'");
     }
     frame.contacts.clear();
     while (file_.nextLine(line_)) {
@@ -56,28 +60,28 @@ bool FstatFileReader::readFrame(ContactFrame& frame) {
             file_.pushBack();
             break;
         }
-        if (fields_.size() != contactColumns) {
-            file_.fail("expected " + std::to_string(contactColumns) + " columns, found " +
+        if (fields_.size() != column::columns) {
+            file_.fail("expected " + std::to_string(column::columns) + " columns, found " +
                        std::to_string(fields_.size()));
         }
-        const double t = parseReal(fields_[0], file_, "the time");
+        const double t = parseReal(fields_[column::time], file_, "the time");
         if (std::abs(t - frame.time) > 1e-9 * std::max(1.0, std::abs(frame.time))) {
             file_.fail("contact time " + str(t) + " differs from the frame time " + str(frame.time) +
                        " (header line " + std::to_string(frame.headerLine) + ")");
         }
         ContactLine c;
-        c.i = parseInteger(fields_[1], file_, "particle i");
-        c.j = parseInteger(fields_[2], file_, "partner j");
+        c.i = parseInteger(fields_[column::particle], file_, "particle i");
+        c.j = parseInteger(fields_[column::partner], file_, "partner j");
         if (c.i < 0) file_.fail("particle index i must not be negative, found " + std::to_string(c.i));
         Vec3 t_{};
         for (int k = 0; k < 3; ++k) {
-            c.point[k] = parseReal(fields_[3 + k], file_, "the contact point");
-            c.normal[k] = parseReal(fields_[10 + k], file_, "the normal");
-            t_[k] = parseReal(fields_[13 + k], file_, "the tangential direction");
+            c.point[k] = parseReal(fields_[column::contactPoint + k], file_, "the contact point");
+            c.normal[k] = parseReal(fields_[column::normal + k], file_, "the normal");
+            t_[k] = parseReal(fields_[column::tangent + k], file_, "the tangential direction");
         }
-        c.overlap = parseReal(fields_[6], file_, "the overlap dn");
-        const double fn = parseReal(fields_[8], file_, "the normal force fn");
-        const double ft = parseReal(fields_[9], file_, "the tangential force");
+        c.overlap = parseReal(fields_[column::overlap], file_, "the overlap dn");
+        const double fn = parseReal(fields_[column::normalForce], file_, "the normal force fn");
+        const double ft = parseReal(fields_[column::tangentialForce], file_, "the tangential force");
         // fstat.md: force on i = fn n + ft t for pairs; walls flip both vectors.
         const double sign = c.isWall() ? -1.0 : 1.0;
         for (int k = 0; k < 3; ++k) c.force[k] = sign * (fn * c.normal[k] + ft * t_[k]);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <numbers>
 #include <vector>
 
 namespace talus::cg {
@@ -25,13 +26,22 @@ struct ParticleFrame {
     std::vector<Vec3> velocity;
     std::vector<double> radius;
     std::vector<int> species;  // the info column, which both codes fill with the species index
+    // Masses, when the caller knows them (a driver coarse-graining its own particles, of any
+    // shape); empty for .data frames, whose masses come from the radius and the species density.
+    std::vector<double> mass;
 
     std::size_t size() const { return radius.size(); }
+    // Particle p's mass: given, or a sphere of its radius and the species' density.
+    double massOf(std::size_t p, double density) const {
+        return mass.empty() ? density * sphereVolume(p) : mass[p];
+    }
+    double sphereVolume(std::size_t p) const { return 4.0 / 3.0 * std::numbers::pi * radius[p] * radius[p] * radius[p]; }
     void clear() {
         position.clear();
         velocity.clear();
         radius.clear();
         species.clear();
+        mass.clear();
     }
 };
 

@@ -1,10 +1,10 @@
 #include "IO/TextFile.h"
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
+#include "Formats/Numbers.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
@@ -66,76 +66,36 @@ void splitFields(std::string_view line, std::vector<std::string_view>& fields) {
     }
 }
 
-namespace {
-
-// Drops one leading '+', which from_chars does not take; "+-1" stays no number.
-bool dropPlus(std::string_view& token) {
-    if (!token.empty() && token.front() == '+') {
-        token.remove_prefix(1);
-        return !token.empty() && token.front() != '-';
-    }
-    return !token.empty();
-}
-
-// A token that is a whole number but not a finite one: nan, inf, or beyond the largest double.
-bool nonFiniteNumber(std::string_view token) {
-    double value = 0;
-    if (!dropPlus(token)) return false;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    return end == token.data() + token.size() && (error == std::errc::result_out_of_range || !std::isfinite(value));
-}
-
-// "'TOKEN' for WHAT", for messages (appended: GCC 12 warns falsely on "'" + std::string(token)).
-std::string tokenFor(std::string_view token, const std::string& what) {
-    std::string text = "'";
-    text.append(token).append("' for ").append(what);
-    return text;
-}
-
-}  // namespace
-
-bool toReal(std::string_view token, double& value) {
-    if (!dropPlus(token)) return false;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (end != token.data() + token.size()) return false;
-    if (error == std::errc::result_out_of_range) {
-        // Below the subnormals (1e-400) the number reads as 0, as the stream would read it; beyond
-        // the largest double it is no number.
-        value = std::strtod(std::string(token).c_str(), nullptr);
-        return std::isfinite(value);
-    }
-    return error == std::errc() && std::isfinite(value);
-}
+// The conversions and the wording of their problems: Formats/Numbers.h, shared with the kernel.
+bool toReal(std::string_view token, double& value) { return formats::toFiniteReal(token, value); }
 
 bool toInteger(std::string_view token, long& value) {
-    if (!dropPlus(token)) return false;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    return error == std::errc() && end == token.data() + token.size();
+    std::int64_t n = 0;
+    if (!formats::toInteger(token, n)) return false;
+    value = static_cast<long>(n);
+    return true;
 }
 
 double parseReal(std::string_view token, const TextFile& file, const std::string& what) {
     double value = 0;
-    if (!toReal(token, value)) {
-        if (nonFiniteNumber(token)) file.fail(tokenFor(token, what) + " is not a finite number");
-        file.fail("bad number " + tokenFor(token, what));
-    }
+    if (const std::string problem = formats::readReal(token, what, value); !problem.empty()) file.fail(problem);
     return value;
 }
 
 long parseInteger(std::string_view token, const TextFile& file, const std::string& what) {
-    long value = 0;
-    if (!toInteger(token, value)) {
-        double real = 0;
-        if (toReal(token, real)) file.fail(tokenFor(token, what) + " is not an integer");
-        file.fail("bad integer " + tokenFor(token, what));
-    }
-    return value;
+    std::int64_t value = 0;
+    const std::string problem = formats::readInteger(token, what, value, std::numeric_limits<long>::min(),
+                                                     std::numeric_limits<long>::max());
+    if (!problem.empty()) file.fail(problem);
+    return static_cast<long>(value);
 }
 
 long parseCount(std::string_view token, const TextFile& file, const std::string& what) {
-    const long value = parseInteger(token, file, what);
-    if (value < 0) file.fail(what + " must not be negative, found " + std::string(token));
-    return value;
+    std::uint64_t value = 0;
+    const std::string problem =
+        formats::readCount(token, what, value, static_cast<std::uint64_t>(std::numeric_limits<long>::max()));
+    if (!problem.empty()) file.fail(problem);
+    return static_cast<long>(value);
 }
 
 }  // namespace talus::cg

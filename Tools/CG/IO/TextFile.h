@@ -43,8 +43,9 @@ private:
 // Splits a line at blanks (spaces, tabs) into `fields` (views into `line`).
 void splitFields(std::string_view line, std::vector<std::string_view>& fields);
 
-// Strict conversions: the whole token must be a finite number (no nan, inf or overflow), an
-// integer a whole one ("1.7" and "1e30" are not); otherwise file.fail names `what`.
+// Strict conversions (Formats/Numbers.h, the same as the kernel's): the whole token must be a
+// finite number (no nan, inf or overflow), an integer a whole one ("1.7" and "1e30" are not);
+// otherwise file.fail names `what`.
 double parseReal(std::string_view token, const TextFile& file, const std::string& what);
 long parseInteger(std::string_view token, const TextFile& file, const std::string& what);
 // An integer that counts something: not negative.

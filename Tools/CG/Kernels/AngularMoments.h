@@ -1,7 +1,8 @@
 // The angular average of an isotropic coarse-graining function over a circle around an axis, for
 // fields in cylindrical coordinates (Documentation/CoarseGraining.md "Cylindrical coordinates";
-// Theory/RotatingDrum.md drums, Theory/CoarseGraining.md eq. (5)-(10) fields). A particle at distance ri from the axis contributes to the
-// field at (r, s) the mean of W over the circle of radius r:
+// Theory/RotatingDrum.md drums, Theory/CoarseGraining.md eq. (5)-(10) fields). A particle at
+// distance ri from the axis contributes to the field at (r, s) the mean of W over the circle of
+// radius r:
 //
 //   C_n = (1/2 pi) int_0^{2 pi} cos(n phi) W1(u(phi)) dphi,   n = 0, 1, 2,
 //   u^2(phi) = m2 + 4 a sin^2(phi/2),   m2 = ((r - ri)/wp)^2 + ((s - si)/wa)^2,   a = r ri / wp^2,

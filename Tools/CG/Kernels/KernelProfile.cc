@@ -106,9 +106,9 @@ double KernelProfile::lineIntegral(const double u0[3], const double e[3]) const 
     const double R2 = cutoffSquared();
     if (a == 0) return value(c);  // a segment of zero length: a point
     const double sqrtA = std::sqrt(a);
-    // tau = sqrt(a) (s - s*) with s* = -b/a the closest point: q^2 = tau^2 + m^2, ds = dtau/sqrt(a).
-    // tau at s = 0 and s = 1 are computed as projections, (a s + b)/sqrt(a), not from s*, which
-    // is huge for short segments far from the point and would cost digits.
+    // tau = sqrt(a) (s - s*) with s* = -b/a the closest point: q^2 = tau^2 + m^2,
+    // ds = dtau/sqrt(a). tau at s = 0 and s = 1 are computed as projections, (a s + b)/sqrt(a), not
+    // from s*, which is huge for short segments far from the point and would cost digits.
     const double sStar = -b / a;
     // m^2 at the closest point itself (not c - b^2/a, which cancels).
     double m2 = 0;

@@ -1,9 +1,9 @@
 // The radial shape of a coarse-graining function of unit width in 1, 2 or 3 dimensions
-// (Theory/CoarseGraining.md eq. (2)): W1(u) = c_d f(|u|^2) for |u| < R, zero beyond. The physical kernel is
-// W(r) = det(A) W1(A r) (WidthMatrix.h), so width enters only through A.
+// (Theory/CoarseGraining.md eq. (2)): W1(u) = c_d f(|u|^2) for |u| < R, zero beyond. The physical
+// kernel is W(r) = det(A) W1(A r) (WidthMatrix.h), so width enters only through A.
 //
 //   Lucy      f = 1 - 6q^2 + 8q^3 - 3q^4, R = 1 (the width is the cut-off radius),
-//             c_1 = 5/4, c_2 = 5/pi, c_3 = 105/(16 pi)            (Theory/CoarseGraining.md eq. (2), Lucy 1977)
+//             c_1 = 5/4, c_2 = 5/pi, c_3 = 105/(16 pi)   (Theory/CoarseGraining.md eq. (2), Lucy 1977)
 //   Gauss     f = exp(-q^2/2), R = 3 (the width is the standard deviation), c_d chosen so that
 //             the truncated kernel integrates to exactly 1 over the ball of radius 3
 //   Heaviside f = 1, R = 1, c_d = 1 / (volume of the unit ball): 1/2, 1/pi, 3/(4 pi)
@@ -34,11 +34,11 @@ public:
     // W1 at a point u with |u|^2 = q2 (zero outside the support).
     double value(double q2) const;
 
-    // The line integral  int_0^1 W1(u0 + s e) ds  (Theory/CoarseGraining.md eq. (10), contact stress along the branch
-    // vector; Weinhart et al. 2012), exact for every shape: the integrand depends on s only
-    // through q^2(s) = a (s - s*)^2 + m^2, so the clipped interval has closed forms
-    // (erf for Gauss, a polynomial plus asinh for Lucy). Very short clipped intervals use
-    // Gauss-Legendre quadrature instead, where the closed forms would lose digits to cancellation.
+    // The line integral int_0^1 W1(u0 + s e) ds (Theory/CoarseGraining.md eq. (10), contact stress
+    // along the branch vector; Weinhart et al. 2012), exact for every shape: the integrand depends
+    // on s only through q^2(s) = a (s - s*)^2 + m^2, so the clipped interval has closed forms (erf
+    // for Gauss, a polynomial plus asinh for Lucy). Very short clipped intervals use Gauss-Legendre
+    // quadrature instead, where the closed forms would lose digits to cancellation.
     double lineIntegral(const double u0[3], const double e[3]) const;
 
 private:

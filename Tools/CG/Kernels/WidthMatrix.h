@@ -1,8 +1,9 @@
-// The width of an anisotropic coarse-graining function (Theory/CoarseGraining.md eq. (1)): W(r) = det(A) W1(A r) with
-// A symmetric positive definite. The user gives the width matrix B = A^{-1}, which has the
-// widths along its eigenvectors: B = w I (isotropic), B = diag(wx, wy, wz) (widths per
-// direction, the "w / lambda_k" of Theory/CoarseGraining.md eq. (1)), or any symmetric positive definite matrix
-// (a kernel stretched along rotated axes). An isotropic kernel is the case A = I/w: one code path.
+// The width of an anisotropic coarse-graining function (Theory/CoarseGraining.md eq. (1)):
+// W(r) = det(A) W1(A r) with A symmetric positive definite. The user gives the width matrix
+// B = A^{-1}, which has the widths along its eigenvectors: B = w I (isotropic), B = diag(wx, wy,
+// wz) (widths per direction, the "w / lambda_k" of Theory/CoarseGraining.md eq. (1)), or any
+// symmetric positive definite matrix (a kernel stretched along rotated axes). An isotropic kernel
+// is the case A = I/w: one code path.
 //
 // Only the kernel's axes (the coordinates that are not averaged, Coordinates.h) take part: A is
 // the inverse of B restricted to those axes, embedded in a 3x3 matrix with zero rows and columns

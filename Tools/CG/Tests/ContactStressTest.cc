@@ -1,6 +1,6 @@
-// The contact stress (Theory/CoarseGraining.md eq. (10); Weinhart et al. 2012): each contact force spread along the
-// branch between the two centres (centre and contact point for walls) by the line integral of
-// the kernel, compressive positive.
+// The contact stress (Theory/CoarseGraining.md eq. (10); Weinhart et al. 2012): each contact force
+// spread along the branch between the two centres (centre and contact point for walls) by the line
+// integral of the kernel, compressive positive.
 //
 // 1. The exact line integrals of KernelProfile (polynomial + asinh for Lucy, erf for Gauss)
 //    against Gauss-Legendre quadrature along the segment split where the integrand is not smooth.

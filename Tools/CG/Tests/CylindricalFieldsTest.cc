@@ -182,8 +182,9 @@ TEST(CylindricalFields, RingSumsEqualTheCartesianFieldsOfManyParticlesOnIt) {
                                           std::to_string(points[p][2]);
                 EXPECT_NEAR(c[FieldSums::density], x[FieldSums::density], tolerance) << where;
                 EXPECT_NEAR(c[FieldSums::volumeFraction], x[FieldSums::volumeFraction], tolerance / 1.5) << where;
-                // Every particle has radius r0 and azimuthal velocity u_t: L = r0 u_t rho, I = r0^2 rho
-                // (up to the rounding of r_i and u_t from the positions, summed over 20000 terms).
+                // Every particle has radius r0 and azimuthal velocity u_t: L = r0 u_t rho, I = r0^2
+                // rho (up to the rounding of r_i and u_t from the positions, summed over 20000
+                // terms).
                 const int angular = cylindrical.layout().angularMomentumIndex();
                 const double l = r0 * u[1] * c[FieldSums::density], inertia = r0 * r0 * c[FieldSums::density];
                 EXPECT_NEAR(c[angular], l, 1e-11 * std::abs(l) + 1e-300) << where;
@@ -271,7 +272,8 @@ TEST(CylindricalFields, SolidBodyRotationIsAzimuthalWithNoRadialVelocity) {
         const double r = points[p][0];
         EXPECT_LT(std::abs(vr), 1e-14 * rot.omega * 5) << "r " << r;
         EXPECT_NEAR(vs, rot.drift, 1e-14) << "r " << r;
-        // Angular momentum over moment of inertia: sum m r_i (omega r_i) C0 / sum m r_i^2 C0 = omega.
+        // Angular momentum over moment of inertia: sum m r_i (omega r_i) C0 / sum m r_i^2
+        // C0 = omega.
         EXPECT_NEAR(derived.back(), rot.omega, 1e-14) << "r " << r;
         // The angular mean of the Cartesian fields on the circle (trapezoid rule; for a periodic
         // C^2 integrand its error falls faster than 1/circle^2).
@@ -286,7 +288,8 @@ TEST(CylindricalFields, SolidBodyRotationIsAzimuthalWithNoRadialVelocity) {
         const int labFields = cartesian.layout().count();
         for (int k = 0; k < circle; ++k) {
             const double a = 2 * pi * k / circle;
-            // Right-handed about +y: e_r = (cos, 0, sin) in (x, z), e_theta = e_y x e_r = (sin, 0, -cos).
+            // Right-handed about +y: e_r = (cos, 0, sin) in (x, z), e_theta = e_y x e_r = (sin, 0,
+            // -cos).
             const double* s = &labSums[k * labFields];
             meanRho += s[FieldSums::density] / circle;
             meanTheta += (s[FieldSums::momentum] * std::sin(a) - s[FieldSums::momentum + 2] * std::cos(a)) / circle;

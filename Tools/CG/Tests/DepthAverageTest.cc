@@ -13,11 +13,11 @@
 //   the |r|^3 term of the 2-D Lucy polynomial gives ~720 k^-5, its edge ~200 k^-4.5; at
 //   w_x = 20 a (k = 126) together < 2e-7.
 // - With the default bulk density (mass-weighted mean density), a slab of uniform density rho_0
-//   and thickness H smoothed by a 1-D kernel has int rho = rho_0 H and int rho^2 = rho_0^2 (H - 2B),
-//   B = int F (1 - F) dz over one edge (F the kernel's cumulative distribution); so
+//   and thickness H smoothed by a 1-D kernel has int rho = rho_0 H and int rho^2 = rho_0^2
+//   (H - 2B), B = int F (1 - F) dz over one edge (F the kernel's cumulative distribution); so
 //   h = H^2/(H - 2B). B is computed here by quadrature of the Lucy polynomial. A lattice of layers
-//   a apart is that slab up to the Euler-Maclaurin term (a^2/24) K' at the edges, a relative
-//   change of int rho^2 of order 0.02 (a/w)^2 (4e-5 measured at a = w/20): a = w/200 gives 4e-7.
+//   a apart is that slab up to the Euler-Maclaurin term (a^2/24) K' at the edges, a relative change
+//   of int rho^2 of order 0.02 (a/w)^2 (4e-5 measured at a = w/20): a = w/200 gives 4e-7.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -201,11 +201,11 @@ TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
          "nan.data line 2: 'nan' for the position is not a finite number"},
         {"inf.data", "1 inf 0 0 0 1 1 1\n" + particle, "inf.data line 1: 'inf' for the time t is not a finite number"},
         {"overflow.data", "1 0 0 0 0 1 1 1\n0.5 0.5 0.5 1e999 0 0 0.5 0 0 0 0 0 0 0\n",
-         "overflow.data line 2: '1e999' for the velocity is not a finite number"},
+         "overflow.data line 2: bad number '1e999' for the velocity (too large)"},
         {"inverted.data", "1 0 0 0 0 1 -1 1\n" + particle,
          "inverted.data line 1: the domain maximum -1 lies below the minimum 0 along y (an inverted box)"},
         {"negative.data", "-1 0 0 0 0 1 1 1\n", "negative.data line 1: the particle count N must not be negative, found -1"},
-        {"fraction.data", "1.5 0 0 0 0 1 1 1\n" + particle, "fraction.data line 1: '1.5' for the particle count N is not an integer"},
+        {"fraction.data", "1.5 0 0 0 0 1 1 1\n" + particle, "fraction.data line 1: '1.5' for the particle count N is not a whole number"},
         {"huge.data", "9223372036854775807 0 0 0 0 1 1 1\n" + particle,
          "huge.data line 3: file ends after 1 of the 9223372036854775807 particle lines of the frame at t = 0 (header line 1): truncated file?"},
     };

@@ -1,5 +1,6 @@
-// Theory/CoarseGraining.md eq. (2): every coarse-graining function integrates to 1, is symmetric and non-negative, in
-// 1, 2 and 3 dimensions, with isotropic, diagonal and rotated (full) width matrices.
+// Theory/CoarseGraining.md eq. (2): every coarse-graining function integrates to 1, is symmetric
+// and non-negative, in 1, 2 and 3 dimensions, with isotropic, diagonal and rotated (full) width
+// matrices.
 //
 // The kernel is evaluated as the density field of one particle of mass 1 at the origin (the
 // code path of every field). The integral is computed in polar/spherical coordinates around the
@@ -207,7 +208,8 @@ INSTANTIATE_TEST_SUITE_P(
     }()),
     caseName);
 
-// The normalisations written in Theory/CoarseGraining.md eq. (2) and KernelProfile.h, value at the centre.
+// The normalisations written in Theory/CoarseGraining.md eq. (2) and KernelProfile.h, value at the
+// centre.
 TEST(KernelProfile, CentreValuesAreTheNormalisations) {
     EXPECT_DOUBLE_EQ(KernelProfile(KernelShape::Lucy, 1).value(0), 5.0 / 4.0);
     EXPECT_DOUBLE_EQ(KernelProfile(KernelShape::Lucy, 2).value(0), 5.0 / pi);

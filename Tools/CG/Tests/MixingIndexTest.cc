@@ -1,5 +1,5 @@
-// Mixing index M and segregation index S (Theory/CoarseGraining.md eq. (13)-(16), Fields/MixingIndex.h) of synthetic packings
-// whose values are known:
+// Mixing index M and segregation index S (Theory/CoarseGraining.md eq. (13)-(16),
+// Fields/MixingIndex.h) of synthetic packings whose values are known:
 // - perfectly mixed: every particle of species 0 has a twin of species 1 at the same place, so
 //   rho_0 = rho_1 and phi = 1/2 at every point: M = 1 (to rounding), S = 0;
 // - another composition: three twins of species 1 per particle of species 0 give phi = 3/4

@@ -11,6 +11,7 @@
 #include "Fields/CoarseGrainer.h"
 #include "Fields/DerivedFields.h"
 #include "Fields/EvaluationPoints.h"
+#include "IO/InputError.h"
 
 using namespace talus::cg;
 using namespace talus::cg::test;
@@ -151,4 +152,49 @@ TEST(PointEvaluation, VelocityAndKineticStressOfUniformAndCounterStreamingMotion
     EXPECT_NEAR(values[5], 0.0, 1e-14);
     EXPECT_NEAR(values[8], values[0] * 1.5 * 1.5, 1e-12 * values[0]);  // KineticStressXX = rho u^2
     EXPECT_NEAR(values[13], 0.0, 1e-14);                                 // KineticStressZZ
+}
+
+// A driver coarse-graining its own particles gives their masses (ParticleFrame::mass; the drum's
+// ellipsoids are no spheres of their .data radius). Density and species density are then sums of
+// those masses times the kernel, the volume fraction still that of spheres of the radius: with
+// the masses doubled (m = 2 rho V, exact in floating point) the density doubles to the bit and
+// the volume fraction stays. In cylindrical coordinates too. A mass list of the wrong length is
+// refused.
+TEST(PointEvaluation, GivenMassesReplaceThoseOfTheRadius) {
+    const ParticleFrame spheres = makeFrame({{1, 1, 1}, {1.4, 0.8, 1.2}, {2, 2, 2}}, {0.5, 0.3, 0.4},
+                                            DomainBox{{0, 0, 0}, {3, 3, 3}}, {}, {0, 1, 0});
+    for (const std::string coordinates : {"XYZ", "XZ", "RZ"}) {
+        CoarseGrainingSetup setup;
+        setup.coordinates = Coordinates::fromName(coordinates);
+        if (setup.coordinates.isCylindrical()) setup.coordinates.setAxis(1, {0, 0, 0});
+        setup.width = WidthMatrix::isotropic(0.8);
+        setup.speciesDensity = {1.5, 2.5};
+        ParticleFrame given = spheres;
+        for (std::size_t p = 0; p < given.size(); ++p)
+            given.mass.push_back(2 * setup.speciesDensity[given.species[p]] * sphereVolume(given.radius[p]));
+        const auto points = gridPoints(setup.coordinates, {6, 6, 6}, {0.5, 0.5, 0.5}, {2.5, 2.5, 2.5});
+        std::vector<double> fromRadius, fromMass;
+        CoarseGrainer grainer(setup);
+        grainer.setFrame(spheres, nullptr);
+        grainer.evaluate(points, fromRadius);
+        grainer.setFrame(given, nullptr);
+        grainer.evaluate(points, fromMass);
+        const FieldSums& f = grainer.layout();
+        double total = 0;
+        for (std::size_t p = 0; p < points.size(); ++p) {
+            const double* a = fromRadius.data() + p * f.count();
+            const double* b = fromMass.data() + p * f.count();
+            EXPECT_EQ(b[FieldSums::density], 2 * a[FieldSums::density]) << coordinates << " point " << p;
+            EXPECT_EQ(b[f.speciesDensityIndex(1)], 2 * a[f.speciesDensityIndex(1)]) << coordinates << " point " << p;
+            EXPECT_EQ(b[FieldSums::volumeFraction], a[FieldSums::volumeFraction]) << coordinates << " point " << p;
+            total += a[FieldSums::density];
+        }
+        EXPECT_GT(total, 0) << coordinates;  // (the points see the particles)
+    }
+    ParticleFrame wrong = spheres;
+    wrong.mass = {1, 2};
+    CoarseGrainingSetup setup;
+    setup.speciesDensity = {1.5, 2.5};
+    CoarseGrainer grainer(setup);
+    EXPECT_THROW(grainer.setFrame(wrong, nullptr), InputError);
 }

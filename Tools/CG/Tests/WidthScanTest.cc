@@ -1,5 +1,5 @@
-// Automatic width selection (Theory/CoarseGraining.md "Choosing the widths", Fields/WidthScan.h) on a packing whose concentration is
-// known analytically, and the plateau rule on hand-made values.
+// Automatic width selection (Theory/CoarseGraining.md "Choosing the widths", Fields/WidthScan.h) on
+// a packing whose concentration is known analytically, and the plateau rule on hand-made values.
 //
 // The packing: a jittered simple cubic lattice of spacing 1 in a box 24 x 2 x 16, periodic in x
 // and y, coarse-grained in XZ. Layers k = 0..7 (centres z = k + 1/2) form the lower part: in
@@ -165,7 +165,8 @@ TEST(WidthScan, LayeredPackingChoosesWidthsInsideTheAnalyticWindow) {
     EXPECT_LE(std::abs(layeredPhi(wz) - phi0), 0.005) << "wz = " << wz;
     EXPECT_GT(wx, 2.0);
     // Every wz of the plateau is in the window (a biased width is never part of it), and the
-    // window is a real constraint: wz = 1.35 (layer alternation) and wz = 10 (large layers) are out.
+    // window is a real constraint: wz = 1.35 (layer alternation) and wz = 10 (large layers) are
+    // out.
     for (long j = result.plateau.second[0]; j <= result.plateau.second[1]; ++j) {
         EXPECT_LE(std::abs(layeredPhi(request.widths[1][j]) - phi0), 0.005) << "wz = " << request.widths[1][j];
     }

@@ -1,33 +1,66 @@
-// The parts of talus::Simulation that run only on more than one rank (Parallel/DomainSplit.h,
-// Documentation/Parallel.md): splitting the scene, the neighbourhood update of each step, the
-// agreement of all ranks on errors, and output gathered on rank 0.
+// The ranks of a run (Parallel/RankContext.h, Documentation/Parallel.md): splitting the scene,
+// the neighbourhood update of each step, the agreement of all ranks on errors, and output
+// gathered on rank 0.
+#include "Parallel/RankContext.h"
+
 #include <algorithm>
-#include <sstream>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "Contacts/PairList.h"
 #include "IO/OutputFiles.h"
 #include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
-#include "Boundaries/Boundary.h"
-#include "Simulation.h"
+#include "SimulationState.h"
 
 namespace talus {
 
-// Every rank set up (or read) the whole scene; each keeps the particles of its slab and the
-// contact histories that involve them. The first step builds the list (and rebalances).
-void Simulation::splitScene() {
-    require(runsOnRanks_, "driver '" + state_.settings.name + "' has not been made rank-aware (setRunsOnRanks): its analysis "
+RankContext::RankContext(Communicator& world) : world_(world) {}
+RankContext::~RankContext() = default;
+
+int RankContext::rank() const { return world_.rank(); }
+int RankContext::count() const { return world_.size(); }
+bool RankContext::isSplit() const { return split_ && split_->isParallel(); }
+
+double RankContext::sum(double x) const { return isSplit() ? world_.sum(x) : x; }
+double RankContext::max(double x) const { return isSplit() ? world_.max(x) : x; }
+void RankContext::sum(std::vector<double>& values) const {
+    if (isSplit()) world_.allReduce(values.data(), static_cast<int>(values.size()), Communicator::Reduction::sum);
+}
+
+void RankContext::setRebalanceInterval(double interval) {
+    require(interval >= 0, "flag --rebalance-interval must not be negative");
+    rebalanceInterval_ = interval;
+}
+
+void RankContext::start(const SimulationState& s) {
+    split_ = std::make_unique<DomainSplit>(world_);
+    if (grid_[0] > 0) split_->setGrid(grid_);
+    largestRadius_ = 0;
+    for (double r : s.particles.radius) largestRadius_ = std::max(largestRadius_, r);
+}
+
+std::uint64_t RankContext::idOfNewParticle(SimulationState& s) {
+    if (!isSplit()) return s.nextId++;
+    return provisionalIdBase + (std::uint64_t(rank()) << 40) + provisionalIds_++;
+}
+
+bool RankContext::isSentAsGhost(std::size_t slot) const {
+    return isSplit() && split_->isSentAsGhost(static_cast<std::uint32_t>(slot));
+}
+
+// The first step builds the list (and rebalances).
+void RankContext::splitScene(SimulationState& s, bool boundariesRunOnRanks, const std::string& name) {
+    require(runsOnRanks_, "driver '" + name + "' has not been made rank-aware (setRunsOnRanks): its analysis "
                           "would see the particles of one rank only; run it without mpirun (Documentation/Parallel.md)");
-    for (const Boundary* b : scene_->boundaries())
-        require(b->runsOnRanks(), "this driver has a boundary that does not run on more than one rank yet; run it "
+    require(boundariesRunOnRanks, "this driver has a boundary that does not run on more than one rank yet; run it "
                                   "without mpirun (Documentation/Parallel.md lists what runs on ranks)");
-    ParticleStore& p = state_.particles;
-    PairList& list = state_.pairList;
+    ParticleStore& p = s.particles;
+    PairList& list = s.pairList;
     pendingHistories_ = list.carriedHistories(p);
-    for (Vec3& x : p.position) state_.domain.wrap(x);
-    split_->balance(p, state_.domain, /*replicated*/ true);
+    for (Vec3& x : p.position) s.domain.wrap(x);
+    split_->balance(p, s.domain, /*replicated*/ true);
     split_->keepOwnShare(p);
     const std::unordered_set<std::uint64_t> mine(p.id.begin(), p.id.end());
     std::erase_if(pendingHistories_, [&mine](const CarriedHistory& c) { return !mine.count(c.a) && !mine.count(c.b); });
@@ -35,18 +68,17 @@ void Simulation::splitScene() {
     rebalancePending_ = true;
 }
 
-void Simulation::requestRebalance() { rebalancePending_ = true; }
-
 // All ranks agree whether to rebuild (any rank's particle moved too far), on the largest speed,
 // and on stopping if a rank found a non-finite position now or overlaps beyond the limit at the
-// end of the last step (Simulation::OverlapCheck): the one collective of a step that writes no
-// output. A rebuild drops the ghosts, rebalances
-// if asked, migrates particles with their histories, reorders, and makes the ghosts anew;
-// otherwise the ghosts are brought up to date.
-bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried) {
-    ParticleStore& p = state_.particles;
-    PairList& list = state_.pairList;
-    const double dt = state_.settings.timeStep;
+// end of the last step (OverlapCheck, Integration/StepHost.h): the one collective of a step that
+// writes no output. A rebuild drops the ghosts, rebalances if asked, migrates particles with
+// their histories, reorders, and makes the ghosts anew; otherwise the ghosts are brought up to
+// date.
+bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
+                                      const std::function<void()>& reorder) {
+    ParticleStore& p = s.particles;
+    PairList& list = s.pairList;
+    const double dt = s.settings.timeStep;
     std::string failure = std::move(overlapsToAgree_);  // the earlier of two diagnoses
     overlapsToAgree_.clear();
     bool rebuild = false;
@@ -55,69 +87,69 @@ bool Simulation::updateNeighbourhoodOnRanks(std::vector<CarriedHistory>& carried
         // needs them as ghosts (PairList::relist); else the list is built anew, on every rank.
         for (std::uint32_t slot : list.noted())
             if (slot < list.referencePosition.size() &&
-                !split_->nobodyElseNeeds(list.referencePosition[slot], p.species[slot], state_.domain))
+                !split_->nobodyElseNeeds(list.referencePosition[slot], p.species[slot], s.domain))
                 list.valid = false;
-        list.relist(p, state_.domain, state_.walls);
-        rebuild = list.needsRebuild(p, state_.domain, state_.time, dt);
+        list.relist(p, s.domain, s.walls);
+        rebuild = list.needsRebuild(p, s.domain, s.time, dt);
     } catch (const Error& e) {
         if (failure.empty()) failure = e.what();
     }
     // A rebalance that is due (the same step on every rank) needs a list build to act.
-    const bool due = rebalanceInterval_ > 0 && state_.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
+    const bool due = rebalanceInterval_ > 0 && s.time >= lastBalanceTime_ + rebalanceInterval_ - 0.5 * dt;
     // (And whether a rank found its particles moved by hand since the last step: their ghosts
     // on other ranks moved too, and every rank's near list is made anew: PositionWatch::checkFound.)
-    bool& positionsChanged = work_->positions.changedThisStep;
-    double agreed[4] = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
-                        positionsChanged ? 1.0 : 0.0};
+    DomainSplit::Agreement agreed = {rebuild || due ? 1.0 : 0.0, list.maxSpeed, failure.empty() ? 0.0 : rank() + 1.0,
+                                     positionsChanged ? 1.0 : 0.0};
     positionsChanged = false;
-    {
+    // The ghosts' states travel while the ranks agree, with this rank's numbers: when every
+    // other rank is a partner they are the agreement (no allreduce); else an allreduce runs while
+    // the messages travel. One wait for both; the states are applied unless the step rebuilds.
+    split_->startGhostUpdate(p, agreed);
+    if (!split_->agreesThroughGhosts()) {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
-        split_->communicator().allReduce(agreed, 4, Communicator::Reduction::max);
+        world_.allReduce(agreed.data(), static_cast<int>(agreed.size()), Communicator::Reduction::max);
     }
+    split_->finishGhostUpdate(agreed);
+    if (agreed[0] == 0 && agreed[2] == 0) split_->applyGhostUpdate(p);
     if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
                                               : failure,
                               failure.empty());
     list.maxSpeed = agreed[1];
-    if (agreed[0] == 0) {
-        split_->updateGhosts(p);
-        return false;
-    }
-    renumberNewParticles();
+    if (agreed[0] == 0) return false;
+    renumberNewParticles(s);
     carried = list.carriedHistories(p);
     carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
     pendingHistories_.clear();
     list.clear();
-    if (rebalancePending_ || due) rebalance();
+    if (rebalancePending_ || due) rebalance(s);
     split_->migrate(p, carried);
-    reorderParticles(/*withPreviousForces*/ false);
-    split_->makeGhosts(p, state_.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
+    reorder();
+    split_->makeGhosts(p, s.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
     return true;
 }
 
 // Equal particle counts (a function of the positions only, so runs stay repeatable).
-void Simulation::rebalance() {
-    split_->balance(state_.particles, state_.domain, /*replicated*/ false);
-    lastBalanceTime_ = state_.time;
+void RankContext::rebalance(SimulationState& s) {
+    split_->balance(s.particles, s.domain, /*replicated*/ false);
+    lastBalanceTime_ = s.time;
     rebalancePending_ = false;
 }
 
-// A boundary adds or removes a particle while ghosts sit behind the owned particles: the list's
-// histories are kept by ids until the rebuild that the change forces, and the ghosts go (the
-// rebuild makes them anew).
-void Simulation::releaseGhosts() {
-    std::vector<CarriedHistory> carried = state_.pairList.carriedHistories(state_.particles);
+// (The rebuild makes the ghosts anew.)
+void RankContext::releaseGhosts(SimulationState& s) {
+    std::vector<CarriedHistory> carried = s.pairList.carriedHistories(s.particles);
     pendingHistories_.insert(pendingHistories_.end(), carried.begin(), carried.end());
-    state_.pairList.clear();
-    state_.particles.dropGhosts();
+    s.pairList.clear();
+    s.particles.dropGhosts();
 }
 
 // The particles added on any rank since the last call get their ids: every rank learns the new
 // particles of all (their provisional ids and positions), orders them by position, and numbers
 // them from nextId on, so that the ids do not depend on which rank made which particle.
-void Simulation::renumberNewParticles() {
-    ParticleStore& p = state_.particles;
+void RankContext::renumberNewParticles(SimulationState& s) {
+    ParticleStore& p = s.particles;
     struct Added {
         double x, y, z;
         std::uint64_t provisional;
@@ -131,25 +163,25 @@ void Simulation::renumberNewParticles() {
         for (std::size_t i = 0; i < p.owned(); ++i)
             if (p.id[i] >= provisionalIdBase) out.put(Added{p.position[i].x(), p.position[i].y(), p.position[i].z(), p.id[i]});
     std::vector<Added> all;
-    for (const Bytes& bytes : split_->communicator().allGather(mine)) {
+    for (const Bytes& bytes : world_.allGather(mine)) {
         Unpacker in(bytes);
         while (!in.atEnd()) all.push_back(in.get<Added>());
     }
     if (all.empty()) return;
     std::sort(all.begin(), all.end());
     std::unordered_map<std::uint64_t, std::uint64_t> finalId;
-    for (std::size_t k = 0; k < all.size(); ++k) finalId.emplace(all[k].provisional, state_.nextId + k);
+    for (std::size_t k = 0; k < all.size(); ++k) finalId.emplace(all[k].provisional, s.nextId + k);
     for (std::size_t i = 0; i < p.owned(); ++i)
         if (p.id[i] >= provisionalIdBase) p.id[i] = finalId.at(p.id[i]);
-    state_.nextId += all.size();
+    s.nextId += all.size();
     provisionalIds_ = 0;
 }
 
-void Simulation::agreeOnOverlaps(const std::string& diagnosis) {
+void RankContext::agreeOnOverlaps(const std::string& diagnosis) {
     double failed = diagnosis.empty() ? 0.0 : rank() + 1.0;
     {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
-        split_->communicator().allReduce(&failed, 1, Communicator::Reduction::max);
+        world_.allReduce(&failed, 1, Communicator::Reduction::max);
     }
     if (failed > 0)
         throw CollectiveError(diagnosis.empty() ? "stopped: rank " + std::to_string(int(failed) - 1) +
@@ -188,30 +220,28 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
 
 }  // namespace
 
-// Rank 0 writes the frame and the restart file of the particles, contacts and histories of all
-// ranks, with the same writers as a serial run; then every rank marks its list for a rebuild at
-// the next step, which is what a run restarted from these files does first (exact restarts).
-void Simulation::writeGatheredOutput() {
-    run_->saveKeptValues(state_);
-    const RunSettings& c = state_.settings;
+// With the same writers as a serial run; then every rank marks its list for a rebuild at the next
+// step, which is what a run restarted from these files does first (exact restarts).
+void RankContext::writeGatheredOutput(SimulationState& s, OutputFiles* files, const StepWorkspace& work) {
+    const RunSettings& c = s.settings;
     if (!(c.writeData || c.writeFstat || c.writeEne || c.writeVtu || c.writeRestart)) return;  // nothing to gather
-    renumberNewParticles();
-    ParticleStore& p = state_.particles;
+    renumberNewParticles(s);
+    ParticleStore& p = s.particles;
     ParticleStore gathered = split_->gatherParticles(p);
-    const ContactRecordList records = split_->gatherRecords(p, work_->records.each(), gathered);
+    const ContactRecordList records = split_->gatherRecords(p, work.records.each(), gathered);
     const std::vector<CarriedHistory> histories =
-        split_->gatherHistories(state_.pairList.carriedHistories(p, /*firstOwned*/ true));
-    if (rank() == 0 && files_) {
-        PairList saved = listOfGathered(histories, gathered, state_.pairList, state_.walls.size());
-        std::swap(state_.particles, gathered);
-        std::swap(state_.pairList, saved);
+        split_->gatherHistories(s.pairList.carriedHistories(p, /*firstOwned*/ true));
+    if (rank() == 0 && files) {
+        PairList saved = listOfGathered(histories, gathered, s.pairList, s.walls.size());
+        std::swap(s.particles, gathered);
+        std::swap(s.pairList, saved);
         auto swapBack = [&] {
-            std::swap(state_.particles, gathered);
-            std::swap(state_.pairList, saved);
+            std::swap(s.particles, gathered);
+            std::swap(s.pairList, saved);
         };
         try {
-            files_->writeFrame(state_, records, work_->recordedContacts, work_->elasticEnergy);
-            files_->writeRestart(state_);
+            files->writeFrame(s, records, work.recordedContacts, work.elasticEnergy);
+            files->writeRestart(s);
         } catch (...) {
             swapBack();
             throw;
@@ -219,7 +249,7 @@ void Simulation::writeGatheredOutput() {
         swapBack();
     }
     if (!c.writeRestart) return;
-    state_.pairList.valid = false;
+    s.pairList.valid = false;
     rebalancePending_ = true;
 }
 

@@ -1,0 +1,547 @@
+// The force loop: contact forces and torques of every listed pair and wall candidate, compiled
+// once per contact law (no dispatch, search or allocation per contact) and once per lane form
+// (Math/LaneKernels.h; the entry point is Contacts/ContactForces.h).
+// Geometry and kinematics follow Theory/ContactLaws.md eq. (1)-(3): n from j to i, dn = ri + rj - rij, branch vectors
+// bij = -(ri - dn/2) n and bji = (rj - dn/2) n to the middle of the overlap.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <sstream>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "Boundaries/Domain.h"
+#include "Contacts/ContactBatch.h"
+#include "Contacts/ContactForces.h"
+#include "Contacts/ContactReport.h"
+#include "Contacts/EllipsoidContactBatch.h"
+#include "Contacts/IdOrderedForceSums.h"
+#include "Contacts/PairList.h"
+#include "Contacts/PairSweepLanes.h"
+#include "Contacts/ShapedContactGeometry.h"
+#include "Contacts/WaveSchedule.h"
+#include "Error.h"
+#include "Math/LaneNamespace.h"
+#include "Particles/ParticleStore.h"
+#include "Species/SpeciesTable.h"
+#include "Walls/Wall.h"
+#include "Walls/PrescribedMotion.h"
+
+namespace talus::TALUS_LANES {
+
+// Kinematics of particle i against a partner at distance rij along the unit normal n (Theory/ContactLaws.md eq. (1)-(3));
+// overlap = ri + rj - rij may be negative for a pair that just separated. The branch vectors are
+// bij = -armI n and bji = armJ n with arms ri - dn/2 and rj - dn/2 (rj = 0 for walls), so the
+// spin part of the tangential velocity, wi x bij - wj x bji, is -(armI wi + armJ wj) x n.
+struct Arms {
+    double i, j;
+};
+inline ContactKinematics contactKinematics(const Vec3& n, double overlap, double radiusI, double radiusJ,
+                                           const Vec3& relativeVelocity, const Vec3& spinI, const Vec3& spinJ,
+                                           Arms& arms) {
+    arms = {radiusI - 0.5 * overlap, radiusJ - 0.5 * overlap};
+    ContactKinematics c;
+    c.normal = n;
+    c.overlap = overlap;
+    c.relativeVelocity = relativeVelocity;
+    c.normalVelocity = relativeVelocity.dot(n);
+    c.tangentialVelocity = relativeVelocity - c.normalVelocity * n - (arms.i * spinI + arms.j * spinJ).cross(n);
+    return c;
+}
+
+// The force loop over the listed pairs and wall candidates of one step, for one contact law.
+// Its parts are member functions so that the compiler inlines the common case (a pair inside a
+// contact) whole and keeps the rare ones (the ends of a contact, output records) out of the way.
+template <class Law>
+class ContactForceLoopInLanes final : public ContactForceLoopOfForm<Law> {
+public:
+    explicit ContactForceLoopInLanes(const ContactForceLoopArguments<Law>& a)
+        : p_(a.p), laws_(a.laws), dt_(a.dt), closing_(2 * a.maxSpeed * a.dt), previousForce_(a.previousForce),
+          summary_(a.summary), records_(a.records), shapes_(a.p.hasShapes() ? a.shapes : nullptr),
+          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {}
+
+    // nearPairs: the near list may be swept (not with particles on prescribed motions, whose
+    // positions the step sets apart from their velocities).
+    void particlePairs(PairList& list, const Domain& domain, bool nearPairs) override {
+        const PeriodicImage image(domain);
+        // Two passes per chunk of the list: a branch-free sweep over the listed pairs
+        // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
+        // next step, or just separated), then the contacts are computed for those alone.
+        // The sweep sees each particle's radius grown by how far it moves within the step relative
+        // to a frame moving with a velocity u common to all, |v - u| dt (PairSweep.h): a pair
+        // closes its gap by at most |vi - vj| dt <= (|vi - u| + |vj - u|) dt, so a pair whose grown
+        // spheres are apart cannot touch within the step (the test of pairContact below). The
+        // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
+        // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
+        // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
+        double growth;
+        if (list.sweepPointsGrowth && list.sweepPointScratch.size() == p_.size()) {  // made with the drift
+            growth = *list.sweepPointsGrowth;
+        } else {
+            const Vec3 frame = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
+            growth = sweepPointsForStep(p_, dt_, frame, list.sweepPointScratch);
+        }
+        list.sweepPointsGrowth.reset();
+        const SweepPoint* points = list.sweepPointScratch.data();
+        SweptPairs swept;
+        if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
+            chooseSweepForm(list.pairs.data(), list.pairs.size(), points, p_.size(), list.history.states(), image,
+                            swept);
+        // The near list where it holds every pair the sweep can pick (PairSweep.h), else all pairs.
+        // On ranks each keeps its own: a ghost moved by the drift of its owner with the velocity
+        // that came with it, which its growth holds, and any other move of a ghost rebuilds.
+        if (nearPairs && useNearPairs(list, growth)) {
+            if (!list.near.made)
+                TALUS_LANES::makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(), list.nearSkinFraction * list.skin,
+                              image, list.nearPointScratch, swept);
+            const NearPairs& near = list.near;
+            sweptContacts<false>(list, 0, near.interior, points, image, swept, &near);
+            sweptContacts<true>(list, near.interior, near.pairs.size(), points, image, swept, &near);
+        } else {
+            list.near.made = false;  // (its bound of the displacements does not follow this step)
+            const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
+            sweptContacts<false>(list, 0, interior, points, image, swept);
+            sweptContacts<true>(list, interior, list.pairs.size(), points, image, swept);
+        }
+        if constexpr (Law::batched) flush(list);
+        if (shapes_) flushEllipsoids(list);
+    }
+
+    // The listed pairs [from, to) (or those of a near list), a chunk at a time: the sweep, then
+    // the contacts it picked.
+    // In a scene of spheres without pair forces kept for sums in id order (plain), the contact
+    // pass is compiled without the branches for those (3% of the settled bed's step at 3000,
+    // Documentation/Performance.md, table of changes).
+    template <bool nearestImage>
+    void sweptContacts(PairList& list, std::size_t from, std::size_t to, const SweepPoint* points,
+                       const PeriodicImage& image, SweptPairs& swept, const NearPairs* near = nullptr,
+                       const std::uint32_t* index = nullptr) {
+        if (!shapes_ && !perPair_)
+            sweptContactsOf<nearestImage, true>(list, from, to, points, image, swept, near, index);
+        else
+            sweptContactsOf<nearestImage, false>(list, from, to, points, image, swept, near, index);
+    }
+    template <bool nearestImage, bool plain>
+    void sweptContactsOf(PairList& list, std::size_t from, std::size_t to, const SweepPoint* points,
+                         const PeriodicImage& image, SweptPairs& swept, const NearPairs* near,
+                         const std::uint32_t* index) {
+        for (std::size_t begin = from; begin < to; begin += SweptPairs::capacity) {
+            const std::size_t end = std::min(to, begin + SweptPairs::capacity);
+            if (near)
+                sweepNearPairs<nearestImage>(*near, begin, end, points, list.history.states(), image, swept);
+            else if (index)
+                sweepIndexedPairs<nearestImage>(list.pairs.data(), index, begin, end, points, list.history.states(),
+                                                image, swept);
+            else
+                sweepPairs<nearestImage>(list.pairs.data(), begin, end, points, p_.size(), list.history.states(), image,
+                                         swept);
+            for (std::size_t a = 0; a < swept.count; ++a) {
+                if (prefetchPartners_ && a + prefetchAhead < swept.count) {
+                    prefetchPartner(swept.particles[a + prefetchAhead].j);
+                    list.history.prefetch(swept.pair[a + prefetchAhead]);
+                }
+                pairContact<plain>(list, swept.pair[a], swept.particles[a], swept.separation(a));
+            }
+        }
+    }
+
+    // The partner's data that the contact pass reads, and the pair's history, asked for a few
+    // picked pairs ahead: the partners' slots jump about, and the picked pairs are a sparse subset
+    // of the list whose histories no hardware prefetcher foresees, so once the arrays outgrow the
+    // caches those loads miss (the history's was the hottest instruction of the force loop at
+    // 108000). Only in large scenes: measured on the benchmark chute (Documentation/Performance.md),
+    // the partner's 7-10% faster at 108000 particles, no gain at 27000 and 1.5-2% slower at 3000
+    // and 12000; the history's another 6-8% at 108000, from the settled bed and the flow.
+    static constexpr std::size_t prefetchAhead = 8, prefetchFromParticles = 65536;
+    void prefetchPartner(std::uint32_t j) const {
+        __builtin_prefetch(p_.velocity.data() + j);
+        __builtin_prefetch(p_.angularVelocity.data() + j);
+        __builtin_prefetch(previousForce_.data() + j);
+    }
+
+    // Pair k of the list, of particles ij, whose separation xi - xj (nearest image) is d.
+    // plain: no shapes and no pair forces kept (sweptContacts).
+    template <bool plain>
+    [[gnu::always_inline]] void pairContact(PairList& list, std::size_t k, ParticlePair ij, const Vec3& d) {
+        const std::uint32_t i = ij.i, j = ij.j;
+        if constexpr (!plain) {
+            if (perPair_) [[unlikely]]
+                currentPair_ = k;
+            if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
+                shapedPair(list, k, i, j, d.x(), d.y(), d.z());
+                return;
+            }
+        }
+        const double radiusI = p_.radius[i], radiusJ = p_.radius[j], sumR = radiusI + radiusJ;
+        const double r2 = d.squaredNorm();
+        const bool touching = r2 < sumR * sumR;
+        if constexpr (Law::batched) {
+            // Inside a lasting contact: into the batch (see ContactBatch).
+            if (touching && list.history.state(k) == ContactHistory::touching) {
+                const Law& law = laws_(p_.species[i], p_.species[j]);
+                if (law.treatContactEnds) {
+                    batch_.add(k, i, j, d, radiusI, radiusJ, law);
+                    if (batch_.full()) flush(list);
+                    return;
+                }
+            }
+        }
+        const Vec3 relativeVelocity = p_.velocity[i] - p_.velocity[j];
+        const bool apartBefore = !touching && list.history.state(k) == ContactHistory::apart;
+        // Apart with nothing pending and moving apart (v.d >= 0, so v.n >= 0: decided before
+        // any square root; in a fast flow most picked pairs are such): no force, and no work
+        // beyond noting that the pair applied no force this step.
+        if (apartBefore && !(relativeVelocity.dot(d) < 0)) {
+            list.history.clearLastNormalForce(k);
+            return;
+        }
+        const double distance = std::sqrt(r2), inverseDistance = 1 / distance;
+        const Vec3 n = d * inverseDistance;
+        // Apart and approaching, but not closing the gap within the next step at the present
+        // speed: likewise (approachForce would push nothing).
+        if (apartBefore) {
+            const double u = relativeVelocity.dot(n);
+            if (!(u < 0 && distance - sumR < -u * dt_)) {
+                list.history.clearLastNormalForce(k);
+                return;
+            }
+        }
+        ContactHistory history = list.history.get(k);
+        Arms arms;
+        ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j], relativeVelocity,
+                                                p_.angularVelocity[i], p_.angularVelocity[j], arms);
+        c.inverseDistance = inverseDistance;
+        const double inverseMassSum = p_.invMass[i] + p_.invMass[j];
+        c.inverseReducedMass = inverseMassSum;
+        // The last step's forces on i and j, less this pair's own (ContactKinematics.h).
+        c.otherAcceleration = previousForce_[i].dot(c.normal) * p_.invMass[i] -
+                              previousForce_[j].dot(c.normal) * p_.invMass[j] -
+                              history.lastNormalForce * inverseMassSum;
+        if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+        const Law& law = laws_(p_.species[i], p_.species[j]);
+        if (touching)
+            touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
+        else
+            history = apart(i, j, c, arms, history, law);
+        list.history.set(k, history);
+    }
+
+    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, Theory/Maser.md eq. (3)):
+    // the scalar path with j's image, and the force on i alone. They are few (one layer of the
+    // face), so they never enter a batch; they write no .fstat records (a force without its
+    // reaction would break the stress of coarse graining).
+    void oneWayPairs(PairList& list, const Domain& domain) override {
+        if (list.oneWayPairs.empty()) return;
+        const PeriodicImage image(domain);
+        const double shift = domain.oneWay.length();
+        oneWay_ = true;
+        for (std::size_t k = 0; k < list.oneWayPairs.size(); ++k) {
+            const std::uint32_t i = list.oneWayPairs[k].i, j = list.oneWayPairs[k].j;
+            Vec3 d = p_.position[i] - p_.position[j];
+            d.x() += shift;
+            d = image.nearest(d);
+            const double sumR = p_.radius[i] + p_.radius[j], distance = d.norm();
+            const Vec3 n = d / distance;
+            ContactHistory history = list.oneWayHistory.get(k);
+            Arms arms;
+            ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j],
+                                                    p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
+                                                    p_.angularVelocity[j], arms);
+            c.inverseDistance = 1 / distance;
+            c.inverseReducedMass = p_.invMass[i] + p_.invMass[j];
+            c.otherAcceleration = previousForce_[i].dot(n) * p_.invMass[i] - previousForce_[j].dot(n) * p_.invMass[j] -
+                                  history.lastNormalForce * c.inverseReducedMass;
+            if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+            const Law& law = laws_(p_.species[i], p_.species[j]);
+            const double smallerRadius = std::min(p_.radius[i], p_.radius[j]);
+            if (distance < sumR) {
+                touch(i, j, c, arms, history, law, smallerRadius);
+                // Beyond a tenth of the radius j feels the share of the normal force that the
+                // excess overlap makes: in a slow flow, j may be pushed on from behind while i,
+                // in front of j's image, sits against the base, and the overlap would grow
+                // without bound (OneWayPeriodicBox::reactionOverlap).
+                const double excess = c.overlap - OneWayPeriodicBox::reactionOverlap * smallerRadius;
+                if (excess > 0 && history.lastNormalForce > 0) {
+                    p_.force[j] -= (history.lastNormalForce * excess / c.overlap) * n;
+                    ++summary_.oneWayReactions;
+                }
+            } else {
+                history = apart(i, j, c, arms, history, law);
+            }
+            list.oneWayHistory.set(k, history);
+        }
+        oneWay_ = false;
+    }
+
+    void wallPairs(PairList& list, const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions) override {
+        for (std::size_t k = 0; k < list.wallPairs.size(); ++k) wallPair(list, k, walls, motions);
+    }
+
+    // The pairs and wall candidates one region of a wave computes (Contacts/WaveSchedule.h): its
+    // interior pairs, those near a face, its particles' walls, then the batches applied, so that
+    // the region's particles have all their forces of the step before they advance. The pairs are
+    // runs of places in the list, swept as a single step sweeps the list.
+    // nearRuns: if given, the places in the near list (list.near) of each run's near pairs
+    // (Simulation::nearPairsForWave): those alone are swept, as a single step sweeps the near list.
+    void regionPairs(PairList& list, const Domain& domain, const WaveSchedule& schedule, const WaveRegion& region,
+                     const std::vector<Wall>& walls, const PlaceRun* nearRuns) override {
+        const PeriodicImage image(domain);
+        const SweepPoint* points = list.sweepPointScratch.data();
+        const PlaceRun* runs = nearRuns ? nearRuns : schedule.placeRuns().data();
+        const NearPairs* near = nearRuns ? &list.near : nullptr;
+        SweptPairs swept;
+        for (std::uint32_t u = region.runs; u < region.interiorEnd; ++u)
+            sweptContacts<false>(list, runs[u].begin, runs[u].end, points, image, swept, near);
+        for (std::uint32_t u = region.interiorEnd; u < region.end; ++u)
+            sweptContacts<true>(list, runs[u].begin, runs[u].end, points, image, swept, near);
+        static const std::vector<PrescribedMotion> noMotions;
+        for (std::uint32_t e = region.wallsBegin; e < region.wallsEnd; ++e)
+            wallPair(list, schedule.wallIndex()[e], walls, noMotions);
+        if constexpr (Law::batched) flush(list);
+    }
+    // Raises the largest speed the skipping of far walls assumes (to one measured since).
+    void allowSpeed(double maxSpeed) override { closing_ = std::max(closing_, 2 * maxSpeed * dt_); }
+
+private:
+    void wallPair(PairList& list, std::size_t k, const std::vector<Wall>& walls,
+                  const std::vector<PrescribedMotion>& motions) {
+        {
+            const std::uint32_t i = list.wallPairs[k].particle;
+            const Wall& wall = walls[list.wallPairs[k].wall];
+            if (shapes_ && p_.isShaped(i)) [[unlikely]] {
+                shapedWall(list, k, i, wall, motions);
+                return;
+            }
+            const double distance = wall.signedDistance(p_.position[i]);
+            const bool touching = distance < p_.radius[i];
+            // (A moving wall may close in faster than the particles: no shortcut for it.)
+            if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
+                distance - p_.radius[i] >= closing_)
+                return;
+            ContactHistory history = list.wallHistory.get(k);
+            const double overlap = p_.radius[i] - distance;
+            const Vec3 normal = wall.normalAt(p_.position[i]);
+            const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * normal;
+            const Vec3 wallVelocity =
+                wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
+            Arms arms;
+            ContactKinematics c = contactKinematics(normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
+                                                    p_.angularVelocity[i], Vec3::Zero(), arms);
+            c.inverseDistance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
+            c.inverseReducedMass = p_.invMass[i];
+            c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
+            // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
+            // direction only, the mean curvature of the gap, 1/r - 1/(2R) (Theory/Superquadrics.md eq. (12)).
+            c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
+            const Law& law = laws_(p_.species[i], wall.species);
+            const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
+            if (touching)
+                touch(i, wallIndex, c, arms, history, law, p_.radius[i]);
+            else
+                history = apart(i, wallIndex, c, arms, history, law);
+            list.wallHistory.set(k, history);
+        }
+    }
+
+    // --- non-spherical particles (Theory/Superquadrics.md): defined, with their comments, in
+    // Contacts/ShapedContactForces.h ---
+    [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
+                                      double dy, double dz);
+    bool isEllipsoid(std::uint32_t i) const;
+    bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
+    void flushEllipsoids(PairList& list);
+    void laneContact(PairList& list, int l, ContactHistory history);
+    void shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& xj,
+                        ContactHistory history, const ShapedContactGeometry& g);
+    [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,
+                                      const std::vector<PrescribedMotion>& motions);
+    void shapedContact(ContactHistory& history, const ShapedContactGeometry& g, std::uint32_t i, std::int64_t j,
+                       const Vec3& xj, const Vec3& vj, const Vec3& wj, double invMassJ, const Law& law, double size);
+
+    // The largest overlap of the step, as a fraction of the smaller size (j < 0: wall -j - 1).
+    [[gnu::always_inline]] void noteOverlap(std::uint32_t i, std::int64_t j, double overlap, double size) {
+        if (overlap > summary_.maxOverlapFraction * size) [[unlikely]] {
+            summary_.maxOverlapFraction = overlap / size;
+            summary_.worstA = p_.id[i];
+            summary_.worstB = j >= 0 ? p_.id[static_cast<std::size_t>(j)] : static_cast<std::uint64_t>(-j - 1);
+            summary_.worstIsWall = j < 0;
+        }
+    }
+
+    // The smallest semi-axis (spheres: the radius): what overlaps are measured against.
+    double sizeOf(std::uint32_t i) const {
+        return p_.isShaped(i) ? (*shapes_)[static_cast<std::size_t>(p_.shape[i])].semiAxes().minCoeff() : p_.radius[i];
+    }
+
+    [[noreturn]] void detectionFailed(std::uint32_t i, std::uint32_t j) const {
+        std::ostringstream m;
+        m << "superquadric contact detection failed between particle id " << p_.id[i] << " at ("
+          << p_.position[i].transpose() << ") and particle id " << p_.id[j] << " at (" << p_.position[j].transpose()
+          << "): Newton's method and its fallback (morphing from the bounding spheres) did not converge";
+        throw Error(m.str());
+    }
+
+    // Force and torque on i (and j, unless it is a wall, j < 0) of one contact, or of the
+    // separation impulse of a pair that stopped touching during the last step. The torques are
+    // bij x f = -armI n x f and -bji x f = -armJ n x f.
+    [[gnu::always_inline]] void apply(std::uint32_t i, std::int64_t j, const ContactForce& f, const Vec3& n,
+                                      const Arms& arms) {
+        const Vec3 force = f.normalForce * n + f.tangentialForce;
+        const Vec3 turn = n.cross(f.tangentialForce);  // n x force
+        if (perPair_ && j >= 0 && !oneWay_) [[unlikely]] {  // kept for the sums in id order
+            PairContribution& c = perPair_[currentPair_];
+            c.force += force;
+            c.torqueI -= arms.i * turn;
+            c.torqueJ -= arms.j * turn;
+            return;
+        }
+        p_.force[i] += force;
+        p_.torque[i] -= arms.i * turn;
+        if (j >= 0 && !oneWay_) {
+            p_.force[j] -= force;
+            p_.torque[j] -= arms.j * turn;
+        }
+    }
+
+    [[gnu::always_inline]] void touch(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
+                                      ContactHistory& history, const Law& law, double smallerRadius) {
+        const ContactForce f = law.force(c, history, dt_);
+        history.state = ContactHistory::touching;
+        history.lastNormalForce = f.normalForce;
+        apply(i, j, f, c.normal, arms);
+        ++summary_.contacts;
+        noteOverlap(i, j, c.overlap, smallerRadius);
+        if (records_ && !oneWay_) [[unlikely]]
+            record(i, j, c, arms, history, law, f);
+    }
+
+    [[gnu::noinline]] void record(std::uint32_t i, std::int64_t j, ContactKinematics c, Arms arms,
+                                  ContactHistory history, const Law& law, ContactForce f) {
+        records_->add({i, j, p_.position[i] - arms.i * c.normal, c.overlap, history.spring.norm(), f.normalForce,
+                       c.normal, f.tangentialForce, law.elasticEnergy(c, history.spring)});
+    }
+
+    // Apart now: a pair that stopped touching during the last step gets its separation impulse,
+    // one that will touch within the next step its push ahead (LinearSpringDashpot.h).
+    // (Everything by value, so that the caller's copies stay in registers; returns the new history.)
+    [[gnu::noinline]] ContactHistory apart(std::uint32_t i, std::int64_t j, ContactKinematics c, Arms arms,
+                                           ContactHistory history, const Law& law) {
+        double normalForce = 0;
+        if (history.isTouching()) {
+            const ContactForce f = law.separationForce(c, history, dt_);
+            apply(i, j, f, c.normal, arms);
+            normalForce = f.normalForce;
+            history = ContactHistory{};  // Theory/ContactLaws.md eq. (13): the spring lives from the first time of contact
+        }
+        const double push = law.approachForce(c, history, dt_);
+        if (push != 0) apply(i, j, {push, Vec3::Zero()}, c.normal, arms);
+        history.lastNormalForce = normalForce + push;
+        if (history.state == ContactHistory::apart && history.lastNormalForce != 0) history.state = ContactHistory::separated;
+        return history;
+    }
+
+    // The batch's contacts computed (all lanes at once, vectorised), then applied to their
+    // particles and histories in the order they came, with the summary and output records.
+    void flush(PairList& list) {
+        ContactBatch& b = batch_;
+        if (b.count == 0) return;
+        b.gather(p_, previousForce_, list.history);
+        b.compute(dt_);
+        if (perPair_ || records_ || list.history.hasWarmStarts()) [[unlikely]]
+            applyBatchWithExtras(list);
+        else
+            applyBatch(list);
+        summary_.contacts += static_cast<std::size_t>(b.count);
+        b.count = 0;
+    }
+
+    // The common case of flush: forces and torques added, histories set, the largest overlap
+    // noted, nothing else. Through plain pointers that the compiler knows apart (they do not
+    // alias: separate arrays), so that a lane costs its loads, additions and stores: with the
+    // vectors' own accessors, and the rare cases' branches in the loop, it took 88 instructions
+    // a contact in a profile of the settled bed, a fifth of the settled step's.
+    void applyBatch(PairList& list) {
+        const ContactBatch& b = batch_;
+        double* __restrict force = p_.force[0].data();
+        double* __restrict torque = p_.torque[0].data();
+        double* __restrict lasting = list.history.lastingRecords();
+        ContactHistory::State* __restrict state = list.history.mutableStates();
+        double largestFraction = summary_.maxOverlapFraction;
+        for (int l = 0; l < b.count; ++l) {
+            const std::size_t i = 3 * std::size_t{b.i[l]}, j = 3 * std::size_t{b.j[l]}, k = b.k[l];
+            force[i] += b.fx[l], force[i + 1] += b.fy[l], force[i + 2] += b.fz[l];
+            force[j] -= b.fx[l], force[j + 1] -= b.fy[l], force[j + 2] -= b.fz[l];
+            torque[i] += b.tix[l], torque[i + 1] += b.tiy[l], torque[i + 2] += b.tiz[l];
+            torque[j] += b.tjx[l], torque[j + 1] += b.tjy[l], torque[j + 2] += b.tjz[l];
+            double* record = lasting + 4 * k;
+            record[0] = b.sx[l], record[1] = b.sy[l], record[2] = b.sz[l], record[3] = b.fn[l];
+            state[k] = ContactHistory::touching;
+            const double size = std::min(b.ri[l], b.rj[l]);
+            if (b.overlap[l] > largestFraction * size) [[unlikely]] {
+                noteOverlap(b.i[l], b.j[l], b.overlap[l], size);
+                largestFraction = summary_.maxOverlapFraction;
+            }
+        }
+    }
+
+    // flush with pair forces kept for sums in id order, output records or warm starts.
+    [[gnu::noinline]] void applyBatchWithExtras(PairList& list) {
+        ContactBatch& b = batch_;
+        for (int l = 0; l < b.count; ++l) {
+            const std::uint32_t i = b.i[l], j = b.j[l];
+            const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
+            if (perPair_) [[unlikely]] {
+                perPair_[b.k[l]] = {force, Vec3(b.tix[l], b.tiy[l], b.tiz[l]), Vec3(b.tjx[l], b.tjy[l], b.tjz[l])};
+            } else {
+                p_.force[i] += force;
+                p_.force[j] -= force;
+                p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
+                p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
+            }
+            const Vec3 spring(b.sx[l], b.sy[l], b.sz[l]);
+            list.history.set(b.k[l], {spring, b.fn[l], ContactHistory::touching});
+            noteOverlap(i, j, b.overlap[l], std::min(b.ri[l], b.rj[l]));
+            if (records_) [[unlikely]] {
+                const Vec3 n = Vec3(b.dx[l], b.dy[l], b.dz[l]).normalized();
+                ContactKinematics c{};
+                c.overlap = b.overlap[l];
+                const Vec3 tangential = force - b.fn[l] * n;
+                records_->add({i, j, p_.position[i] - (b.ri[l] - 0.5 * b.overlap[l]) * n, b.overlap[l],
+                               spring.norm(), b.fn[l], n, tangential, b.law(l).elasticEnergy(c, spring)});
+            }
+        }
+    }
+
+    ContactBatch batch_;
+    bool oneWay_ = false;  // in oneWayPairs: no reaction on j, no records
+    ParticleStore& p_;
+    const PairTable<Law>& laws_;
+    const double dt_;
+    double closing_;
+    const std::vector<Vec3>& previousForce_;
+    ContactSummary& summary_;
+    ContactRecords* records_;
+    const std::vector<Superquadric>* shapes_;  // null in scenes of spheres only
+    PairContribution* perPair_;  // non-null: pair forces kept for sums in id order (IdOrderedForceSums.h)
+    const bool prefetchPartners_;  // a large scene: the contact pass asks for its partners' data ahead
+    std::size_t currentPair_ = 0;
+    EllipsoidContactBatch ellipsoids_;  // (scenes with shapes only)
+};
+
+// ContactForces.h addContactForces in this form.
+template <class Law>
+void addContactForces(const ContactForceLoopArguments<Law>& arguments, PairList& list, const std::vector<Wall>& walls,
+                      const std::vector<PrescribedMotion>& motions, const Domain& domain) {
+    if (arguments.shapes && arguments.p.hasShapes())
+        placeShapedParticles(arguments.p, *arguments.shapes, list.shapedFrameScratch);
+    ContactForceLoopInLanes<Law> loop(arguments);
+    loop.particlePairs(list, domain, motions.empty());
+    loop.oneWayPairs(list, domain);
+    loop.wallPairs(list, walls, motions);
+}
+
+}  // namespace talus::TALUS_LANES
+
+#include "Contacts/ShapedContactForces.h"

@@ -1,0 +1,39 @@
+// The table of one lane form (Math/LaneKernels.h): compiled once per form, with its
+// instruction set, into its namespace (Kernel/CMakeLists.txt, talusLaneSources).
+#include "Math/LaneKernels.h"
+
+#include "Contacts/ContactForceLoop.h"
+#include "Contacts/PairSweepLanes.h"
+#include "Math/LaneNamespace.h"
+#include "Particles/RotationBatchLanes.h"
+#include "Particles/VelocityVerletLanes.h"
+
+namespace talus::TALUS_LANES {
+
+namespace {
+
+template <class Law>
+std::unique_ptr<ContactForceLoopOfForm<Law>> makeLoop(const ContactForceLoopArguments<Law>& arguments) {
+    return std::make_unique<ContactForceLoopInLanes<Law>>(arguments);
+}
+
+template <class Law>
+constexpr ForceLoopKernels<Law> forceLoopOf() {
+    return {makeLoop<Law>, addContactForces<Law>};
+}
+
+}  // namespace
+
+const LaneKernels kernels{compiledLaneForm,
+                          startForcesWithGravity,
+                          halfKick,
+                          halfKickAndDrift,
+                          wrapPositions,
+                          flushRotationBatch,
+                          &driftPassKernels,
+                          makeNearPairs,
+                          [] { return sweepForm(); },
+                          forceLoopOf<LinearSpringDashpot>(),
+                          forceLoopOf<HertzMindlin>()};
+
+}  // namespace talus::TALUS_LANES

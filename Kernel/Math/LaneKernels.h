@@ -1,0 +1,98 @@
+// The passes of one lane form (Math/LaneForm.h), as one table per form: each form's sources
+// (Kernel/CMakeLists.txt, talusLaneSources) are compiled with its instruction set into a
+// namespace of its own (lanes_scalar, lanes_avx2, lanes_avx512: Math/LaneNamespace.h) and fill
+// its table; the kernel's entry points (VelocityVerlet.h, DriftPass.h, Domain::wrap,
+// RotationBatch::flush, ContactForces.h, makeNearPairs) call the table of the form in use
+// (Math/LaneForm.cc). Internal to the kernel.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "Contacts/ContactForces.h"
+#include "Contacts/PairSweep.h"
+#include "Math/LaneForm.h"
+#include "Particles/DriftPass.h"
+#include "Particles/RotationBatch.h"
+#include "Species/HertzMindlin.h"
+#include "Species/LinearSpringDashpot.h"
+
+namespace talus {
+
+// The force loop of one contact law in one form (ContactForces.h).
+template <class Law>
+struct ForceLoopKernels {
+    std::unique_ptr<ContactForceLoopOfForm<Law>> (*make)(const ContactForceLoopArguments<Law>& arguments);
+    void (*addContactForces)(const ContactForceLoopArguments<Law>& arguments, PairList& list,
+                             const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
+                             const Domain& domain);
+};
+
+// The drift pass of one form (Particles/DriftPass.h), defined by its own compilation of
+// Particles/DriftPass.cc.
+struct DriftPassKernels {
+    std::uint64_t (*positionSum)(const ParticleStore& p, std::size_t n);
+    void (*startFirstHalf)(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points);
+    double (*largestDisplacement)(const ParticleStore& p, const std::vector<Vec3>& reference, const Domain& domain);
+    DriftPassResult (*kickDriftAndStartForces)(ParticleStore& p, const std::vector<Vec3>& previousForce,
+                                               const Domain& domain, const std::vector<Vec3>* reference,
+                                               const Vec3& gravity, const Vec3& frameVelocity, double dt,
+                                               std::vector<SweepPoint>& points, std::size_t first, std::size_t last);
+    DriftPassResult (*closeKickDriftAndStartForces)(ParticleStore& p, std::vector<Vec3>& previousForce,
+                                                    const Domain& domain, const std::vector<Vec3>* reference,
+                                                    const Vec3& gravity, const Vec3& frameVelocity, double dt,
+                                                    std::vector<SweepPoint>& points, std::size_t first,
+                                                    std::size_t last);
+};
+
+struct LaneKernels {
+    LaneForm form;
+    // Particles/VelocityVerlet.h
+    void (*startForcesWithGravity)(ParticleStore& p, const Vec3& gravity);
+    void (*halfKick)(ParticleStore& p, std::size_t first, std::size_t last, double halfStep);
+    void (*halfKickAndDrift)(ParticleStore& p, std::size_t n, double halfStep, double dt);
+    // Boundaries/Domain.h
+    void (*wrap)(const Domain& domain, Vec3* x, std::size_t n);
+    // Particles/RotationBatch.h
+    void (*flushRotationBatch)(RotationBatch& batch, ParticleStore& p, double kick, double drift);
+    // Particles/DriftPass.h (Particles/DriftPass.cc)
+    const DriftPassKernels* driftPass;
+    // Contacts/PairSweep.h
+    void (*makeNearPairs)(PairList& list, const Vec3* position, std::size_t particleCount, const double* radius,
+                          double skin, const PeriodicImage& image, std::vector<SweepPoint>& grownScratch,
+                          SweptPairs& scratch);
+    SweepForm (*sweepFormInUse)();
+    // Contacts/ContactForces.h, one entry per contact law
+    ForceLoopKernels<LinearSpringDashpot> linearSpringDashpot;
+    ForceLoopKernels<HertzMindlin> hertzMindlin;
+
+    template <class Law>
+    const ForceLoopKernels<Law>& forceLoop() const {
+        if constexpr (std::is_same_v<Law, LinearSpringDashpot>)
+            return linearSpringDashpot;
+        else
+            return hertzMindlin;
+    }
+};
+
+// The table of the form in use (laneForm()).
+const LaneKernels& laneKernels();
+
+// Each form's tables, defined in its own compilations of Math/LaneKernels.cc and
+// Particles/DriftPass.cc.
+namespace lanes_scalar {
+extern const LaneKernels kernels;
+extern const DriftPassKernels driftPassKernels;
+}  // namespace lanes_scalar
+namespace lanes_avx2 {
+extern const LaneKernels kernels;
+extern const DriftPassKernels driftPassKernels;
+}  // namespace lanes_avx2
+namespace lanes_avx512 {
+extern const LaneKernels kernels;
+extern const DriftPassKernels driftPassKernels;
+}  // namespace lanes_avx512
+
+}  // namespace talus
