@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <ostream>
-#include <sstream>
 
 #include "Integration/DriftPassStepper.h"
 #include "Integration/StepWorkspace.h"
@@ -121,6 +120,9 @@ void WaveStepper::report(const StepHost& host, std::ostream& out, const std::str
             << " of " << s.pairList.pairs.size() << " pairs)";
     if (statistics_.offTheNearList > 0)
         out << "; " << statistics_.offTheNearList << " waves went on over the whole list when a particle sped up past the near list";
+    if (statistics_.rolledBack > 0)
+        out << "; " << statistics_.rolledBack << (statistics_.rolledBack == 1 ? " wave" : " waves")
+            << " rolled back and redone in single steps when a particle outran the neighbour list";
     if (!refusal_.empty())
         out << "; the last list build has no wave schedule: " << refusal_;
     else if (statistics_.stepsInWaves == 0)
@@ -195,6 +197,22 @@ void WaveStepper::buildListForWave(StepHost& host) {
     makeSchedule(host);
 }
 
+namespace {
+
+// Thrown within a wave where a particle has moved past the list's allowance (WaveStepper::advance).
+struct OutranTheList {};
+
+}  // namespace
+
+// Where a particle outran the list within the wave: the state at its start put back (WaveUndo.h)
+// and its steps redone in single steps, which build the list anew when the particle needs it.
+void WaveStepper::rollBackAndRedo(StepHost& host, bool recordContacts) {
+    undo_.restore(host.state(), host.workspace());
+    const int levels = host.state().settings.stepper.waveSteps;
+    for (int t = 1; t <= levels; ++t) singleSteps_.advance(host, recordContacts && t == levels);
+    ++statistics_.rolledBack;
+}
+
 void WaveStepper::advance(StepHost& host, bool recordContacts) {
     SimulationState& s = host.state();
     StepWorkspace& work = host.workspace();
@@ -208,6 +226,7 @@ void WaveStepper::advance(StepHost& host, bool recordContacts) {
     // (WaveRegion::driftBegin); the same frame for the sweep's growths all through the wave (any
     // frame common to both particles of a pair at a step keeps the sweep's bound, PairSweep.h).
     const Vec3 frame = sweepFrame(s, work);
+    undo_.keep(s, work);
     work.positions.checkFound(positionSum(p, p.owned()), s);
     startFirstHalf(p, work.previousForce, list.sweepPointScratch);
     s.time += dt;
@@ -225,7 +244,8 @@ void WaveStepper::advance(StepHost& host, bool recordContacts) {
     // A drift of the wave into step `step` (1: its first) at `time`, noted: the largest speed,
     // displacement and growth; the near list given up for the rest of the wave if a particle sped
     // up past it (the pairs swept so far were within it: every growth of their particles so far
-    // fitted); the run stopped if past the list's allowance.
+    // fitted); the wave rolled back if a particle moved past the list's allowance (the check a
+    // single step makes before its forces: PairList::needsRebuild).
     const auto noteDrift = [&](const DriftPassResult& moved, int step, double time) {
         if (!moved.moves.finite) list.needsRebuild(moved.moves, p, time, dt);  // (throws, naming the particle)
         speed2 = std::max(speed2, moved.moves.speed2);
@@ -237,59 +257,56 @@ void WaveStepper::advance(StepHost& host, bool recordContacts) {
             near = nullptr;
             ++statistics_.offTheNearList;
         }
-        if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) {
-            std::ostringstream m;
-            m << "a wave of " << levels << " steps at t = " << time << ": a particle moved "
-              << std::sqrt(displacement2) << " since the neighbour list was built, which with the largest "
-              << "speed " << std::sqrt(speed2) << " (" << startSpeed << " when the wave began) reaches half "
-              << "the list's reach " << list.reach << " within the wave; its pairs may be missing. Run "
-              << "with --wave-steps 1, or a larger --skin";
-            throw Error(m.str());
-        }
+        if (std::sqrt(displacement2) + std::sqrt(speed2) * dt >= 0.5 * list.reach) [[unlikely]]
+            throw OutranTheList{};
     };
     ContactSummary early;  // of the wave's steps before its last (only their largest overlap counts)
     ContactSummary& summary = work.summary;
     summary = ContactSummary{};
     if (recordContacts) work.records.start(/*keepEach*/ s.settings.writeFstat, p.owned());
-    std::visit(
-        [&]<class Law>(const PairTable<Law>& laws) {
-            ContactForceLoop<Law> earlyLoop(p, laws, dt, startSpeed, work.previousForce, early, nullptr);
-            ContactForceLoop<Law> lastLoop(p, laws, dt, startSpeed, work.previousForce, summary,
-                                           recordContacts ? &work.records : nullptr);
-            for (const WaveRegion& region : schedule_.regions()) {
-                const bool last = region.level + 1 == levels;
-                ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
-                for (std::uint32_t k = region.driftBegin; k < region.driftEnd; ++k) {
-                    const PlaceRun run = schedule_.driftRuns()[k];
-                    noteDrift(kickDriftAndStartForces(p, work.previousForce, domain, &list.referencePosition, s.gravity,
-                                                      frame, dt, list.sweepPointScratch, run.begin, run.end),
-                              1, s.time);
-                }
-                loop.allowSpeed(std::sqrt(speed2));
-                loop.regionPairs(list, domain, schedule_, region, s.walls, near);
-                // The region's particles: the second half kick of this step, and unless it is the
-                // wave's last, the first half of the next (Particles/DriftPass.h on their slots).
-                for (int run = 0; run < 2; ++run) {
-                    const std::size_t begin = region.runBegin[run], end = region.runEnd[run];
-                    if (begin >= end) continue;
-                    if (last) {
-                        halfKick(p, begin, end, half);
-                        continue;
+    try {
+        std::visit(
+            [&]<class Law>(const PairTable<Law>& laws) {
+                ContactForceLoop<Law> earlyLoop(p, laws, dt, startSpeed, work.previousForce, early, nullptr);
+                ContactForceLoop<Law> lastLoop(p, laws, dt, startSpeed, work.previousForce, summary,
+                                               recordContacts ? &work.records : nullptr);
+                for (const WaveRegion& region : schedule_.regions()) {
+                    const bool last = region.level + 1 == levels;
+                    ContactForceLoop<Law>& loop = last ? lastLoop : earlyLoop;
+                    for (std::uint32_t k = region.driftBegin; k < region.driftEnd; ++k) {
+                        const PlaceRun run = schedule_.driftRuns()[k];
+                        noteDrift(kickDriftAndStartForces(p, work.previousForce, domain, &list.referencePosition, s.gravity,
+                                                          frame, dt, list.sweepPointScratch, run.begin, run.end),
+                                  1, s.time);
                     }
-                    const DriftPassResult moved =
-                        closeKickDriftAndStartForces(p, work.previousForce, domain, &list.referencePosition, s.gravity,
-                                                     frame, dt, list.sweepPointScratch, begin, end);
-                    noteDrift(moved, region.level + 2, s.time + (region.level + 1) * dt);
-                    if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
-                        finalDisplacement2 = std::max(finalDisplacement2, moved.moves.displacement2);
-                        for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];
-                        mobile += moved.mobile;
-                        positionsAfter += moved.positionsAfter;
+                    loop.allowSpeed(std::sqrt(speed2));
+                    loop.regionPairs(list, domain, schedule_, region, s.walls, near);
+                    // The region's particles: the second half kick of this step, and unless it is the
+                    // wave's last, the first half of the next (Particles/DriftPass.h on their slots).
+                    for (int run = 0; run < 2; ++run) {
+                        const std::size_t begin = region.runBegin[run], end = region.runEnd[run];
+                        if (begin >= end) continue;
+                        if (last) {
+                            halfKick(p, begin, end, half);
+                            continue;
+                        }
+                        const DriftPassResult moved =
+                            closeKickDriftAndStartForces(p, work.previousForce, domain, &list.referencePosition, s.gravity,
+                                                         frame, dt, list.sweepPointScratch, begin, end);
+                        noteDrift(moved, region.level + 2, s.time + (region.level + 1) * dt);
+                        if (region.level + 2 == levels) {  // (the last drift: where the wave ends, the next frame)
+                            finalDisplacement2 = std::max(finalDisplacement2, moved.moves.displacement2);
+                            for (int c = 0; c < 3; ++c) velocitySum[c] += moved.velocitySum[c];
+                            mobile += moved.mobile;
+                            positionsAfter += moved.positionsAfter;
+                        }
                     }
                 }
-            }
-        },
-        work.laws);
+            },
+            work.laws);
+    } catch (const OutranTheList&) {
+        return rollBackAndRedo(host, recordContacts);
+    }
     for (int t = 1; t < levels; ++t) {
         s.time += dt;
         ++s.step;

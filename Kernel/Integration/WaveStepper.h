@@ -3,7 +3,8 @@
 // of the waves made at each list build, and a wave of steps: the same physics as single steps,
 // the forces of a particle summed in another order (round-off). For spheres in a box periodic
 // along x and y, on one rank, with nothing but the particles' own motion between steps (the
-// scenes of the drift pass), when no output falls within the wave.
+// scenes of the drift pass), when no output falls within the wave. A wave in which a particle
+// outruns the neighbour list is rolled back to its start and redone in single steps (WaveUndo).
 #pragma once
 
 #include <cstdint>
@@ -14,14 +15,16 @@
 
 #include "Contacts/WaveSchedule.h"
 #include "Integration/Stepper.h"
+#include "Integration/WaveUndo.h"
 #include "Math/Vector.h"
 
 namespace talus {
 
 class WaveStepper final : public Stepper {
 public:
-    // singleSteps: the stepper whose scenes waves take (the drift pass).
-    explicit WaveStepper(const Stepper& singleSteps) : singleSteps_(singleSteps) {}
+    // singleSteps: the stepper whose scenes waves take (the drift pass), which redoes a wave
+    // rolled back.
+    explicit WaveStepper(Stepper& singleSteps) : singleSteps_(singleSteps) {}
     std::string_view name() const override { return "waves"; }
     std::string_view whyNot(const StepHost& host) const override;
     std::uint64_t stepsNext(StepHost& host, std::uint64_t stepsLeft, std::uint64_t saveEvery) override;
@@ -42,6 +45,7 @@ public:
         std::uint64_t stepsInWaves = 0;
         std::uint64_t nearRunsFound = 0;   // the near list's runs found anew for the schedule
         std::uint64_t offTheNearList = 0;  // waves that went on over the whole list (given up mid-wave)
+        std::uint64_t rolledBack = 0;      // waves undone (a particle outran the list) and redone in single steps
     };
     const Statistics& statistics() const { return statistics_; }
     void resetStatistics() { statistics_ = {}; }
@@ -51,8 +55,10 @@ private:
     bool hasRoom(const StepHost& host, double displacement, double reach) const;
     void buildListForWave(StepHost& host);
     const PlaceRun* nearPairsForWave(StepHost& host, const Vec3& frame);
+    // The wave's steps from its start (undo_) in single steps.
+    void rollBackAndRedo(StepHost& host, bool recordContacts);
 
-    const Stepper& singleSteps_;
+    Stepper& singleSteps_;
     WaveSchedule schedule_;           // over every listed pair
     std::uint64_t scheduleBuild_ = 0;  // the list build it was made for (0: none)
     std::string refusal_;             // why the last build has none
@@ -60,6 +66,7 @@ private:
     std::vector<PlaceRun> nearRuns_;  // per run of the schedule, its pairs' places in the near list
     std::uint64_t nearRunsMake_ = 0;  // the near list they were found in (NearPairs::makes)
     Statistics statistics_;
+    WaveUndo undo_;  // the state at the wave's start
 };
 
 }  // namespace talus
