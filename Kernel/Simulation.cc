@@ -221,6 +221,7 @@ void Simulation::initialise(bool restarted) {
         for (const Boundary* b : scene_->boundaries()) boundariesRunOnRanks = boundariesRunOnRanks && b->runsOnRanks();
         ranks_->splitScene(state_, boundariesRunOnRanks, c.name);
     }
+    integrator_->tune(*host_, restarted);  // (before the first list build: waves order it)
     PositionWatch& positions = work_->positions;
     positions.changedBetweenSteps = 0;
     if (restarted) {

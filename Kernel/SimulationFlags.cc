@@ -43,16 +43,46 @@ Simulation::Simulation()
            [&c](const std::string& v) { c.relist = CommandLine::toBool("relist", v); });
     cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
            [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });
-    cl.add("wave-steps", "N",
-           "advance stretches of the bed N steps at a time while they are cached (time skewing; 1: a step per pass, "
-           "the default); periodic x and y, spheres, one rank",
+    cl.add("waves", "auto|on|off",
+           "advance stretches of the bed several steps at a time while they are cached (time skewing): where they "
+           "pay (auto, the default: a box periodic along x and y, one rank, --waves-from particles or more), "
+           "wherever the scene allows them (on: spheres, no boundaries), or never",
+           [&c](const std::string& v) { c.stepper.waves = wavesNamed(v, "--waves"); });
+    cl.add("wave-steps", "N", "steps per wave (default 8); N > 1 also turns waves on, 1 off",
            [&c](const std::string& v) { c.stepper.setWaves(CommandLine::toInt("wave-steps", v)); });
+    cl.add("waves-from", "N",
+           "particles from which --waves auto takes waves (default " +
+               std::to_string(StepperTuning::defaultWavesFromParticles) + ")",
+           [&c](const std::string& v) {
+               const int n = CommandLine::toInt("waves-from", v);
+               require(n >= 0, "--waves-from must not be negative, got " + v);
+               c.stepper.wavesFromParticles = static_cast<std::uint64_t>(n);
+           });
     cl.add("wave-strip", "C", "columns of cells per strip of the waves (default 8 per step of the waves: 64 for 8)",
-           [&c](const std::string& v) { c.stepper.setWaves(c.stepper.waveSteps, CommandLine::toInt("wave-strip", v)); });
+           [&c](const std::string& v) {
+               const int columns = CommandLine::toInt("wave-strip", v);
+               require(columns >= 1, "--wave-strip needs at least one column, got " + v);
+               c.stepper.waveStripColumns = columns;  // (waves on or off as before)
+           });
     cl.add("drift-pass", "on|off",
            "the first half of each step in one pass over the particles where the scene allows it (on, the default), "
            "or pass by pass: the same trajectories, for measurements",
            [&c](const std::string& v) { c.stepper.driftPass = CommandLine::toBool("drift-pass", v); });
+    cl.add("near-skin-fraction", "F",
+           "the force loop sweeps the listed pairs within F x the skin (the near list, remade as the particles "
+           "move; default 0.15) instead of the whole list; 0: the whole list every step. The same forces",
+           [&c](const std::string& v) { c.stepper.nearSkinFraction = CommandLine::toDouble("near-skin-fraction", v); });
+    cl.add("sweep-frame", "flow|off",
+           "the sweep grows the radii by the speeds relative to the mean velocity (flow, the default) or by the "
+           "speeds (off). The same forces",
+           [&c](const std::string& v) {
+               require(v == "flow" || v == "off", "--sweep-frame must be flow or off, got '" + v + "'");
+               c.stepper.sweepInFlowFrame = v == "flow";
+           });
+    cl.add("sweep", "auto|scalar|lanes|gathers",
+           "the form of the force loop's sweep: the fastest, timed at the first long list (auto), or the one named "
+           "(a form the lane form lacks is the scalar loop). The same pairs",
+           [&c](const std::string& v) { c.stepper.sweepForm = sweepFormNamed(v, "--sweep"); });
     cl.add("lane-form", "scalar|avx2|avx512",
            "run the vector passes in this lane form instead of the best one the processor runs: the bits of a run "
            "on another processor (Installing.md, lane forms)",

@@ -85,6 +85,10 @@ TEST(BadInput, SettingsOutOfRange) {
         {[](RunSettings& c) { c.maxOverlapFraction = -1; }, {"settings().maxOverlapFraction (--max-overlap)"}},
         {[](RunSettings& c) { c.maxInitialOverlapFraction = 0; }, {"settings().maxInitialOverlapFraction"}},
         {[](RunSettings& c) { c.stepper.waveSteps = 0; }, {"settings().stepper.waveSteps (--wave-steps)", "1 to 255"}},
+        {[](RunSettings& c) { c.stepper.nearSkinFraction = 1; },
+         {"settings().stepper.nearSkinFraction (--near-skin-fraction)", "[0, 1)"}},
+        {[](RunSettings& c) { c.stepper.waves = StepperTuning::Waves::on, c.stepper.waveSteps = 1; },
+         {"settings().stepper.waves (--waves) on", "(--wave-steps) is 1"}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.parts.front());
@@ -171,6 +175,11 @@ TEST(BadInput, CommandLineFlags) {
         {{"--name", "two words"}, {"name", "one word"}},
         {{"stray"}, {"unexpected argument 'stray'"}},
         {{"--rank-grid", "2x2"}, {"--rank-grid", "'2x2'", "three positive whole numbers"}},
+        {{"--waves", "sometimes"}, {"--waves", "auto, on or off", "'sometimes'"}},
+        {{"--waves-from", "-5"}, {"--waves-from", "must not be negative"}},
+        {{"--near-skin-fraction", "-0.1"}, {"--near-skin-fraction", "[0, 1)"}},
+        {{"--sweep-frame", "moving"}, {"--sweep-frame", "flow or off", "'moving'"}},
+        {{"--sweep", "vector"}, {"--sweep", "auto, scalar, lanes or gathers", "'vector'"}},
         {{"--rank-grid", "0x1x1"}, {"--rank-grid", "'0x1x1'"}},
         {{"--rank-grid", "2x1x1x"}, {"--rank-grid", "'2x1x1x'"}},
         {{"--rank-grid", "-1x1x1"}, {"--rank-grid", "'-1x1x1'"}},

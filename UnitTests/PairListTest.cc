@@ -38,10 +38,10 @@ void chuteScene(TestScene& s) {
 
 // The chute scene with a setting of its pair list, skin 0.2, run for 3 time units: the bed flows
 // down the slope and through the periodic faces.
-void runChuteWith(TestScene& s, const std::function<void(PairList&)>& set) {
+void runChuteWith(TestScene& s, const std::function<void(StepperTuning&)>& set) {
     s.setup = [set](TestScene& scene) {
         chuteScene(scene);
-        set(SimulationInternals::state(scene).pairList);
+        set(scene.settings().stepper);
     };
     s.settings().skin = 0.2;
     s.runFor(1e-4, 3);
@@ -225,8 +225,8 @@ TEST(PairList, InteriorPairsNeedNoPeriodicImageUntilTheNextBuild) {
 // same to the bit, through a flow that remakes the near list many times between builds.
 TEST(PairList, NearListChangesNothing) {
     TestScene nearList, wholeList;
-    runChuteWith(nearList, [](PairList& list) { list.nearSkinFraction = 0.15; });
-    runChuteWith(wholeList, [](PairList& list) { list.nearSkinFraction = 0; });
+    runChuteWith(nearList, [](StepperTuning& tuning) { tuning.nearSkinFraction = 0.15; });
+    runChuteWith(wholeList, [](StepperTuning& tuning) { tuning.nearSkinFraction = 0; });
     const std::uint64_t makes = nearList.state().pairList.near.makes, builds = nearList.state().pairList.builds;
     std::printf("[ measured ] near list made %llu times in 30000 steps, the list built %llu times\n",
                 static_cast<unsigned long long>(makes), static_cast<unsigned long long>(builds));
@@ -251,7 +251,7 @@ TEST(PairList, NearListFollowsParticlesMovedByHand) {
                 scene.scene().addSpecies("grain", unitMassDensity, LinearSpringDashpot::fromCollision(0.005, 0.88, 0.25));
             scene.scene().addParticle(Vec3(0, 0, 0), 0.5, grain);
             scene.scene().addParticle(Vec3(1.05, 0, 0), 0.5, grain);
-            SimulationInternals::state(scene).pairList.nearSkinFraction = nearSkinFraction;
+            scene.settings().stepper.nearSkinFraction = nearSkinFraction;
         };
         s.settings().skin = 0.2;
         int step = 0;
@@ -286,8 +286,8 @@ TEST(PairList, NearListFollowsParticlesMovedByHand) {
 // also let the near list last longer, which shows that the frame was used.
 TEST(PairList, SweepFrameChangesNothing) {
     TestScene inFlowFrame, withSpeeds;
-    runChuteWith(inFlowFrame, [](PairList& list) { list.sweepInFlowFrame = true; });
-    runChuteWith(withSpeeds, [](PairList& list) { list.sweepInFlowFrame = false; });
+    runChuteWith(inFlowFrame, [](StepperTuning& tuning) { tuning.sweepInFlowFrame = true; });
+    runChuteWith(withSpeeds, [](StepperTuning& tuning) { tuning.sweepInFlowFrame = false; });
     const std::uint64_t makesInFrame = inFlowFrame.state().pairList.near.makes, makes = withSpeeds.state().pairList.near.makes;
     std::printf("[ measured ] near list made %llu times in the flow's frame, %llu times with the speeds\n",
                 static_cast<unsigned long long>(makesInFrame), static_cast<unsigned long long>(makes));
@@ -303,8 +303,8 @@ TEST(PairList, SweepFrameChangesNothing) {
 TEST(PairList, DriftInOnePassChangesNothing) {
     TestScene onePass, passByPass;
     passByPass.settings().stepper.driftPass = false;
-    runChuteWith(onePass, [](PairList&) {});
-    runChuteWith(passByPass, [](PairList&) {});
+    runChuteWith(onePass, [](StepperTuning&) {});
+    runChuteWith(passByPass, [](StepperTuning&) {});
     const Integrator::Statistics one = onePass.integrator().statistics(), byPass = passByPass.integrator().statistics();
     EXPECT_EQ(one.driftPassSteps, 30000u) << "the chute should drift in one pass at every step";
     EXPECT_EQ(byPass.driftPassSteps, 0u);

@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "ContactTestScenes.h"
 #include "IO/LammpsDataFile.h"
@@ -81,6 +84,7 @@ void expectSameTrajectory(const std::string& file, int steps, int stripColumns, 
     waves.setup = single.setup = [file](TestScene& s) { benchmarkChute(s, file); };
     waves.settings().skin = 0.2, single.settings().skin = 0.2;
     waves.settings().stepper.setWaves(steps, stripColumns);
+    single.settings().stepper.waves = StepperTuning::Waves::off;  // (compared with single steps)
     waves.runFor(dt, run * dt);
     single.runFor(dt, run * dt);
     const Difference d = largestDifference(waves, single);
@@ -117,7 +121,7 @@ TEST(Waves, OverTheNearListFollowTheWholeListBitwise) {
     overNear.setup = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
     overAll.setup = [](TestScene& s) {
         benchmarkChute(s, "chute_B_flowing.data");
-        SimulationInternals::state(s).pairList.nearSkinFraction = 0;  // (no near list)
+        s.settings().stepper.nearSkinFraction = 0;  // (no near list)
     };
     for (TestScene* s : {&overNear, &overAll}) s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8), s->runFor(dt, 1000 * dt);
     EXPECT_GT(overNear.state().pairList.near.makes, 2u) << "the test needs the near list remade between waves";
@@ -148,6 +152,7 @@ TEST(Waves, ASkinTooThinForWavesLeavesTheBuildsToSingleSteps) {
     waves.setup = single.setup = [](TestScene& scene) { benchmarkChute(scene, "chute_B_flowing.data"); };
     waves.settings().skin = 0.002, single.settings().skin = 0.002;
     waves.settings().stepper.setWaves(4, 8);
+    single.settings().stepper.waves = StepperTuning::Waves::off;
     waves.runFor(dt, 200 * dt);
     single.runFor(dt, 200 * dt);
     EXPECT_EQ(stepsInWaves(waves), 0u);
@@ -175,7 +180,7 @@ TEST(Waves, OverTheNearListFollowParticlesMovedByHand) {
     overNear.setup = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
     overAll.setup = [](TestScene& s) {
         benchmarkChute(s, "chute_B_flowing.data");
-        SimulationInternals::state(s).pairList.nearSkinFraction = 0;  // (no near list)
+        s.settings().stepper.nearSkinFraction = 0;  // (no near list)
     };
     for (TestScene* s : {&overNear, &overAll})
         s->afterStep = jiggle, s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8), s->runFor(dt, 600 * dt);
@@ -204,7 +209,7 @@ TEST(Waves, GoOnOverTheWholeListWhenAParticleOutrunsTheNearList) {
         const Vec3 lower = p.position[top] + Vec3(0, 0, p.radius[top] + 0.5 + 0.003);
         s.scene().addParticle(lower, 0.5, grain);
         s.scene().addParticle(lower + Vec3(0, 0, 0.8), 0.5, grain);  // (overlapping by 40% of the radius)
-        SimulationInternals::state(s).pairList.nearSkinFraction = nearSkinFraction;
+        s.settings().stepper.nearSkinFraction = nearSkinFraction;
     };
     TestScene overNear, overAll;
     overNear.setup = [&](TestScene& s) { scene(s, 0.01); };
@@ -300,28 +305,49 @@ TEST(Waves, RefuseBadSettings) {
     expectError([&] { s.settings().stepper.setWaves(4, 0); }, {"strips of waves need at least one column"});
 }
 
-// A run in waves restarted from its file continues bitwise as the uninterrupted run: waves start
-// at multiples of their steps, and the restart remakes the schedule of the list it kept.
-TEST(Waves, RestartedRunContinuesBitwise) {
-    const double dt = 1e-4;
-    const auto endOf = [dt](int steps) {
+namespace {
+
+// The benchmark's flow run 200 steps with an output at the end (flags: the first run's extra
+// ones), restarted from its file to 400 (its settings those of the file and the defaults), and
+// run 400 steps without a break; tuning: the first and the uninterrupted run's stepper settings.
+// The restarted run must go on in waves and equal the uninterrupted one to the bit.
+void expectRestartInWavesBitwise(const std::string& name, const std::function<void(StepperTuning&)>& tuning,
+                                 const std::vector<std::string>& firstFlags) {
+    const auto endOf = [](int steps) {
         std::ostringstream t;
         t.precision(17);
-        t << steps * dt;
+        t << steps * 1e-4;
         return t.str();
     };
-    const auto chute = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
     TestScene first, restarted, uninterrupted;
-    first.setup = uninterrupted.setup = chute;
-    for (TestScene* s : {&first, &restarted, &uninterrupted}) s->settings().skin = 0.2, s->settings().stepper.setWaves(4, 8);
-    first.settings().name = "waves_restart";
-    first.settings().progressInterval = 1e9;
-    first.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(200), "--vtu", "off", "--fstat", "off"});
-    restarted.settings().progressInterval = 1e9;
-    restarted.solveOrThrow({"--restart", "waves_restart.restart", "--end-time", endOf(400), "--files", "off"});
-    uninterrupted.settings().progressInterval = 1e9;
-    uninterrupted.solveOrThrow({"--dt", endOf(1), "--end-time", endOf(400), "--files", "off"});
+    first.setup = uninterrupted.setup = [](TestScene& s) { benchmarkChute(s, "chute_B_flowing.data"); };
+    for (TestScene* s : {&first, &restarted, &uninterrupted}) s->settings().skin = 0.2, s->settings().progressInterval = 1e9;
+    tuning(first.settings().stepper), tuning(uninterrupted.settings().stepper);
+    first.settings().name = name;
+    std::vector<std::string> flags{"--dt", endOf(1), "--end-time", endOf(200), "--vtu", "off", "--fstat", "off"};
+    flags.insert(flags.end(), firstFlags.begin(), firstFlags.end());
+    first.solveOrThrow(flags);
+    restarted.solveOrThrow({"--restart", name + ".restart", "--end-time", endOf(400), "--files", "off"});
+    flags = {"--dt", endOf(1), "--end-time", endOf(400), "--files", "off"};
+    flags.insert(flags.end(), firstFlags.begin(), firstFlags.end());
+    uninterrupted.solveOrThrow(flags);
+    EXPECT_GT(stepsInWaves(first), 150u) << "the first run should take waves";
     EXPECT_GT(stepsInWaves(restarted), 150u) << "the restarted run should go on in waves";
     EXPECT_EQ(stepsInWaves(restarted) + stepsInWaves(first), stepsInWaves(uninterrupted));
     EXPECT_EQ(slotsThatDiffer(restarted, uninterrupted), 0u) << "particles whose state differs from the uninterrupted run";
+}
+
+}  // namespace
+
+// A run in waves restarted from its file continues bitwise as the uninterrupted run: waves start
+// at multiples of their steps, and the restart remakes the schedule of the list it kept.
+TEST(Waves, RestartedRunContinuesBitwise) {
+    expectRestartInWavesBitwise("waves_restart", [](StepperTuning& t) { t.setWaves(4, 8); }, {});
+}
+
+// The same with waves taken by default (--waves auto, here from 6000 particles, so that the 6400
+// of the test take them): the restart file keeps the steps the run took, and the restarted run,
+// whose tuning is the default again (--waves-from 20000), takes them as the saved run did.
+TEST(Waves, RestartedAutomaticWavesContinueBitwise) {
+    expectRestartInWavesBitwise("auto_waves_restart", [](StepperTuning&) {}, {"--waves-from", "6000"});
 }

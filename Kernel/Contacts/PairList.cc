@@ -47,31 +47,6 @@ LargestMoves largestMoves(const double* __restrict x, const double* __restrict r
 
 }  // namespace
 
-double PairList::defaultNearSkinFraction() {
-    static const double fraction = [] {
-        const char* text = std::getenv("TALUS_NEAR_SKIN_FRACTION");
-        if (!text) return 0.15;
-        char* end = nullptr;
-        const double f = std::strtod(text, &end);
-        require(end != text && *end == '\0' && f >= 0 && f < 1,
-                std::string("TALUS_NEAR_SKIN_FRACTION must be a number in [0, 1), got '") + text + "'");
-        return f;
-    }();
-    return fraction;
-}
-
-bool PairList::defaultSweepInFlowFrame() {
-    static const bool inFlowFrame = [] {
-        const char* text = std::getenv("TALUS_SWEEP_FRAME");
-        if (!text) return true;
-        const std::string value = text;
-        require(value == "flow" || value == "off",
-                "TALUS_SWEEP_FRAME must be 'flow' or 'off', got '" + value + "'");
-        return value == "flow";
-    }();
-    return inFlowFrame;
-}
-
 bool PairList::needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt) {
     const bool compare = comparable(particles);
     const std::size_t owned = particles.owned();  // ghosts are their owners' business (Parallel/DomainSplit.h)

@@ -116,17 +116,15 @@ public:
     std::vector<SweepPoint> sweepPointScratch;  // the force loop's positions and radii grown by the step's reach (PairSweep.h)
     // The sweep grows the radii by the speeds relative to the mobile particles' mean velocity
     // (sweepFrameVelocity), not by the speeds themselves: the same pairs get their forces, fewer
-    // are picked that then turn out apart (false: the speeds; for tests and measurements, or
-    // TALUS_SWEEP_FRAME=off).
-    bool sweepInFlowFrame = defaultSweepInFlowFrame();
-    static bool defaultSweepInFlowFrame();
+    // are picked that then turn out apart (false: the speeds; for tests and measurements). Set
+    // from the run's StepperTuning::sweepInFlowFrame (--sweep-frame).
+    bool sweepInFlowFrame = true;
     // The near list of the force loop, made with nearSkinFraction x skin (0: the whole list is
     // swept every step), and its scratch points (positions, radii grown by half that skin). 0.15
-    // was the fastest of 0.06-0.4 on the benchmark chute (Documentation/Performance.md); the
-    // environment variable TALUS_NEAR_SKIN_FRACTION sets another (for measurements).
+    // was the fastest of 0.06-0.4 on the benchmark chute (Documentation/Performance.md). Set
+    // from the run's StepperTuning::nearSkinFraction (--near-skin-fraction).
     NearPairs near;
-    double nearSkinFraction = defaultNearSkinFraction();
-    static double defaultNearSkinFraction();
+    double nearSkinFraction = 0.15;
     std::vector<SweepPoint> nearPointScratch;
 
     // True when some particle will have moved more than skin/2 since the last build by the end of

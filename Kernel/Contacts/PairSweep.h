@@ -36,6 +36,7 @@
 #include "Boundaries/Domain.h"
 #include "Contacts/ContactHistory.h"
 #include "Contacts/PairList.h"
+#include "Contacts/SweepForm.h"
 
 namespace talus {
 
@@ -52,17 +53,6 @@ struct SweptPairs {
     Vec3 separation(std::size_t a) const { return {dx[a], dy[a], dz[a]}; }
 };
 
-// The form of the sweep a lane form's force loop uses: the scalar loop, four pairs at a time
-// without gathers (lanes; AVX2), or eight at a time with gathers (gathers; AVX-512, for the whole
-// list: a near list or a wave's selection goes in four-pair lanes then). Undecided until
-// chooseSweepForm has timed those the lane form has; the environment variable
-// TALUS_SWEEP=scalar|lanes|gathers fixes it (for measurements; a form the lane form lacks is the
-// scalar loop).
-enum class SweepForm { undecided, scalar, lanes, gathers };
-inline const char* sweepFormName(SweepForm form) {
-    return form == SweepForm::gathers ? "gathers" : form == SweepForm::lanes ? "lanes"
-                                          : form == SweepForm::scalar ? "scalar" : "undecided";
-}
 // A velocity common to all particles for the sweep's growths (sweepPointsForStep): the mean
 // velocity of the mobile particles, from every 16th slot (any common velocity keeps the sweep's
 // bound; the mean of a sample makes the growths small in a flow at a sixteenth of a pass). Zero

@@ -32,15 +32,17 @@ inline std::vector<SweepForm> availableSweepForms() {
 #endif
     return forms;
 }
+// The form in use: the one the run asks for (requestedSweepForm) where this lane form has it, else
+// the scalar loop; undecided (to be chosen by timing) where the run asks for none.
 inline SweepForm& sweepForm() {
-    static SweepForm form = [] {
-        if (availableSweepForms().size() == 1) return SweepForm::scalar;
-        const char* fixed = std::getenv("TALUS_SWEEP");
-        if (!fixed) return SweepForm::undecided;
-        for (const SweepForm f : availableSweepForms())
-            if (std::strcmp(fixed, sweepFormName(f)) == 0) return f;
-        return SweepForm::scalar;
-    }();
+    static const bool scalarOnly = availableSweepForms().size() == 1;
+    static SweepForm form = scalarOnly ? SweepForm::scalar : SweepForm::undecided, asked = SweepForm::undecided;
+    if (requestedSweepForm() != asked && !scalarOnly) [[unlikely]] {
+        asked = requestedSweepForm();
+        const std::vector<SweepForm> forms = availableSweepForms();
+        form = asked == SweepForm::undecided || std::find(forms.begin(), forms.end(), asked) != forms.end()
+                   ? asked : SweepForm::scalar;
+    }
     return form;
 }
 

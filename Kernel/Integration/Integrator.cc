@@ -29,6 +29,15 @@ void Integrator::afterListBuild(StepHost& host) {
     if (host.state().settings.stepper.waveSteps > 1) waves_.makeSchedule(host);
 }
 
+void Integrator::tune(StepHost& host, bool restarted) {
+    SimulationState& s = host.state();
+    const StepperTuning& tuning = s.settings.stepper;
+    s.pairList.nearSkinFraction = tuning.nearSkinFraction;
+    s.pairList.sweepInFlowFrame = tuning.sweepInFlowFrame;
+    requestedSweepForm() = tuning.sweepForm;
+    waves_.choose(host, restarted);
+}
+
 void Integrator::afterRestart(StepHost& host) { waves_.continueAfterRestart(host); }
 
 void Integrator::startRun() {
@@ -49,7 +58,9 @@ void Integrator::describeChoice(const StepHost& host, std::ostream& out, const s
         declined += "; " + std::string(s->name()) + " declined: " + std::string(why);
     }
     out << name << ": stepper " << chosen->name();
-    if (chosen == &waves_) out << " (single steps between waves by the " << driftPass_.name() << ")";
+    if (chosen == &waves_)
+        out << " of " << host.state().settings.stepper.waveSteps << " steps, " << waves_.choice() << " (single steps between waves by the "
+            << driftPass_.name() << ")";
     out << declined << "; lanes " << laneFormName(laneForm()) << std::endl;
 }
 

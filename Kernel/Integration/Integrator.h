@@ -29,6 +29,10 @@ public:
     std::uint64_t stepsNext(StepHost& host, std::uint64_t stepsLeft, std::uint64_t saveEvery);
     void advance(StepHost& host, bool recordContacts);
 
+    // At the start of a run, before its first list build: the tuning put where it acts (the
+    // list's near list and sweep frame, the sweep's form) and whether the run takes waves
+    // (WaveStepper::choose).
+    void tune(StepHost& host, bool restarted);
     // At every list build (the wave schedule is made for it) and after a restart.
     void afterListBuild(StepHost& host);
     void afterRestart(StepHost& host);

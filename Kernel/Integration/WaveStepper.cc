@@ -29,6 +29,35 @@ std::optional<WaveCells> WaveStepper::cellsForBuild(const StepHost& host, double
                           s.settings.stepper.stripColumns(), why);
 }
 
+void WaveStepper::choose(StepHost& host, bool restarted) {
+    SimulationState& s = host.state();
+    StepperTuning& tuning = s.settings.stepper;
+    using Waves = StepperTuning::Waves;
+    const std::size_t particles = s.particles.size();
+    bool take = tuning.waveSteps > 1;
+    if (tuning.waveSteps < 2)
+        choice_ = "not asked for (--wave-steps 1, or a restart of a run that took none)";
+    else if (tuning.waves == Waves::off)
+        take = false, choice_ = "turned off (--waves off)";
+    else if (tuning.waves == Waves::on)
+        choice_ = "asked for (--waves on)";
+    else if (restarted)
+        choice_ = "as the run that saved the restart file took them";
+    else if (const std::string_view why = singleSteps_.whyNot(host); !why.empty())
+        take = false, choice_ = "auto: " + std::string(why);
+    else if (!(s.domain.periodic[0] && s.domain.periodic[1]))
+        take = false, choice_ = "auto: the box is not periodic along x and y";
+    else if (s.settings.idOrderedSums)
+        take = false, choice_ = "auto: --id-ordered-sums";
+    else if (particles < tuning.wavesFromParticles)
+        take = false, choice_ = "auto: " + std::to_string(particles) + " particles, fewer than the " +
+                                std::to_string(tuning.wavesFromParticles) + " from which waves pay (--waves-from, --waves on)";
+    else
+        choice_ = "auto: " + std::to_string(particles) + " particles in a periodic box, at least the " +
+                  std::to_string(tuning.wavesFromParticles) + " from which waves pay (--waves off: single steps)";
+    if (!take) tuning.waveSteps = 1;
+}
+
 void WaveStepper::makeSchedule(StepHost& host) {
     SimulationState& s = host.state();
     scheduleBuild_ = nearRunsMake_ = 0;
@@ -134,7 +163,7 @@ void WaveStepper::report(const StepHost& host, std::ostream& out, const std::str
 std::string_view WaveStepper::whyNot(const StepHost& host) const {
     const SimulationState& s = host.state();
     const PairList& list = s.pairList;
-    if (s.settings.stepper.waveSteps < 2) return "not asked for (--wave-steps 1)";
+    if (s.settings.stepper.waveSteps < 2) return choice_.empty() ? std::string_view("not asked for") : std::string_view(choice_);
     if (const std::string_view why = singleSteps_.whyNot(host); !why.empty()) return why;
     if (s.settings.idOrderedSums) return "waves do not run with --id-ordered-sums";
     if (scheduleBuild_ == 0 || scheduleBuild_ != list.builds || schedule_.levels() != s.settings.stepper.waveSteps)

@@ -30,6 +30,12 @@ public:
     std::uint64_t stepsNext(StepHost& host, std::uint64_t stepsLeft, std::uint64_t saveEvery) override;
     void advance(StepHost& host, bool recordContacts) override;
 
+    // At the start of a run, before its first list build: whether it takes waves
+    // (StepperTuning::waves; automatic: where they pay, or in a restarted run as the saved run
+    // did), written back as the steps of its tuning (1: none), with the reason for the run's
+    // first line (choice).
+    void choose(StepHost& host, bool restarted);
+    const std::string& choice() const { return choice_; }
     // At a list build: the schedule of its waves over every listed pair (the particles are in the
     // order of its cells: cellsForBuild), the list's pairs put in the schedule's order.
     void makeSchedule(StepHost& host);
@@ -62,6 +68,7 @@ private:
     WaveSchedule schedule_;           // over every listed pair
     std::uint64_t scheduleBuild_ = 0;  // the list build it was made for (0: none)
     std::string refusal_;             // why the last build has none
+    std::string choice_;              // whether and why the run takes waves (choose)
     double largestRadius_ = 0;        // at that build
     std::vector<PlaceRun> nearRuns_;  // per run of the schedule, its pairs' places in the near list
     std::uint64_t nearRunsMake_ = 0;  // the near list they were found in (NearPairs::makes)

@@ -39,6 +39,12 @@ void RunSettings::validate(bool started) const {
             named("stepper.waveSteps", "wave-steps") + " must be 1 to 255, got " + std::to_string(stepper.waveSteps));
     require(stepper.waveStripColumns >= 0, named("stepper.waveStripColumns", "wave-strip") +
                                                " must not be negative, got " + std::to_string(stepper.waveStripColumns));
+    require(stepper.waves != StepperTuning::Waves::on || stepper.waveSteps >= 2,
+            named("stepper.waves", "waves") + " on needs waves of 2 steps or more (" +
+                named("stepper.waveSteps", "wave-steps") + " is 1)");
+    require(std::isfinite(stepper.nearSkinFraction) && stepper.nearSkinFraction >= 0 && stepper.nearSkinFraction < 1,
+            named("stepper.nearSkinFraction", "near-skin-fraction") + " must be in [0, 1), got " +
+                str(stepper.nearSkinFraction));
 }
 
 }  // namespace talus

@@ -32,8 +32,9 @@ struct RunSettings {
     // keeps them: Documentation/FileFormats/restart.md):
     bool idOrderedSums = false;  // in the order of partners' ids (--id-ordered-sums, IdOrderedForceSums.h)
     bool relist = true;          // pairs of added or moved particles relisted (--relist; PairList::maxRelisted)
-    // How the steppers advance the run (waves: --wave-steps, --wave-strip; --drift-pass); the
-    // restart file keeps the waves' steps and strip width, not the drift pass. With waves,
+    // How the steppers advance the run (--waves, --wave-steps, --wave-strip, --waves-from,
+    // --drift-pass, --near-skin-fraction, --sweep-frame, --sweep: Integration/StepperTuning.h);
+    // the restart file keeps the waves' steps (those the run took) and strip width. With waves,
     // actionsBeforeTimeStep and actionsAfterTimeStep run once per wave.
     StepperTuning stepper;
 

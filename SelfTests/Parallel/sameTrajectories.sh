@@ -14,7 +14,7 @@
 #     writes bitwise the files of the uninterrupted run;
 #  6. the near list (Documentation/UserGuide/NeighbourSearch.md) changes nothing on ranks: 3 ranks
 #     from the bed stirred by random velocities (it is remade tens of times between list builds)
-#     write bitwise the files of the same run with it off (TALUS_NEAR_SKIN_FRACTION=0).
+#     write bitwise the files of the same run with it off (--near-skin-fraction 0).
 # "To round-off": ranks sum a particle's contact forces in another order than a serial run, as
 # a serial run with its particles in another order does, so the states first differ by an ulp
 # (1e-16 of a force) and the dense flow amplifies that. Measured, the largest differences in
@@ -85,7 +85,7 @@ mkdir -p orderedRestart3 && cp orderedPart.* orderedRestart3/
 for f in data ene; do cmp orderedWhole.$f orderedRestart3/orderedPart.$f; done
 echo "--id-ordered-sums on, saved on 2 ranks, restarted on 3: bitwise the same .data and .ene"
 run 3 nearOn --end-time 0.2 --perturbation 2
-TALUS_NEAR_SKIN_FRACTION=0 run 3 nearOff --end-time 0.2 --perturbation 2
+run 3 nearOff --end-time 0.2 --perturbation 2 --near-skin-fraction 0
 grep -q "near list .* made [1-9][0-9]* times" nearOn.log || { echo "the near list was not used"; exit 1; }
 grep -q "near list" nearOff.log && { echo "the near list was not switched off"; exit 1; }
 for f in data fstat ene; do cmp nearOn.$f nearOff.$f; done
