@@ -170,6 +170,17 @@ std::size_t Scene::addWall(const Vec3& normal, const Vec3& point, std::size_t sp
     return state_.walls.size() - 1;
 }
 
+std::size_t Scene::addOpenBox(const Vec3& lo, const Vec3& hi, std::size_t species) {
+    require(isFinite(lo) && isFinite(hi) && lo.x() < hi.x() && lo.y() < hi.y(),
+            "open box: the corners must be finite, with lo below hi along x and y");
+    const std::size_t floor = addWall(Vec3::UnitZ(), lo, species);
+    addWall(Vec3::UnitX(), lo, species);
+    addWall(-Vec3::UnitX(), Vec3(hi.x(), lo.y(), lo.z()), species);
+    addWall(Vec3::UnitY(), lo, species);
+    addWall(-Vec3::UnitY(), Vec3(lo.x(), hi.y(), lo.z()), species);
+    return floor;
+}
+
 std::size_t Scene::addMotion(const PrescribedMotion& motion) {
     require(isFinite(motion.velocity) && isFinite(motion.angularVelocity) && isFinite(motion.centre),
             "prescribed motion: velocity, angular velocity and centre must be finite");

@@ -70,6 +70,10 @@ public:
 
     // --- walls, motions, boundaries ---
     std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
+    // A box open at the top: a floor at lo.z() and side walls at lo and hi along x and y (in
+    // that order: floor, x = lo, x = hi, y = lo, y = hi), all pointing inwards. Returns the
+    // floor's index; the sides follow it.
+    std::size_t addOpenBox(const Vec3& lo, const Vec3& hi, std::size_t species);
     // The inside of a cylinder (a drum's mantle, Walls/Wall.h) of the given radius about the axis
     // through axisPoint along axisDirection; a drum turns with a motion whose centre is on the
     // axis and whose angular velocity is along it (addMotion).
