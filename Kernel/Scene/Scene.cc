@@ -79,6 +79,12 @@ std::size_t Scene::addShape(const Superquadric& shape) {
     return state_.shapes.size() - 1;
 }
 
+void Scene::enableShapes() {
+    if (state_.particles.hasShapes()) return;
+    state_.particles.enableShapes();
+    state_.pairList.enableWarmStarts();
+}
+
 std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                         const Quat& orientation, const Vec3& velocity, const Vec3& angularVelocity) {
     const std::string which = "particle " + std::to_string(state_.nextId);
@@ -86,10 +92,7 @@ std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std:
     requireValidOrientation(orientation, which);
     require(species < state_.species.size(), which + ": species " + std::to_string(species) + " does not exist");
     ParticleStore& p = state_.particles;
-    if (!p.hasShapes()) {
-        p.enableShapes();
-        state_.pairList.enableWarmStarts();
-    }
+    enableShapes();
     const Superquadric& s = state_.shapes[shape];
     const std::size_t i = addParticle(position, s.boundingRadius(), species, velocity, angularVelocity);
     const double density = state_.species[species].density;

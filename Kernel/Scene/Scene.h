@@ -54,6 +54,10 @@ public:
     std::size_t addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                      const Quat& orientation = Quat::Identity(), int motion = -1);
     const std::vector<Superquadric>& shapes() const { return state_.shapes; }
+    // The store's arrays of superquadrics, which addSuperquadric makes at its first particle. On
+    // ranks each rank's store needs them once any rank has a superquadric: the ranks exchange
+    // particles in one layout (Sampling/AddedOnce.h calls it on the ranks that do not add).
+    void enableShapes();
     void removeParticle(std::size_t slot);
     // Moves a particle by a jump (a boundary's wrap, like the maser's): the neighbour list then
     // relists its pairs rather than being built anew.
