@@ -295,10 +295,8 @@ void Simulation::initialise(bool restarted) {
     require(c.endTime >= state_.time - 0.5 * c.timeStep,
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
     state_.species.validate();
-    if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
-        work_->laws = state_.species.table<LinearSpringDashpot>();
-    else
-        work_->laws = state_.species.table<HertzMindlin>();
+    work_->laws = state_.species.tables();
+    if (state_.species.keepsRollingSprings()) state_.pairList.enableRollingSprings();
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     checkTimeStep();
