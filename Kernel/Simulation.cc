@@ -195,10 +195,8 @@ void Simulation::initialise(bool restarted) {
     require(c.endTime >= state_.time - 0.5 * c.timeStep,
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
     scene_->validate(c.timeStep);
-    if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
-        work_->laws = state_.species.table<LinearSpringDashpot>();
-    else
-        work_->laws = state_.species.table<HertzMindlin>();
+    work_->laws = state_.species.tables();
+    if (state_.species.keepsRollingSprings()) state_.pairList.enableRollingSprings();
     ranks_->start(state_);
     work_->grid = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {

@@ -60,7 +60,11 @@ public:
     explicit ContactForceLoopInLanes(const ContactForceLoopArguments<Law>& a)
         : p_(a.p), laws_(a.laws), dt_(a.dt), closing_(2 * a.maxSpeed * a.dt), previousForce_(a.previousForce),
           summary_(a.summary), records_(a.records), shapes_(a.p.hasShapes() ? a.shapes : nullptr),
-          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {}
+          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {
+        if constexpr (Law::rollingResistance)
+            require(!shapes_, std::string("the contact law ") + Law::name +
+                                  " (rolling resistance) is for spheres; this scene has superquadric particles");
+    }
 
     // nearPairs: the near list may be swept (not with particles on prescribed motions, whose
     // positions the step sets apart from their velocities).
@@ -220,6 +224,8 @@ public:
                               previousForce_[j].dot(c.normal) * p_.invMass[j] -
                               history.lastNormalForce * inverseMassSum;
         if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+        if constexpr (Law::rollingResistance)
+            setRolling(c, p_.angularVelocity[i] - p_.angularVelocity[j], p_.radius[i] * p_.radius[j] / sumR);
         const Law& law = laws_(p_.species[i], p_.species[j]);
         if (touching)
             touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
@@ -254,6 +260,8 @@ public:
             c.otherAcceleration = previousForce_[i].dot(n) * p_.invMass[i] - previousForce_[j].dot(n) * p_.invMass[j] -
                                   history.lastNormalForce * c.inverseReducedMass;
             if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+            if constexpr (Law::rollingResistance)
+                setRolling(c, p_.angularVelocity[i] - p_.angularVelocity[j], p_.radius[i] * p_.radius[j] / sumR);
             const Law& law = laws_(p_.species[i], p_.species[j]);
             const double smallerRadius = std::min(p_.radius[i], p_.radius[j]);
             if (distance < sumR) {
@@ -335,6 +343,9 @@ private:
             // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
             // direction only, the mean curvature of the gap, 1/r - 1/(2R) (Theory/Superquadrics.md eq. (12)).
             c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
+            if constexpr (Law::rollingResistance)
+                setRolling(c, p_.angularVelocity[i] - (wall.motion >= 0 ? motions[wall.motion].angularVelocity : Vec3::Zero()),
+                           p_.radius[i]);
             const Law& law = laws_(p_.species[i], wall.species);
             const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
             if (touching)
@@ -405,12 +416,29 @@ private:
         }
     }
 
+    // Laws with rolling resistance: a torque on i and its opposite on j (Species/ContactLaws.h),
+    // and what their rolling velocity needs (ContactKinematics::relativeSpin).
+    void applyTorque(std::uint32_t i, std::int64_t j, const Vec3& torque) {
+        if (perPair_ && j >= 0 && !oneWay_) [[unlikely]] {
+            perPair_[currentPair_].torqueI += torque;
+            perPair_[currentPair_].torqueJ -= torque;
+            return;
+        }
+        p_.torque[i] += torque;
+        if (j >= 0 && !oneWay_) p_.torque[j] -= torque;
+    }
+    static void setRolling(ContactKinematics& c, const Vec3& relativeSpin, double rollingRadius) {
+        c.relativeSpin = relativeSpin;
+        c.rollingRadius = rollingRadius;
+    }
+
     [[gnu::always_inline]] void touch(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
                                       ContactHistory& history, const Law& law, double smallerRadius) {
         const ContactForce f = law.force(c, history, dt_);
         history.state = ContactHistory::touching;
         history.lastNormalForce = f.normalForce;
         apply(i, j, f, c.normal, arms);
+        if constexpr (Law::rollingResistance) applyTorque(i, j, law.rollingTorque(c, history, f.normalForce, dt_));
         ++summary_.contacts;
         noteOverlap(i, j, c.overlap, smallerRadius);
         if (records_ && !oneWay_) [[unlikely]]

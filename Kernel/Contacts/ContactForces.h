@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include "Boundaries/Domain.h"
@@ -51,13 +52,30 @@ public:
     virtual void allowSpeed(double maxSpeed) = 0;
 };
 
-// The loop of the form in use (Math/LaneForm.cc).
+// The force loop of one contact law in one form: its entries (Contacts/ContactForceLoop.h), and
+// the table of them of every law of Species/ContactLaws.h.
 template <class Law>
-std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>& arguments);
+struct ForceLoopKernels {
+    std::unique_ptr<ContactForceLoopOfForm<Law>> (*make)(const ContactForceLoopArguments<Law>& arguments);
+    void (*addContactForces)(const ContactForceLoopArguments<Law>& arguments, PairList& list,
+                             const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
+                             const Domain& domain);
+};
+using ForceLoopKernelTable = ContactLawList::TupleOf<ForceLoopKernels>;
+// The table of the form in use (Math/LaneForm.cc).
+const ForceLoopKernelTable& forceLoopKernelsInUse();
+
+// The loop of the form in use.
+template <class Law>
+std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>& arguments) {
+    return std::get<ForceLoopKernels<Law>>(forceLoopKernelsInUse()).make(arguments);
+}
 template <class Law>
 void addContactForcesInLanes(const ContactForceLoopArguments<Law>& arguments, PairList& list,
                              const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
-                             const Domain& domain);
+                             const Domain& domain) {
+    std::get<ForceLoopKernels<Law>>(forceLoopKernelsInUse()).addContactForces(arguments, list, walls, motions, domain);
+}
 
 // The force loop over the listed pairs and wall candidates of one step, for one contact law.
 template <class Law>

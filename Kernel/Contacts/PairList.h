@@ -209,6 +209,12 @@ public:
         wallHistory.enableWarmStarts();
         oneWayHistory.enableWarmStarts();
     }
+    // Scenes whose contact law has rolling resistance: every history keeps its rolling spring.
+    void enableRollingSprings() {
+        history.enableRollingSprings();
+        wallHistory.enableRollingSprings();
+        oneWayHistory.enableRollingSprings();
+    }
 
 private:
     std::vector<std::uint32_t> noted_;  // slots for relist()

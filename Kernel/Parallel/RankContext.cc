@@ -199,6 +199,7 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
                         const PairList& running, std::size_t walls) {
     PairList saved;
     if (running.history.hasWarmStarts()) saved.enableWarmStarts();
+    if (running.history.hasRollingSprings()) saved.enableRollingSprings();
     saved.skin = running.skin;
     saved.reach = running.reach;
     saved.maxSpeed = running.maxSpeed;

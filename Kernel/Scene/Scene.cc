@@ -217,10 +217,8 @@ double Scene::shortestCollisionTime(std::string* which) const {
     double shortest = INFINITY;
     auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
         const ContactLaw law = state_.species.pairLaw(a, b);
-        double tc = INFINITY;
-        if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
-        if (auto* h = std::get_if<HertzMindlin>(&law))
-            tc = h->collisionTime(reducedMass, effectiveRadius, h->characteristicVelocity);
+        const double tc =
+            std::visit([&](const auto& l) { return l.collisionTimeOfPair(reducedMass, effectiveRadius); }, law);
         if (tc >= shortest) return;
         shortest = tc;
         if (which)
