@@ -80,12 +80,15 @@ public:
 
     // The first part of particlePairs where a rank's ghosts are still on their way
     // (Parallel/RankContext.h): the sweep's points of the owned particles, then the interior pairs
-    // (both particles owned: PairList::interiorPairs), which come first in the list and read no
-    // ghost. Their batched contacts may wait in the batch for restPairs, so that every particle's
+    // (both particles owned and away from the periodic faces: PairList::interiorPairs), which come
+    // first in the list and read no ghost. Their batched contacts may wait in the batch for restPairs, so that every particle's
     // forces are summed in the order particlePairs sums them. Each history it changes is saved in
     // `changed` first. Spheres only, without records or pair forces kept (RankContext checks).
+    // Without periodic faces every pair counts as interior (PairList::interiorPairs), ghosts' too:
+    // then it leaves all pairs to restPairs.
     void interiorPairs(PairList& list, const Domain& domain, bool nearPairs, ContactHistoryLog& changed) override {
         makeSweepPoints(list, p_.owned());
+        if (!domain.anyPeriodic()) return;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
             return;  // (restPairs times the sweep's forms on the whole list first)
         const PeriodicImage image(domain);
@@ -128,7 +131,8 @@ public:
             if (!interiorDone_) sweptContacts<false>(list, 0, interior, points, image, swept);
             sweptContacts<true>(list, interior, list.pairs.size(), points, image, swept);
         }
-        interiorDone_ = false;
+        interiorDone_ = pointsStarted_ = false;  // (a next call makes the points of its step anew)
+        pointsMade_ = 0;
         if constexpr (Law::batched) flush(list);
         if (shapes_) flushEllipsoids(list);
     }

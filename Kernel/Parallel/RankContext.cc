@@ -108,9 +108,11 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     // the messages travel. One wait for both; the states are applied unless the step rebuilds.
     split_->startGhostUpdate(p, agreed);
     // The interior pairs meanwhile, unless this rank already knows that the list goes (or that
-    // the run stops, or that its near list was unmade: moved particles).
+    // the run stops, or that its near list was unmade: moved particles). Only in periodic
+    // domains: without periodic faces the list has no interior pairs apart (PairList::interiorPairs).
     const bool overlap = begun && work && s.settings.stepper.overlapGhosts && !s.settings.idOrderedSums &&
-                         !p.hasShapes() && agreed[0] == 0 && agreed[2] == 0 && agreed[3] == 0;
+                         !p.hasShapes() && s.domain.anyPeriodic() && agreed[0] == 0 && agreed[2] == 0 &&
+                         agreed[3] == 0;
     if (overlap) beginInteriorPairs(s, *work, *begun);
     if (!split_->agreesThroughGhosts()) {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);

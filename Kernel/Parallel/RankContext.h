@@ -87,7 +87,7 @@ public:
     // which read no ghost (AnyContactForceLoop::interiorPairs), in the loop it leaves in begun
     // for the rest of the step; if another rank rebuilds the list after all, all of that is
     // undone (begun empty), and the step computes its forces after the build as without begun.
-    // Spheres only, without sums in id order, and with --overlap-ghosts on.
+    // Spheres only, in a periodic domain, without sums in id order, and with --overlap-ghosts on.
     bool updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
                              const std::function<void()>& reorder, StepWorkspace* work = nullptr,
                              std::unique_ptr<AnyContactForceLoop>* begun = nullptr);
