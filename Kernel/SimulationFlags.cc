@@ -53,6 +53,10 @@ Simulation::Simulation()
            "the first half of each step in one pass over the particles where the scene allows it (on, the default), "
            "or pass by pass: the same trajectories, for measurements",
            [&c](const std::string& v) { c.stepper.driftPass = CommandLine::toBool("drift-pass", v); });
+    cl.add("overlap-ghosts", "on|off",
+           "on ranks, compute the pairs of two owned particles while the ghosts travel (on, the default), or after: "
+           "the same trajectories, for measurements",
+           [&c](const std::string& v) { c.stepper.overlapGhosts = CommandLine::toBool("overlap-ghosts", v); });
     cl.add("lane-form", "scalar|avx2|avx512",
            "run the vector passes in this lane form instead of the best one the processor runs: the bits of a run "
            "on another processor (Installing.md, lane forms)",

@@ -142,4 +142,27 @@ private:
     std::vector<ContactHistory::State> states_;
 };
 
+// Histories as they were before a pass changed them, to be put back: the interior pairs that a
+// rank computes while its ghosts travel, on a step that turns out to rebuild the list
+// (Parallel/RankContext.h). Each pair is saved before its first change of the pass.
+class ContactHistoryLog {
+public:
+    void save(const ContactHistories& histories, std::size_t k) { entries_.push_back({k, histories.get(k)}); }
+    // Puts the saved histories back (in reverse, so that a pair saved twice gets its first) and
+    // forgets them.
+    void restore(ContactHistories& histories) {
+        for (auto e = entries_.rbegin(); e != entries_.rend(); ++e) histories.set(e->pair, e->history);
+        entries_.clear();
+    }
+    void clear() { entries_.clear(); }
+    std::size_t size() const { return entries_.size(); }
+
+private:
+    struct Entry {
+        std::size_t pair;
+        ContactHistory history;
+    };
+    std::vector<Entry> entries_;
+};
+
 }  // namespace talus

@@ -1,6 +1,6 @@
 // How the steppers (Integration/Integrator.h) may advance a run: switches that change speed, not
 // physics (at most the round-off of the force sums). Set from the command line (--wave-steps,
-// --wave-strip, --drift-pass) or in a driver through settings().stepper; part of RunSettings.
+// --wave-strip, --drift-pass, --overlap-ghosts) or in a driver through settings().stepper; part of RunSettings.
 // The restart file keeps the waves' two numbers (Documentation/FileFormats/restart.md).
 #pragma once
 
@@ -19,6 +19,10 @@ struct StepperTuning {
     // (Particles/DriftPass.h); off: pass by pass, for measurements and for tests that compare the
     // two (the same trajectories to the bit).
     bool driftPass = true;
+    // On ranks, the forces of the pairs of two owned particles computed while the ghosts' states
+    // travel (Parallel/RankContext.h); off: after they have arrived, for measurements and for the
+    // test that compares the two (the same trajectories to the bit).
+    bool overlapGhosts = true;
 
     // Waves of `steps` steps (the strip width set before stays), or in strips of stripColumns.
     void setWaves(int steps) {
