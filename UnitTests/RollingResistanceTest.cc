@@ -58,14 +58,14 @@ LinearSpringDashpotRolling rollingLaw(double rollingFriction) {
 // A sphere rolling without slip along +x at speed v0 on the plane z = 0, resting at its static
 // overlap (so that the normal spring does not bounce).
 template <class Law>
-void rollingSphere(Scene& s, const Law& law, double v0) {
+void rollingSphere(TestScene& s, const Law& law, double v0) {
     const double overlap = sphereMass(radius) / law.normalStiffness;
-    s.setGravity(Vec3(0, 0, -1));
-    s.setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 1));
-    const auto species = s.addSpecies("solid", unitMassDensity, law);
-    s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+    s.scene().setGravity(Vec3(0, 0, -1));
+    s.scene().setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 1));
+    const auto species = s.scene().addSpecies("solid", unitMassDensity, law);
+    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
     const double arm = radius - overlap / 2;
-    s.addParticle(Vec3(0, 0, radius - overlap), radius, species, Vec3(v0, 0, 0), Vec3(0, v0 / arm, 0));
+    s.scene().addParticle(Vec3(0, 0, radius - overlap), radius, species, Vec3(v0, 0, 0), Vec3(0, v0 / arm, 0));
 }
 
 struct Stop {
@@ -74,14 +74,14 @@ struct Stop {
 };
 
 Stop runUntilStop(const LinearSpringDashpotRolling& law, double v0, double endTime) {
-    Scene scene;
-    scene.setup = [&](Scene& s) { rollingSphere(s, law, v0); };
+    TestScene scene;
+    scene.setup = [&](TestScene& s) { rollingSphere(s, law, v0); };
     Stop stop;
-    scene.afterStep = [&](Scene& s) {
-        if (std::isnan(stop.time) && s.particles().velocity[0].x() <= 0)
-            stop = {s.particles().position[0].x(), s.time()};
+    scene.afterStep = [&](TestScene& s) {
+        if (std::isnan(stop.time) && s.scene().particles().velocity[0].x() <= 0)
+            stop = {s.scene().particles().position[0].x(), s.time()};
     };
-    scene.run(timeStep, endTime);
+    scene.runFor(timeStep, endTime);
     return stop;
 }
 
@@ -121,13 +121,13 @@ TEST(RollingResistance, RollingSphereStopsWhereTheLawPredicts) {
 // Without rolling friction the law is LinearSpringDashpot to the bit: the sphere rolls on at v0.
 TEST(RollingResistance, WithoutRollingFrictionTheSphereKeepsRolling) {
     const double v0 = 0.5, duration = 1;
-    Scene rolling, plain;
-    rolling.setup = [&](Scene& s) { rollingSphere(s, rollingLaw(0), v0); };
-    plain.setup = [&](Scene& s) { rollingSphere(s, static_cast<const LinearSpringDashpot&>(rollingLaw(0)), v0); };
-    rolling.run(timeStep, duration);
-    plain.run(timeStep, duration);
-    expectSameParticles(rolling.particles(), plain.particles());
-    const ParticleStore& p = rolling.particles();
+    TestScene rolling, plain;
+    rolling.setup = [&](TestScene& s) { rollingSphere(s, rollingLaw(0), v0); };
+    plain.setup = [&](TestScene& s) { rollingSphere(s, static_cast<const LinearSpringDashpot&>(rollingLaw(0)), v0); };
+    rolling.runFor(timeStep, duration);
+    plain.runFor(timeStep, duration);
+    expectSameParticles(rolling.scene().particles(), plain.scene().particles());
+    const ParticleStore& p = rolling.scene().particles();
     std::printf("[ measured ] without rolling friction: speed change %.2e after t = %g\n", p.velocity[0].x() / v0 - 1,
                 duration);
     EXPECT_NEAR(p.velocity[0].x(), v0, 1e-9);
@@ -138,26 +138,26 @@ TEST(RollingResistance, WithoutRollingFrictionTheSphereKeepsRolling) {
 // velocity Rr (wi - wj) x n is zero in both, so no rolling torque acts, to the bit.
 TEST(RollingResistance, NoRollingTorqueInANormalCollision) {
     for (const double spin : {0.0, 5.0}) {
-        Scene scene;
-        scene.setup = [&](Scene& s) {
-            s.setGravity(Vec3::Zero());
-            s.setDomain(Vec3(-1, -1, -1), Vec3(3, 1, 1));
-            const auto species = s.addSpecies("solid", unitMassDensity, rollingLaw(0.5));
-            s.addParticle(Vec3(0, 0, 0), radius, species, Vec3(1, 0, 0), Vec3(spin, 0, 0));
-            s.addParticle(Vec3(1.01, 0, 0), radius, species, Vec3(-1, 0, 0));
+        TestScene scene;
+        scene.setup = [&](TestScene& s) {
+            s.scene().setGravity(Vec3::Zero());
+            s.scene().setDomain(Vec3(-1, -1, -1), Vec3(3, 1, 1));
+            const auto species = s.scene().addSpecies("solid", unitMassDensity, rollingLaw(0.5));
+            s.scene().addParticle(Vec3(0, 0, 0), radius, species, Vec3(1, 0, 0), Vec3(spin, 0, 0));
+            s.scene().addParticle(Vec3(1.01, 0, 0), radius, species, Vec3(-1, 0, 0));
         };
         double largestTorque = 0;
         bool touched = false;
-        scene.afterStep = [&](Scene& s) {
-            touched = touched || s.particles().force[0].norm() > 0;
-            for (int i = 0; i < 2; ++i) largestTorque = std::max(largestTorque, s.particles().torque[i].norm());
+        scene.afterStep = [&](TestScene& s) {
+            touched = touched || s.scene().particles().force[0].norm() > 0;
+            for (int i = 0; i < 2; ++i) largestTorque = std::max(largestTorque, s.scene().particles().torque[i].norm());
         };
-        scene.run(timeStep, 0.05);
+        scene.runFor(timeStep, 0.05);
         ASSERT_TRUE(touched);
         EXPECT_EQ(largestTorque, 0) << "spin " << spin;
-        EXPECT_EQ(scene.particles().angularVelocity[0], Vec3(spin, 0, 0));
-        EXPECT_EQ(scene.particles().angularVelocity[1], Vec3::Zero());
-        EXPECT_LT(scene.particles().velocity[0].x(), 0);  // it did bounce
+        EXPECT_EQ(scene.scene().particles().angularVelocity[0], Vec3(spin, 0, 0));
+        EXPECT_EQ(scene.scene().particles().angularVelocity[1], Vec3::Zero());
+        EXPECT_LT(scene.scene().particles().velocity[0].x(), 0);  // it did bounce
     }
 }
 
@@ -167,33 +167,33 @@ TEST(RollingResistance, RestartContinuesTheRollingSpringExactly) {
     // The rolling sphere with a second one, spinning the other way, on top: a wall contact and a
     // pair contact with rolling springs. Each starts at its static overlap (the lower one carries
     // both weights).
-    const auto setup = [](Scene& s) {
-        s.setTimeStep(timeStep);
+    const auto setup = [](TestScene& s) {
+        s.settings().timeStep = timeStep;
         const auto law = rollingLaw(0.2);
         const double weightOverlap = sphereMass(radius) / law.normalStiffness, v0 = 0.5;
-        s.setGravity(Vec3(0, 0, -1));
-        s.setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 3));
-        const auto species = s.addSpecies("solid", unitMassDensity, law);
-        s.addWall(Vec3::UnitZ(), Vec3::Zero(), species);
+        s.scene().setGravity(Vec3(0, 0, -1));
+        s.scene().setDomain(Vec3(-1, -1, -1), Vec3(10, 1, 3));
+        const auto species = s.scene().addSpecies("solid", unitMassDensity, law);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
         const double lower = radius - 2 * weightOverlap;
-        s.addParticle(Vec3(0, 0, lower), radius, species, Vec3(v0, 0, 0), Vec3(0, v0 / lower, 0));
-        s.addParticle(Vec3(0, 0, lower + 2 * radius - weightOverlap), radius, species, Vec3::Zero(), Vec3(0, -3, 0));
+        s.scene().addParticle(Vec3(0, 0, lower), radius, species, Vec3(v0, 0, 0), Vec3(0, v0 / lower, 0));
+        s.scene().addParticle(Vec3(0, 0, lower + 2 * radius - weightOverlap), radius, species, Vec3::Zero(), Vec3(0, -3, 0));
     };
     const int saved = 300, total = 600;
-    Scene first;
+    TestScene first;
     first.setup = setup;
-    first.setName("rollingresistance_restart");
+    first.settings().name = "rollingresistance_restart";
     first.solveOrThrow({"--end-time", std::to_string(saved * timeStep), "--output-interval",
                         std::to_string(saved * timeStep)});
-    ASSERT_TRUE(first.pairList().history.hasRollingSprings());
-    ASSERT_GT(stretchedRollingSprings(first.pairList().wallHistory), 0u);
-    ASSERT_GT(stretchedRollingSprings(first.pairList().history), 0u);
+    ASSERT_TRUE(first.state().pairList.history.hasRollingSprings());
+    ASSERT_GT(stretchedRollingSprings(first.state().pairList.wallHistory), 0u);
+    ASSERT_GT(stretchedRollingSprings(first.state().pairList.history), 0u);
 
     SimulationState read;
     readRestartFile("rollingresistance_restart.restart", read);
     ASSERT_TRUE(read.pairList.wallHistory.hasRollingSprings());
-    EXPECT_TRUE(sameBits(read.pairList.wallHistory, first.pairList().wallHistory));
-    EXPECT_TRUE(sameBits(read.pairList.history, first.pairList().history));
+    EXPECT_TRUE(sameBits(read.pairList.wallHistory, first.state().pairList.wallHistory));
+    EXPECT_TRUE(sameBits(read.pairList.history, first.state().pairList.history));
 
     // A bad rolling parameter in the file is named (species line: name, density, law, its nine
     // parameters; the rolling damping is the eleventh token).
@@ -206,10 +206,10 @@ TEST(RollingResistance, RestartContinuesTheRollingSpringExactly) {
     expectError([] { SimulationState state; readRestartFile("rollingresistance_bad.restart", state); },
                 {"rollingresistance_bad.restart line", "bad number 'x' for rolling damping"});
 
-    Scene restarted;
+    TestScene restarted;
     restarted.solveOrThrow({"--restart", "rollingresistance_restart.restart", "--end-time",
                             std::to_string(total * timeStep), "--files", "off"});
-    Scene uninterrupted;
+    TestScene uninterrupted;
     uninterrupted.setup = setup;
     uninterrupted.solveOrThrow(stepsWithoutFiles(timeStep, total));
     ASSERT_EQ(restarted.step(), static_cast<std::uint64_t>(total));
