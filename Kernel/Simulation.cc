@@ -195,10 +195,8 @@ void Simulation::initialise(bool restarted) {
     require(c.endTime >= state_.time - 0.5 * c.timeStep,
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
     scene_->validate(c.timeStep);
-    if (std::holds_alternative<LinearSpringDashpot>(state_.species[0].law))
-        work_->laws = state_.species.table<LinearSpringDashpot>();
-    else
-        work_->laws = state_.species.table<HertzMindlin>();
+    work_->laws = state_.species.tables();
+    if (state_.species.keepsRollingSprings()) state_.pairList.enableRollingSprings();
     ranks_->start(state_);
     work_->grid = HGrid(c.cellSizeRatio);
     if (c.skin < 0) {
@@ -246,9 +244,11 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     PairList& list = state_.pairList;
     std::vector<CarriedHistory> carried;
     bool rebuild;
+    std::unique_ptr<AnyContactForceLoop> begun;  // on ranks: the interior pairs done while the ghosts travelled
     if (ranks_->isSplit()) {
         rebuild = ranks_->updateNeighbourhood(state_, work.positions.changedThisStep, carried,
-                                              [this] { reorderParticles(/*withPreviousForces*/ false); });
+                                              [this] { reorderParticles(/*withPreviousForces*/ false); }, &work,
+                                              records || drifted ? nullptr : &begun);
     } else {
         list.relist(p, state_.domain, state_.walls);  // particles added or moved by boundaries
         rebuild = drifted ? list.needsRebuild(drifted->moves, p, state_.time, state_.settings.timeStep)
@@ -258,7 +258,7 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     // The forces of the last step become previousForce by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity (done by
     // the drift pass if there was one).
-    if (!drifted) {
+    if (!drifted && !begun) {
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }
@@ -270,15 +270,22 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     if (rebuild && idOrdered) work.idOrderedForceSums.rebuild(list, p);
     if (rebuild) integrator_->afterListBuild(*host_);  // (the wave schedule of the new list)
     PairContribution* perPair = idOrdered ? work.idOrderedForceSums.contributions(list.pairs.size()).data() : nullptr;
-    work.summary = ContactSummary{};
-    if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
-    std::visit(
-        [&](const auto& laws) {
-            addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
-                             state_.settings.timeStep, state_.pairList.maxSpeed, work.previousForce, work.summary,
-                             records, &state_.shapes, perPair);
-        },
-        work.laws);
+    if (begun) {  // (the rest of the step's contact forces as addContactForces computes them)
+        begun->allowSpeed(list.maxSpeed);
+        begun->restPairs(list, state_.domain, state_.motions.empty());
+        begun->oneWayPairs(list, state_.domain);
+        begun->wallPairs(list, state_.walls, state_.motions);
+    } else {
+        work.summary = ContactSummary{};
+        if (records) records->start(/*keepEach*/ state_.settings.writeFstat, p.owned());
+        std::visit(
+            [&](const auto& laws) {
+                addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
+                                 state_.settings.timeStep, state_.pairList.maxSpeed, work.previousForce, work.summary,
+                                 records, &state_.shapes, perPair);
+            },
+            work.laws);
+    }
     if (idOrdered) work.idOrderedForceSums.addTo(p);
     if (records) {
         work.elasticEnergy = records->elasticEnergy();

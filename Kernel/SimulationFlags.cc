@@ -83,6 +83,10 @@ Simulation::Simulation()
            "the form of the force loop's sweep: the fastest, timed at the first long list (auto), or the one named "
            "(a form the lane form lacks is the scalar loop). The same pairs",
            [&c](const std::string& v) { c.stepper.sweepForm = sweepFormNamed(v, "--sweep"); });
+    cl.add("overlap-ghosts", "on|off",
+           "on ranks, compute the pairs of two owned particles while the ghosts travel (on, the default), or after: "
+           "the same trajectories, for measurements",
+           [&c](const std::string& v) { c.stepper.overlapGhosts = CommandLine::toBool("overlap-ghosts", v); });
     cl.add("lane-form", "scalar|avx2|avx512",
            "run the vector passes in this lane form instead of the best one the processor runs: the bits of a run "
            "on another processor (Installing.md, lane forms)",

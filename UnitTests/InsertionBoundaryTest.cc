@@ -431,8 +431,8 @@ TEST(InsertionBoundary, BadInputNamesTheParameter) {
     expectError([&] { SizeDistribution::byNumber().add(0, 0.5, -1); }, {"size class 0", "weight must not be negative"});
     expectError([&] { InsertionBoundary(lo, hi, SizeDistribution::byNumber().add(0, 0.5, 0).add(1, 0.4, 0)); },
                 {"all weights are zero"});
-    expectError([&] { InsertionBoundary(hi, lo, one); }, {"insertion region", "upper corner"});
-    expectError([&] { InsertionBoundary(lo, Vec3(4, 0, 4), one); }, {"insertion region", "upper corner"});
+    expectError([&] { InsertionBoundary(hi, lo, one); }, {"box region", "upper corner"});
+    expectError([&] { InsertionBoundary(lo, Vec3(4, 0, 4), one); }, {"box region", "upper corner"});
     expectError([&] { InsertionBoundary(lo, hi, one, 0); }, {"maxAttemptsPerParticle", "at least 1"});
 
     Simulation s;
@@ -446,7 +446,7 @@ TEST(InsertionBoundary, BadInputNamesTheParameter) {
     expectError([&] { InsertionBoundary(lo, hi, SizeDistribution::byNumber().add(3, 0.5)).insertCount(s, 1); },
                 {"size class 0", "species 3 does not exist"});
     expectError([&] { InsertionBoundary(lo, Vec3(4, 4, 0.8), one).insertCount(s, 1); },
-                {"insertion region", "along z", "largest particle diameter"});
+                {"box region", "along z", "largest particle diameter"});
     EXPECT_EQ(s.scene().particles().size(), 0u) << "a rejected call must not insert anything";
 }
 

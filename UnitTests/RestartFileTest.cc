@@ -76,11 +76,12 @@ void runRichScene(SceneSimulation& s, const std::string& name, int steps) {
     for (int k = 0; k < 1001; ++k) unit(s.scene().random());
 }
 
+// Every parameter of the law (flags as 0 or 1), by its list of parameters (Species/ContactLaws.h).
 std::vector<double> lawParameters(const ContactLaw& law) {
-    if (auto* l = std::get_if<LinearSpringDashpot>(&law))
-        return {l->normalStiffness, l->normalDamping, l->tangentialStiffness, l->tangentialDamping, l->friction};
-    const auto& h = std::get<HertzMindlin>(law);
-    return {h.effectiveYoungsModulus, h.effectiveShearModulus, h.restitution, h.friction, h.characteristicVelocity};
+    std::vector<double> values;
+    std::visit([&]<class Law>(const Law& l) { Law::parameters(l, [&](const char*, auto value) { values.push_back(value); }); },
+               law);
+    return values;
 }
 
 void expectSameLaw(const ContactLaw& a, const ContactLaw& b) {

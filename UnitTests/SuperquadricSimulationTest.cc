@@ -236,11 +236,7 @@ TEST(SuperquadricSimulation, BatchedEllipsoidContactStepFollowsTheScalarStep) {
         const double mass = 6 / pi * shape.volume();
         const auto species =
             sim.scene().addSpecies("grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, mass).withFriction(0.5));
-        sim.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-        sim.scene().addWall(Vec3::UnitX(), Vec3::Zero(), species);
-        sim.scene().addWall(-Vec3::UnitX(), Vec3(width, 0, 0), species);
-        sim.scene().addWall(Vec3::UnitY(), Vec3::Zero(), species);
-        sim.scene().addWall(-Vec3::UnitY(), Vec3(0, width, 0), species);
+        sim.scene().addOpenBox(Vec3::Zero(), Vec3(width, width, 0), species);  // floor and four sides
         const std::size_t sq = sim.scene().addShape(shape);
         for (int n = 0; n < 20; ++n) {  // five layers of 2 x 2, tilted each its own way
             const int layer = n / 4;

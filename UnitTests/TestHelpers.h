@@ -128,7 +128,8 @@ bool sameBits(Integer a, Integer b) {
 }
 inline bool sameBits(const ContactHistory& a, const ContactHistory& b) {
     return sameBits(a.spring, b.spring) && sameBits(a.lastNormalForce, b.lastNormalForce) && a.state == b.state &&
-           sameBits(a.warmPoint, b.warmPoint) && sameBits(a.warmMultiplier, b.warmMultiplier);
+           sameBits(a.warmPoint, b.warmPoint) && sameBits(a.warmMultiplier, b.warmMultiplier) &&
+           sameBits(a.rollingSpring, b.rollingSpring);
 }
 inline bool sameBits(const ContactHistories& a, const ContactHistories& b) {
     if (a.size() != b.size()) return false;

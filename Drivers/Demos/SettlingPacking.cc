@@ -34,11 +34,7 @@ public:
         const int perLayer = static_cast<int>(std::floor(width / spacing));
         const double height = spacing * (particleCount / (perLayer * perLayer) + 2);
         scene().setDomain(Vec3::Zero(), Vec3(width, width, height));
-        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grains);             // floor
-        scene().addWall(Vec3::UnitX(), Vec3::Zero(), grains);             // x = 0
-        scene().addWall(-Vec3::UnitX(), Vec3(width, 0, 0), grains);       // x = width
-        scene().addWall(Vec3::UnitY(), Vec3::Zero(), grains);             // y = 0
-        scene().addWall(-Vec3::UnitY(), Vec3(0, width, 0), grains);       // y = width
+        scene().addOpenBox(Vec3::Zero(), Vec3(width, width, 0), grains);  // floor and four sides
 
         std::uniform_real_distribution<double> diameter(0.8, 1.2), jiggle(-0.1, 0.1);
         for (int k = 0; k < particleCount; ++k) {

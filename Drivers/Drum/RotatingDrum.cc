@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "Boundaries/CylinderFilling.h"
+#include "Boundaries/Filling.h"
 #include "Chute/Chute.h"
 #include "DrumAnalysis.h"
 #include "Sampling/Messages.h"
@@ -103,21 +103,19 @@ void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     }
 }
 
-// Theory/RotatingDrum.md "Filling" (Boundaries/CylinderFilling.h), spheres and ellipsoids in turn,
+// Theory/RotatingDrum.md "Filling" (Boundaries/Filling.h), spheres and ellipsoids in turn,
 // anywhere in the drum: a particle falls at most 2 r, to v = sqrt(4 r) <= 7.8 for r <= 15, and the
 // contact (e = 0.1) stops it within about half of v sqrt(m_ij/kn), kn = m_ij (pi^2 + ln(e)^2)/tc^2,
 // i.e. 0.05: 16% of the short semi-axis at R = 4. (R = 1: the "ellipsoids" are spheres.)
 int RotatingDrum::insertRemaining() {
+    const Filling drum(Cylinder(Vec3::Zero(), /*axis y*/ 1, length, innerRadius_), 1000, Filling::CandidateMargin::largestRadius);
     const int ellipsoidShape = aspect > 1 ? static_cast<int>(shape_) : -1;
-    const CylinderFilling filling(innerRadius_, length, {{.species = 0, .target = targetCount_ / 2 + targetCount_ % 2},
-                                                          {.species = 1, .shape = ellipsoidShape, .target = targetCount_ / 2}});
     std::vector<int> inserted = {insertedSpheres_, insertedEllipsoids_};
-    const int placed = filling.fillRound(*this, inserted);
-    insertedSpheres_ = inserted[0], insertedEllipsoids_ = inserted[1];
-    ++rounds_;
-    lastInsertion_ = time();
+    const int placed = static_cast<int>(drum.fillInTurn(*this, {{.species = 0, .target = targetCount_ / 2 + targetCount_ % 2},
+        {.species = 1, .shape = ellipsoidShape, .target = targetCount_ / 2}}, inserted).inserted);
+    insertedSpheres_ = inserted[0], insertedEllipsoids_ = inserted[1], lastInsertion_ = time();
     say(*this, "%s: insertion round %d at t = %g: placed %d, %d of %d in (%d spheres, %d ellipsoids)\n", settings().name.c_str(),
-        rounds_, time(), placed, particlesInserted(), targetCount_, insertedSpheres_, insertedEllipsoids_);
+        ++rounds_, time(), placed, particlesInserted(), targetCount_, insertedSpheres_, insertedEllipsoids_);
     return placed;
 }
 

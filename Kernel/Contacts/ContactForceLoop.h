@@ -60,30 +60,60 @@ public:
     explicit ContactForceLoopInLanes(const ContactForceLoopArguments<Law>& a)
         : p_(a.p), laws_(a.laws), dt_(a.dt), closing_(2 * a.maxSpeed * a.dt), previousForce_(a.previousForce),
           summary_(a.summary), records_(a.records), shapes_(a.p.hasShapes() ? a.shapes : nullptr),
-          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {}
+          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {
+        if constexpr (Law::rollingResistance)
+            require(!shapes_, std::string("the contact law ") + Law::name +
+                                  " (rolling resistance) is for spheres; this scene has superquadric particles");
+    }
 
     // nearPairs: the near list may be swept (not with particles on prescribed motions, whose
     // positions the step sets apart from their velocities).
+    // Two passes per chunk of the list: a branch-free sweep over the listed pairs
+    // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
+    // next step, or just separated), then the contacts are computed for those alone.
+    // The sweep sees each particle's radius grown by how far it moves within the step relative
+    // to a frame moving with a velocity u common to all, |v - u| dt (PairSweep.h): a pair
+    // closes its gap by at most |vi - vj| dt <= (|vi - u| + |vj - u|) dt, so a pair whose grown
+    // spheres are apart cannot touch within the step (the test of pairContact below). The
+    // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
+    // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
+    // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
     void particlePairs(PairList& list, const Domain& domain, bool nearPairs) override {
+        restPairs(list, domain, nearPairs);
+    }
+
+    // The first part of particlePairs where a rank's ghosts are still on their way
+    // (Parallel/RankContext.h): the sweep's points of the owned particles, then the interior pairs
+    // (both particles owned and away from the periodic faces: PairList::interiorPairs), which come
+    // first in the list and read no ghost. Their batched contacts may wait in the batch for restPairs, so that every particle's
+    // forces are summed in the order particlePairs sums them. Each history it changes is saved in
+    // `changed` first. Spheres only, without records or pair forces kept (RankContext checks).
+    // Without periodic faces every pair counts as interior (PairList::interiorPairs), ghosts' too:
+    // then it leaves all pairs to restPairs.
+    void interiorPairs(PairList& list, const Domain& domain, bool nearPairs, ContactHistoryLog& changed) override {
+        makeSweepPoints(list, p_.owned());
+        if (!domain.anyPeriodic()) return;
+        if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
+            return;  // (restPairs times the sweep's forms on the whole list first)
         const PeriodicImage image(domain);
-        // Two passes per chunk of the list: a branch-free sweep over the listed pairs
-        // (Contacts/PairSweep.h) picks those that need work (touching, about to touch within the
-        // next step, or just separated), then the contacts are computed for those alone.
-        // The sweep sees each particle's radius grown by how far it moves within the step relative
-        // to a frame moving with a velocity u common to all, |v - u| dt (PairSweep.h): a pair
-        // closes its gap by at most |vi - vj| dt <= (|vi - u| + |vj - u|) dt, so a pair whose grown
-        // spheres are apart cannot touch within the step (the test of pairContact below). The
-        // margins (a millionth of the reach, 1e-12 of the radius) keep rounding from dropping a
-        // pair that the test would take. Against one margin for all, 2 vmax dt, this leaves out
-        // most of the near pairs of a fast dilute flow, where a few fast spheres set vmax.
-        double growth;
-        if (list.sweepPointsGrowth && list.sweepPointScratch.size() == p_.size()) {  // made with the drift
-            growth = *list.sweepPointsGrowth;
-        } else {
-            const Vec3 frame = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
-            growth = sweepPointsForStep(p_, dt_, frame, list.sweepPointScratch);
-        }
-        list.sweepPointsGrowth.reset();
+        const SweepPoint* points = list.sweepPointScratch.data();
+        SweptPairs swept;
+        changed_ = &changed;
+        // The near list if it holds the interior pairs this step picks by the owned particles'
+        // growths (PairSweep.h nearPairsHoldInterior), else all of them: the same picks.
+        if (nearPairs && nearPairsHoldInterior(list, growth_))
+            sweptContacts<false>(list, 0, list.near.interior, points, image, swept, &list.near);
+        else
+            sweptContacts<false>(list, 0, std::min(list.interiorPairs, list.pairs.size()), points, image, swept);
+        changed_ = nullptr;
+        interiorDone_ = true;
+    }
+
+    // particlePairs, or what interiorPairs left of it: the pairs with a ghost or across a
+    // periodic face, then the batches applied.
+    void restPairs(PairList& list, const Domain& domain, bool nearPairs) override {
+        makeSweepPoints(list, p_.size());
+        const PeriodicImage image(domain);
         const SweepPoint* points = list.sweepPointScratch.data();
         SweptPairs swept;
         if (sweepForm() == SweepForm::undecided && list.pairs.size() >= 4 * SweptPairs::capacity) [[unlikely]]
@@ -92,21 +122,38 @@ public:
         // The near list where it holds every pair the sweep can pick (PairSweep.h), else all pairs.
         // On ranks each keeps its own: a ghost moved by the drift of its owner with the velocity
         // that came with it, which its growth holds, and any other move of a ghost rebuilds.
-        if (nearPairs && useNearPairs(list, growth)) {
+        if (nearPairs && useNearPairs(list, growth_)) {
             if (!list.near.made)
-                TALUS_LANES::makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(), list.nearSkinFraction * list.skin,
-                              image, list.nearPointScratch, swept);
+                TALUS_LANES::makeNearPairs(list, p_.position.data(), p_.size(), p_.radius.data(),
+                                           list.nearSkinFraction * list.skin, image, list.nearPointScratch, swept);
             const NearPairs& near = list.near;
-            sweptContacts<false>(list, 0, near.interior, points, image, swept, &near);
+            if (!interiorDone_) sweptContacts<false>(list, 0, near.interior, points, image, swept, &near);
             sweptContacts<true>(list, near.interior, near.pairs.size(), points, image, swept, &near);
         } else {
             list.near.made = false;  // (its bound of the displacements does not follow this step)
             const std::size_t interior = std::min(list.interiorPairs, list.pairs.size());
-            sweptContacts<false>(list, 0, interior, points, image, swept);
+            if (!interiorDone_) sweptContacts<false>(list, 0, interior, points, image, swept);
             sweptContacts<true>(list, interior, list.pairs.size(), points, image, swept);
         }
+        interiorDone_ = pointsStarted_ = false;  // (a next call makes the points of its step anew)
+        pointsMade_ = 0;
         if constexpr (Law::batched) flush(list);
         if (shapes_) flushEllipsoids(list);
+    }
+
+    // The sweep's points of the slots up to `last` not made yet this step, and the largest growth
+    // among all made (made with the drift if the drift pass made them).
+    void makeSweepPoints(PairList& list, std::size_t last) {
+        if (!pointsStarted_) {
+            pointsStarted_ = true;
+            const bool madeWithDrift = list.sweepPointsGrowth && list.sweepPointScratch.size() == p_.size();
+            if (madeWithDrift) growth_ = *list.sweepPointsGrowth, pointsMade_ = p_.size();
+            list.sweepPointsGrowth.reset();
+            frame_ = list.sweepInFlowFrame && !madeWithDrift ? sweepFrameVelocity(p_) : Vec3::Zero();
+        }
+        if (last <= pointsMade_) return;
+        growth_ = largerGrowth(growth_, sweepPointsForStep(p_, pointsMade_, last, dt_, frame_, list.sweepPointScratch));
+        pointsMade_ = last;
     }
 
     // The listed pairs [from, to) (or those of a near list), a chunk at a time: the sweep, then
@@ -194,6 +241,7 @@ public:
         // any square root; in a fast flow most picked pairs are such): no force, and no work
         // beyond noting that the pair applied no force this step.
         if (apartBefore && !(relativeVelocity.dot(d) < 0)) {
+            noteChange(list, k);
             list.history.clearLastNormalForce(k);
             return;
         }
@@ -204,6 +252,7 @@ public:
         if (apartBefore) {
             const double u = relativeVelocity.dot(n);
             if (!(u < 0 && distance - sumR < -u * dt_)) {
+                noteChange(list, k);
                 list.history.clearLastNormalForce(k);
                 return;
             }
@@ -220,61 +269,25 @@ public:
                               previousForce_[j].dot(c.normal) * p_.invMass[j] -
                               history.lastNormalForce * inverseMassSum;
         if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
+        if constexpr (Law::rollingResistance)
+            setRolling(c, p_.angularVelocity[i] - p_.angularVelocity[j], p_.radius[i] * p_.radius[j] / sumR);
         const Law& law = laws_(p_.species[i], p_.species[j]);
         if (touching)
             touch(i, j, c, arms, history, law, std::min(p_.radius[i], p_.radius[j]));
         else
             history = apart(i, j, c, arms, history, law);
+        noteChange(list, k);
         list.history.set(k, history);
     }
 
-    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay, Theory/Maser.md eq. (3)):
-    // the scalar path with j's image, and the force on i alone. They are few (one layer of the
-    // face), so they never enter a batch; they write no .fstat records (a force without its
-    // reaction would break the stress of coarse graining).
-    void oneWayPairs(PairList& list, const Domain& domain) override {
-        if (list.oneWayPairs.empty()) return;
-        const PeriodicImage image(domain);
-        const double shift = domain.oneWay.length();
-        oneWay_ = true;
-        for (std::size_t k = 0; k < list.oneWayPairs.size(); ++k) {
-            const std::uint32_t i = list.oneWayPairs[k].i, j = list.oneWayPairs[k].j;
-            Vec3 d = p_.position[i] - p_.position[j];
-            d.x() += shift;
-            d = image.nearest(d);
-            const double sumR = p_.radius[i] + p_.radius[j], distance = d.norm();
-            const Vec3 n = d / distance;
-            ContactHistory history = list.oneWayHistory.get(k);
-            Arms arms;
-            ContactKinematics c = contactKinematics(n, sumR - distance, p_.radius[i], p_.radius[j],
-                                                    p_.velocity[i] - p_.velocity[j], p_.angularVelocity[i],
-                                                    p_.angularVelocity[j], arms);
-            c.inverseDistance = 1 / distance;
-            c.inverseReducedMass = p_.invMass[i] + p_.invMass[j];
-            c.otherAcceleration = previousForce_[i].dot(n) * p_.invMass[i] - previousForce_[j].dot(n) * p_.invMass[j] -
-                                  history.lastNormalForce * c.inverseReducedMass;
-            if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p_.radius[i] * p_.radius[j] / sumR;
-            const Law& law = laws_(p_.species[i], p_.species[j]);
-            const double smallerRadius = std::min(p_.radius[i], p_.radius[j]);
-            if (distance < sumR) {
-                touch(i, j, c, arms, history, law, smallerRadius);
-                // Beyond a tenth of the radius j feels the share of the normal force that the
-                // excess overlap makes: in a slow flow, j may be pushed on from behind while i,
-                // in front of j's image, sits against the base, and the overlap would grow
-                // without bound (OneWayPeriodicBox::reactionOverlap).
-                const double excess = c.overlap - OneWayPeriodicBox::reactionOverlap * smallerRadius;
-                if (excess > 0 && history.lastNormalForce > 0) {
-                    p_.force[j] -= (history.lastNormalForce * excess / c.overlap) * n;
-                    ++summary_.oneWayReactions;
-                }
-            } else {
-                history = apart(i, j, c, arms, history, law);
-            }
-            list.oneWayHistory.set(k, history);
-        }
-        oneWay_ = false;
+    // A pair's history is about to change: in interiorPairs, saved first.
+    [[gnu::always_inline]] void noteChange(const PairList& list, std::size_t k) {
+        if (changed_) changed_->save(list.history, k);
     }
 
+    // The pairs across the downstream face of the one-way periodic box (Domain::oneWay): the force
+    // on i alone (Contacts/WallContactForces.h).
+    void oneWayPairs(PairList& list, const Domain& domain) override;
     void wallPairs(PairList& list, const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions) override {
         for (std::size_t k = 0; k < list.wallPairs.size(); ++k) wallPair(list, k, walls, motions);
     }
@@ -305,45 +318,9 @@ public:
     void allowSpeed(double maxSpeed) override { closing_ = std::max(closing_, 2 * maxSpeed * dt_); }
 
 private:
+    // One wall candidate (Contacts/WallContactForces.h).
     void wallPair(PairList& list, std::size_t k, const std::vector<Wall>& walls,
-                  const std::vector<PrescribedMotion>& motions) {
-        {
-            const std::uint32_t i = list.wallPairs[k].particle;
-            const Wall& wall = walls[list.wallPairs[k].wall];
-            if (shapes_ && p_.isShaped(i)) [[unlikely]] {
-                shapedWall(list, k, i, wall, motions);
-                return;
-            }
-            const double distance = wall.signedDistance(p_.position[i]);
-            const bool touching = distance < p_.radius[i];
-            // (A moving wall may close in faster than the particles: no shortcut for it.)
-            if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
-                distance - p_.radius[i] >= closing_)
-                return;
-            ContactHistory history = list.wallHistory.get(k);
-            const double overlap = p_.radius[i] - distance;
-            const Vec3 normal = wall.normalAt(p_.position[i]);
-            const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * normal;
-            const Vec3 wallVelocity =
-                wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
-            Arms arms;
-            ContactKinematics c = contactKinematics(normal, overlap, p_.radius[i], 0, p_.velocity[i] - wallVelocity,
-                                                    p_.angularVelocity[i], Vec3::Zero(), arms);
-            c.inverseDistance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
-            c.inverseReducedMass = p_.invMass[i];
-            c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
-            // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
-            // direction only, the mean curvature of the gap, 1/r - 1/(2R) (Theory/Superquadrics.md eq. (12)).
-            c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
-            const Law& law = laws_(p_.species[i], wall.species);
-            const std::int64_t wallIndex = -static_cast<std::int64_t>(list.wallPairs[k].wall) - 1;
-            if (touching)
-                touch(i, wallIndex, c, arms, history, law, p_.radius[i]);
-            else
-                history = apart(i, wallIndex, c, arms, history, law);
-            list.wallHistory.set(k, history);
-        }
-    }
+                  const std::vector<PrescribedMotion>& motions);
 
     // --- non-spherical particles (Theory/Superquadrics.md): defined, with their comments, in
     // Contacts/ShapedContactForces.h ---
@@ -405,12 +382,29 @@ private:
         }
     }
 
+    // Laws with rolling resistance: a torque on i and its opposite on j (Species/ContactLaws.h),
+    // and what their rolling velocity needs (ContactKinematics::relativeSpin).
+    void applyTorque(std::uint32_t i, std::int64_t j, const Vec3& torque) {
+        if (perPair_ && j >= 0 && !oneWay_) [[unlikely]] {
+            perPair_[currentPair_].torqueI += torque;
+            perPair_[currentPair_].torqueJ -= torque;
+            return;
+        }
+        p_.torque[i] += torque;
+        if (j >= 0 && !oneWay_) p_.torque[j] -= torque;
+    }
+    static void setRolling(ContactKinematics& c, const Vec3& relativeSpin, double rollingRadius) {
+        c.relativeSpin = relativeSpin;
+        c.rollingRadius = rollingRadius;
+    }
+
     [[gnu::always_inline]] void touch(std::uint32_t i, std::int64_t j, const ContactKinematics& c, const Arms& arms,
                                       ContactHistory& history, const Law& law, double smallerRadius) {
         const ContactForce f = law.force(c, history, dt_);
         history.state = ContactHistory::touching;
         history.lastNormalForce = f.normalForce;
         apply(i, j, f, c.normal, arms);
+        if constexpr (Law::rollingResistance) applyTorque(i, j, law.rollingTorque(c, history, f.normalForce, dt_));
         ++summary_.contacts;
         noteOverlap(i, j, c.overlap, smallerRadius);
         if (records_ && !oneWay_) [[unlikely]]
@@ -442,80 +436,23 @@ private:
         return history;
     }
 
-    // The batch's contacts computed (all lanes at once, vectorised), then applied to their
-    // particles and histories in the order they came, with the summary and output records.
-    void flush(PairList& list) {
-        ContactBatch& b = batch_;
-        if (b.count == 0) return;
-        b.gather(p_, previousForce_, list.history);
-        b.compute(dt_);
-        if (perPair_ || records_ || list.history.hasWarmStarts()) [[unlikely]]
-            applyBatchWithExtras(list);
-        else
-            applyBatch(list);
-        summary_.contacts += static_cast<std::size_t>(b.count);
-        b.count = 0;
-    }
-
-    // The common case of flush: forces and torques added, histories set, the largest overlap
-    // noted, nothing else. Through plain pointers that the compiler knows apart (they do not
-    // alias: separate arrays), so that a lane costs its loads, additions and stores: with the
-    // vectors' own accessors, and the rare cases' branches in the loop, it took 88 instructions
-    // a contact in a profile of the settled bed, a fifth of the settled step's.
-    void applyBatch(PairList& list) {
-        const ContactBatch& b = batch_;
-        double* __restrict force = p_.force[0].data();
-        double* __restrict torque = p_.torque[0].data();
-        double* __restrict lasting = list.history.lastingRecords();
-        ContactHistory::State* __restrict state = list.history.mutableStates();
-        double largestFraction = summary_.maxOverlapFraction;
-        for (int l = 0; l < b.count; ++l) {
-            const std::size_t i = 3 * std::size_t{b.i[l]}, j = 3 * std::size_t{b.j[l]}, k = b.k[l];
-            force[i] += b.fx[l], force[i + 1] += b.fy[l], force[i + 2] += b.fz[l];
-            force[j] -= b.fx[l], force[j + 1] -= b.fy[l], force[j + 2] -= b.fz[l];
-            torque[i] += b.tix[l], torque[i + 1] += b.tiy[l], torque[i + 2] += b.tiz[l];
-            torque[j] += b.tjx[l], torque[j + 1] += b.tjy[l], torque[j + 2] += b.tjz[l];
-            double* record = lasting + 4 * k;
-            record[0] = b.sx[l], record[1] = b.sy[l], record[2] = b.sz[l], record[3] = b.fn[l];
-            state[k] = ContactHistory::touching;
-            const double size = std::min(b.ri[l], b.rj[l]);
-            if (b.overlap[l] > largestFraction * size) [[unlikely]] {
-                noteOverlap(b.i[l], b.j[l], b.overlap[l], size);
-                largestFraction = summary_.maxOverlapFraction;
-            }
-        }
-    }
-
-    // flush with pair forces kept for sums in id order, output records or warm starts.
-    [[gnu::noinline]] void applyBatchWithExtras(PairList& list) {
-        ContactBatch& b = batch_;
-        for (int l = 0; l < b.count; ++l) {
-            const std::uint32_t i = b.i[l], j = b.j[l];
-            const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
-            if (perPair_) [[unlikely]] {
-                perPair_[b.k[l]] = {force, Vec3(b.tix[l], b.tiy[l], b.tiz[l]), Vec3(b.tjx[l], b.tjy[l], b.tjz[l])};
-            } else {
-                p_.force[i] += force;
-                p_.force[j] -= force;
-                p_.torque[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
-                p_.torque[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
-            }
-            const Vec3 spring(b.sx[l], b.sy[l], b.sz[l]);
-            list.history.set(b.k[l], {spring, b.fn[l], ContactHistory::touching});
-            noteOverlap(i, j, b.overlap[l], std::min(b.ri[l], b.rj[l]));
-            if (records_) [[unlikely]] {
-                const Vec3 n = Vec3(b.dx[l], b.dy[l], b.dz[l]).normalized();
-                ContactKinematics c{};
-                c.overlap = b.overlap[l];
-                const Vec3 tangential = force - b.fn[l] * n;
-                records_->add({i, j, p_.position[i] - (b.ri[l] - 0.5 * b.overlap[l]) * n, b.overlap[l],
-                               spring.norm(), b.fn[l], n, tangential, b.law(l).elasticEnergy(c, spring)});
-            }
-        }
-    }
+    // The batch's contacts computed, then applied in the order they came (Contacts/BatchedContactForces.h):
+    // flush, its common case applyBatch, and applyBatchWithExtras for pair forces kept, records or
+    // warm starts.
+    void flush(PairList& list);
+    void applyBatch(PairList& list);
+    [[gnu::noinline]] void applyBatchWithExtras(PairList& list);
 
     ContactBatch batch_;
     bool oneWay_ = false;  // in oneWayPairs: no reaction on j, no records
+    // The sweep's points of the step (makeSweepPoints): slots [0, pointsMade_) made, with the
+    // frame's velocity and the largest growth among them; the interior pairs done (interiorPairs)
+    // and where the histories they change are saved meanwhile.
+    bool pointsStarted_ = false, interiorDone_ = false;
+    std::size_t pointsMade_ = 0;
+    Vec3 frame_ = Vec3::Zero();
+    double growth_ = 0;
+    ContactHistoryLog* changed_ = nullptr;
     ParticleStore& p_;
     const PairTable<Law>& laws_;
     const double dt_;
@@ -544,4 +481,6 @@ void addContactForces(const ContactForceLoopArguments<Law>& arguments, PairList&
 
 }  // namespace talus::TALUS_LANES
 
+#include "Contacts/BatchedContactForces.h"
 #include "Contacts/ShapedContactForces.h"
+#include "Contacts/WallContactForces.h"

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include "Boundaries/Domain.h"
@@ -37,12 +38,15 @@ struct ContactForceLoopArguments {
     PairContribution* perPair;
 };
 
-// The force loop of one lane form (Contacts/ContactForceLoop.h ContactForceLoopInLanes).
-template <class Law>
-class ContactForceLoopOfForm {
+// The force loop of one lane form (Contacts/ContactForceLoop.h ContactForceLoopInLanes), of any
+// contact law. particlePairs is interiorPairs then restPairs (ContactForceLoop.h): a rank whose
+// ghosts are on their way computes the first part meanwhile (Parallel/RankContext.h).
+class AnyContactForceLoop {
 public:
-    virtual ~ContactForceLoopOfForm() = default;
+    virtual ~AnyContactForceLoop() = default;
     virtual void particlePairs(PairList& list, const Domain& domain, bool nearPairs) = 0;
+    virtual void interiorPairs(PairList& list, const Domain& domain, bool nearPairs, ContactHistoryLog& changed) = 0;
+    virtual void restPairs(PairList& list, const Domain& domain, bool nearPairs) = 0;
     virtual void oneWayPairs(PairList& list, const Domain& domain) = 0;
     virtual void wallPairs(PairList& list, const std::vector<Wall>& walls,
                            const std::vector<PrescribedMotion>& motions) = 0;
@@ -50,14 +54,33 @@ public:
                              const WaveRegion& region, const std::vector<Wall>& walls, const PlaceRun* nearRuns) = 0;
     virtual void allowSpeed(double maxSpeed) = 0;
 };
-
-// The loop of the form in use (Math/LaneForm.cc).
 template <class Law>
-std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>& arguments);
+class ContactForceLoopOfForm : public AnyContactForceLoop {};
+
+// The force loop of one contact law in one form: its entries (Contacts/ContactForceLoop.h), and
+// the table of them of every law of Species/ContactLaws.h.
+template <class Law>
+struct ForceLoopKernels {
+    std::unique_ptr<ContactForceLoopOfForm<Law>> (*make)(const ContactForceLoopArguments<Law>& arguments);
+    void (*addContactForces)(const ContactForceLoopArguments<Law>& arguments, PairList& list,
+                             const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
+                             const Domain& domain);
+};
+using ForceLoopKernelTable = ContactLawList::TupleOf<ForceLoopKernels>;
+// The table of the form in use (Math/LaneForm.cc).
+const ForceLoopKernelTable& forceLoopKernelsInUse();
+
+// The loop of the form in use.
+template <class Law>
+std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>& arguments) {
+    return std::get<ForceLoopKernels<Law>>(forceLoopKernelsInUse()).make(arguments);
+}
 template <class Law>
 void addContactForcesInLanes(const ContactForceLoopArguments<Law>& arguments, PairList& list,
                              const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
-                             const Domain& domain);
+                             const Domain& domain) {
+    std::get<ForceLoopKernels<Law>>(forceLoopKernelsInUse()).addContactForces(arguments, list, walls, motions, domain);
+}
 
 // The force loop over the listed pairs and wall candidates of one step, for one contact law.
 template <class Law>
@@ -91,6 +114,16 @@ public:
 private:
     std::unique_ptr<ContactForceLoopOfForm<Law>> loop_;
 };
+
+// The force loop of one step for the law of a pair table, without records or pair forces kept,
+// for spheres, and with the largest speed given later (allowSpeed): the loop a rank starts while
+// its ghosts travel (Parallel/RankContext.h).
+template <class Law>
+std::unique_ptr<AnyContactForceLoop> sphereContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt,
+                                                            const std::vector<Vec3>& previousForce,
+                                                            ContactSummary& summary) {
+    return makeContactForceLoop<Law>({p, laws, dt, 0, previousForce, summary, nullptr, nullptr, nullptr});
+}
 
 // The forces of one step: the listed pairs, the one-way pairs, the wall candidates.
 template <class Law>

@@ -1,4 +1,5 @@
-// Per-contact memory, stored with the pair list (Contacts/PairList.h): 33 bytes a listed pair.
+// Per-contact memory, stored with the pair list (Contacts/PairList.h): 33 bytes a listed pair
+// (and 24 more with a law of rolling resistance).
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,10 @@ struct ContactHistory {
     // next solve starts; multiplier 0: no solve yet. Stored only in scenes with shapes.
     Vec3 warmPoint = Vec3::Zero();
     double warmMultiplier = 0;
+    // Laws with rolling resistance (Species/LinearSpringDashpotRolling.h): the rolling spring of
+    // Theory/ContactLaws.md "Rolling resistance", zero unless touching. Stored only in scenes
+    // with such a law.
+    Vec3 rollingSpring = Vec3::Zero();
 
     bool isTouching() const { return state == touching; }
     bool isApproaching() const { return state == approaching; }
@@ -55,6 +60,8 @@ public:
         ContactHistory h{forces_[k].spring, forces_[k].lastNormalForce, states_[k]};
         if (withWarmStarts_) [[unlikely]]
             h.warmPoint = warmPoints_[k], h.warmMultiplier = warmMultipliers_[k];
+        if (withRollingSprings_) [[unlikely]]
+            h.rollingSpring = rollingSprings_[k];
         return h;
     }
     void set(std::size_t k, const ContactHistory& h) {
@@ -62,6 +69,8 @@ public:
         states_[k] = h.state;
         if (withWarmStarts_) [[unlikely]]
             warmPoints_[k] = h.warmPoint, warmMultipliers_[k] = h.warmMultiplier;
+        if (withRollingSprings_) [[unlikely]]
+            rollingSprings_[k] = h.rollingSpring;
     }
     // Keep the superquadric warm starts too (scenes with shapes; ParticleStore::enableShapes).
     void enableWarmStarts() {
@@ -70,6 +79,13 @@ public:
         warmMultipliers_.resize(size(), 0);
     }
     bool hasWarmStarts() const { return withWarmStarts_; }
+    // Keep the rolling springs too (scenes whose law has rolling resistance; SpeciesTable::
+    // keepsRollingSprings).
+    void enableRollingSprings() {
+        withRollingSprings_ = true;
+        rollingSprings_.resize(size(), Vec3::Zero());
+    }
+    bool hasRollingSprings() const { return withRollingSprings_; }
     void clearLastNormalForce(std::size_t k) { forces_[k].lastNormalForce = 0; }
     double& gapBoundOf(std::size_t k) { return forces_[k].spring.x(); }  // (ContactHistory::gapBound)
     double lastNormalForceOf(std::size_t k) const { return forces_[k].lastNormalForce; }
@@ -89,22 +105,26 @@ public:
         forces_.assign(n, {});
         states_.assign(n, ContactHistory::apart);
         if (withWarmStarts_) warmPoints_.assign(n, Vec3::Zero()), warmMultipliers_.assign(n, 0);
+        if (withRollingSprings_) rollingSprings_.assign(n, Vec3::Zero());
     }
     // Keeps the first n histories, or adds apart ones up to n.
     void resize(std::size_t n) {
         forces_.resize(n, {});
         states_.resize(n, ContactHistory::apart);
         if (withWarmStarts_) warmPoints_.resize(n, Vec3::Zero()), warmMultipliers_.resize(n, 0);
+        if (withRollingSprings_) rollingSprings_.resize(n, Vec3::Zero());
     }
     void push_back(const ContactHistory& h) {
         forces_.push_back({h.spring, h.lastNormalForce});
         states_.push_back(h.state);
         if (withWarmStarts_) warmPoints_.push_back(h.warmPoint), warmMultipliers_.push_back(h.warmMultiplier);
+        if (withRollingSprings_) rollingSprings_.push_back(h.rollingSpring);
     }
-    // An empty list of the same kind (with warm starts if this one has them).
+    // An empty list of the same kind (with warm starts and rolling springs if this one has them).
     ContactHistories emptyLike() const {
         ContactHistories h;
         if (withWarmStarts_) h.enableWarmStarts();
+        if (withRollingSprings_) h.enableRollingSprings();
         return h;
     }
 
@@ -112,12 +132,37 @@ private:
     bool withWarmStarts_ = false;
     std::vector<Vec3> warmPoints_;
     std::vector<double> warmMultipliers_;
+    bool withRollingSprings_ = false;
+    std::vector<Vec3> rollingSprings_;
     struct Forces {
         Vec3 spring = Vec3::Zero();
         double lastNormalForce = 0;
     };
     std::vector<Forces> forces_;
     std::vector<ContactHistory::State> states_;
+};
+
+// Histories as they were before a pass changed them, to be put back: the interior pairs that a
+// rank computes while its ghosts travel, on a step that turns out to rebuild the list
+// (Parallel/RankContext.h). Each pair is saved before its first change of the pass.
+class ContactHistoryLog {
+public:
+    void save(const ContactHistories& histories, std::size_t k) { entries_.push_back({k, histories.get(k)}); }
+    // Puts the saved histories back (in reverse, so that a pair saved twice gets its first) and
+    // forgets them.
+    void restore(ContactHistories& histories) {
+        for (auto e = entries_.rbegin(); e != entries_.rend(); ++e) histories.set(e->pair, e->history);
+        entries_.clear();
+    }
+    void clear() { entries_.clear(); }
+    std::size_t size() const { return entries_.size(); }
+
+private:
+    struct Entry {
+        std::size_t pair;
+        ContactHistory history;
+    };
+    std::vector<Entry> entries_;
 };
 
 }  // namespace talus

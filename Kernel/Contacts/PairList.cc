@@ -84,7 +84,9 @@ bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& part
 
 namespace {
 
-// The same history seen from the other particle: the spring turns round, an approach does not.
+// The same history seen from the other particle: the spring turns round, an approach does not,
+// nor does a rolling spring (its rolling velocity, Theory/ContactLaws.md eq. (22), is the same
+// from either side).
 // A superquadric warm start is kept relative to particle i and does not turn round: the pair
 // starts its next solve cold (from the bounding spheres), which costs iterations, not accuracy.
 ContactHistory reversed(ContactHistory h) {

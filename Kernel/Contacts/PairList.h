@@ -95,7 +95,8 @@ public:
     // until the next build: both particles owned and too far from every periodic face to cross
     // one before then, and not paired through an image. They come first, so that the force loop
     // sweeps them without the image's compare-and-shift (Contacts/PairSweep.h). 0 after any
-    // change to the pairs but a build.
+    // change to the pairs but a build. In a domain without periodic faces: all pairs, ghosts' too
+    // (there is no image to avoid).
     std::size_t interiorPairs = 0;
     std::vector<WallCandidate> wallPairs;
     ContactHistories wallHistory;
@@ -206,6 +207,12 @@ public:
         history.enableWarmStarts();
         wallHistory.enableWarmStarts();
         oneWayHistory.enableWarmStarts();
+    }
+    // Scenes whose contact law has rolling resistance: every history keeps its rolling spring.
+    void enableRollingSprings() {
+        history.enableRollingSprings();
+        wallHistory.enableRollingSprings();
+        oneWayHistory.enableRollingSprings();
     }
 
 private:

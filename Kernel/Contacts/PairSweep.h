@@ -57,12 +57,13 @@ struct SweptPairs {
 // velocity of the mobile particles, from every 16th slot (any common velocity keeps the sweep's
 // bound; the mean of a sample makes the growths small in a flow at a sixteenth of a pass). Zero
 // without mobile particles in the sample or if the sample's mean is not finite (a blow-up is
-// reported by the list's check, PairList::needsRebuild).
+// reported by the list's check, PairList::needsRebuild). Of the owned particles: on ranks the
+// ghosts' velocities may still be on their way when the sweep starts (Parallel/RankContext.h).
 inline Vec3 sweepFrameVelocity(const ParticleStore& p) {
     constexpr std::size_t stride = 16;
     Vec3 sum = Vec3::Zero();
     std::size_t mobile = 0;
-    for (std::size_t i = 0; i < p.size(); i += stride)
+    for (std::size_t i = 0; i < p.owned(); i += stride)
         if (!p.fixed[i]) sum += p.velocity[i], ++mobile;
     const Vec3 mean = mobile > 0 ? Vec3(sum / static_cast<double>(mobile)) : Vec3::Zero();
     return mean.allFinite() ? mean : Vec3::Zero();
@@ -99,6 +100,16 @@ inline bool nearPairsAreCurrent(const PairList& list, double skin) {
     const NearPairs& near = list.near;
     return near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
            near.listed == list.pairs.size() && near.skin == skin;
+}
+
+// Whether the near list, as it is, holds every pair among its interior ones (NearPairs::interior)
+// that this step's sweep picks, given the largest growth of the owned particles alone: the test
+// of useNearPairs, for the interior pairs a rank computes before its ghosts' growths are known
+// (Parallel/RankContext.h); it changes nothing (useNearPairs counts the step once all are known).
+inline bool nearPairsHoldInterior(const PairList& list, double ownedGrowth) {
+    const double skin = list.nearSkinFraction * list.skin;
+    return skin > 0 && ownedGrowth < nearAllowance(skin) && nearPairsAreCurrent(list, skin) &&
+           list.near.moved + ownedGrowth + ownedGrowth < nearAllowance(skin);
 }
 
 inline bool useNearPairs(PairList& list, double growth) {

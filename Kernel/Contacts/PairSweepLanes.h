@@ -234,17 +234,19 @@ inline void sweepIndexedPairs(const ParticlePair* pairs, const std::uint32_t* in
 }
 
 // The sweep points of a step (Contacts/PairSweep.h).
-inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& frameVelocity,
-                                 std::vector<SweepPoint>& points) {
+// Of the slots [first, last) (the points array sized for all), returning the largest growth among
+// them: on ranks the owned particles' points are made before the ghosts' states have arrived.
+inline double sweepPointsForStep(const ParticleStore& p, std::size_t first, std::size_t last, double dt,
+                                 const Vec3& frameVelocity, std::vector<SweepPoint>& points) {
     points.resize(p.size());
-    if (points.empty()) return 0;
+    if (first >= last) return 0;
     SweepPoint* __restrict out = points.data();  // (plain arrays: the loops vectorise)
     const double* __restrict radius = p.radius.data();
     const double* __restrict x = p.position[0].data();
     const double* __restrict v = p.velocity[0].data();
     const double reachPerSpeed = sweepReachMargin * dt;
     const double u0 = frameVelocity.x(), u1 = frameVelocity.y(), u2 = frameVelocity.z();
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t i = first; i < last; ++i) {
         const double w0 = v[3 * i] - u0, w1 = v[3 * i + 1] - u1, w2 = v[3 * i + 2] - u2;
         out[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2],
                   radius[i] * sweepRadiusMargin + reachPerSpeed * std::sqrt(w0 * w0 + w1 * w1 + w2 * w2)};
@@ -252,9 +254,17 @@ inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& 
     // The largest of the non-negative growths as bit patterns (the order of the values, and
     // vectorised where a floating-point maximum is not); a NaN wins.
     std::uint64_t largest = 0;
-    for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t i = first; i < last; ++i)
         largest = std::max(largest, std::bit_cast<std::uint64_t>(std::max(out[i].radius - radius[i], 0.0)));
     return std::bit_cast<double>(largest);
+}
+inline double sweepPointsForStep(const ParticleStore& p, double dt, const Vec3& frameVelocity,
+                                 std::vector<SweepPoint>& points) {
+    return sweepPointsForStep(p, 0, p.size(), dt, frameVelocity, points);
+}
+// The larger of two growths as sweepPointsForStep compares them (as bit patterns; a NaN wins).
+inline double largerGrowth(double a, double b) {
+    return std::bit_cast<double>(std::max(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b)));
 }
 
 

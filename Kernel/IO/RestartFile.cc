@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 #include <unordered_set>
 
 #include "Error.h"
@@ -112,55 +113,64 @@ private:
     InputPlace place_;
 };
 
+// A law is its name and its parameters in the order of Law::parameters (Species/ContactLaws.h);
+// flags are written as 0 or 1.
 void writeLaw(Writer& w, const ContactLaw& law) {
-    if (auto* l = std::get_if<LinearSpringDashpot>(&law))
-        w << std::string(LinearSpringDashpot::name) << l->normalStiffness << l->normalDamping << l->tangentialStiffness
-          << l->tangentialDamping << l->friction << std::uint64_t(l->treatContactEnds);
-    else if (auto* h = std::get_if<HertzMindlin>(&law))
-        w << std::string(HertzMindlin::name) << h->effectiveYoungsModulus << h->effectiveShearModulus << h->restitution
-          << h->friction << h->characteristicVelocity;
+    std::visit(
+        [&w]<class Law>(const Law& l) {
+            w << std::string(Law::name);
+            Law::parameters(l, [&w](const char*, const auto& value) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(value)>, bool>)
+                    w << std::uint64_t(value);
+                else
+                    w << value;
+            });
+        },
+        law);
 }
 
 ContactLaw readLaw(Reader& r) {
     const std::string kind = r.token("contact law");
-    if (kind == LinearSpringDashpot::name) {
-        LinearSpringDashpot l;
-        l.normalStiffness = r.real("normal stiffness");
-        l.normalDamping = r.real("normal damping");
-        l.tangentialStiffness = r.real("tangential stiffness");
-        l.tangentialDamping = r.real("tangential damping");
-        l.friction = r.real("friction");
-        l.treatContactEnds = r.flag("contact-end flag");
-        return l;
-    }
-    if (kind == HertzMindlin::name) {
-        HertzMindlin h;
-        h.effectiveYoungsModulus = r.real("effective Young's modulus");
-        h.effectiveShearModulus = r.real("effective shear modulus");
-        h.restitution = r.real("restitution");
-        h.friction = r.real("friction");
-        h.characteristicVelocity = r.real("characteristic velocity");
-        return h;
-    }
-    r.fail("unknown contact law '" + kind + "'");
+    ContactLaw law;
+    const bool known = ContactLawList::findFirst([&]<class Law>() {
+        if (kind != Law::name) return false;
+        Law l;
+        Law::parameters(l, [&r](const char* label, auto& value) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(value)>, bool>)
+                value = r.flag(label);
+            else
+                value = r.real(label);
+        });
+        law = l;
+        return true;
+    });
+    if (!known) r.fail("unknown contact law '" + kind + "'");
+    return law;
 }
 
-// (Scenes with shapes add the superquadric warm start to every history.)
-void writeHistory(Writer& w, const ContactHistory& h, bool shapes) {
+// (Scenes with shapes add the superquadric warm start to every history, scenes whose law has
+// rolling resistance the rolling spring.)
+struct HistoryExtras {
+    bool shapes, rolling;
+};
+
+void writeHistory(Writer& w, const ContactHistory& h, HistoryExtras extras) {
     w << h.spring << h.lastNormalForce << std::uint64_t(h.state);
-    if (shapes) w << h.warmPoint << h.warmMultiplier;
+    if (extras.shapes) w << h.warmPoint << h.warmMultiplier;
+    if (extras.rolling) w << h.rollingSpring;
     w.end();
 }
 
-ContactHistory readHistory(Reader& r, bool shapes) {
+ContactHistory readHistory(Reader& r, HistoryExtras extras) {
     ContactHistory h;
     h.spring = r.vec("tangential spring");
     h.lastNormalForce = r.real("last normal force");
     h.state = static_cast<ContactHistory::State>(r.count("contact state", ContactHistory::separated));
-    if (shapes) {
+    if (extras.shapes) {
         h.warmPoint = r.vec("warm-start point");
         h.warmMultiplier = r.real("warm-start multiplier");
     }
+    if (extras.rolling) h.rollingSpring = r.vec("rolling spring");
     return h;
 }
 
@@ -209,6 +219,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         }
         const ParticleStore& p = s.particles;
         const bool shapes = p.hasShapes();
+        const HistoryExtras extras{shapes, s.species.keepsRollingSprings()};
         w.key(key::shapes) << std::uint64_t(shapes) << std::uint64_t(s.shapes.size()); w.end();
         for (const Superquadric& q : s.shapes) { w.key(item) << q.semiAxes() << q.e1() << q.e2(); w.end(); }
         w.key(key::particles) << std::uint64_t(p.size()) << s.nextId; w.end();
@@ -229,17 +240,17 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
                           << std::uint64_t(l.interiorPairs); w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key(item) << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
-            writeHistory(w, l.history.get(k), shapes);
+            writeHistory(w, l.history.get(k), extras);
         }
         for (std::size_t k = 0; k < l.wallPairs.size(); ++k) {
             w.key(item) << std::uint64_t(l.wallPairs[k].particle) << std::uint64_t(l.wallPairs[k].wall);
-            writeHistory(w, l.wallHistory.get(k), shapes);
+            writeHistory(w, l.wallHistory.get(k), extras);
         }
         for (const Vec3& x : l.referencePosition) { w.key(item) << x; w.end(); }
         w.key(key::oneWayPairs) << std::uint64_t(l.oneWayPairs.size()); w.end();
         for (std::size_t k = 0; k < l.oneWayPairs.size(); ++k) {
             w.key(item) << std::uint64_t(l.oneWayPairs[k].i) << std::uint64_t(l.oneWayPairs[k].j);
-            writeHistory(w, l.oneWayHistory.get(k), shapes);
+            writeHistory(w, l.oneWayHistory.get(k), extras);
         }
         std::ostringstream random;
         random << s.random;
@@ -378,6 +389,8 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         p.enableShapes();
         t.pairList.enableWarmStarts();
     }
+    const HistoryExtras extras{shapes, t.species.keepsRollingSprings()};
+    if (extras.rolling) t.pairList.enableRollingSprings();
     // (A file of n particles has at least n lines of 23 words; a corrupt count reserves no more.)
     std::error_code noSize;
     const std::uintmax_t bytes = std::filesystem::file_size(path, noSize);
@@ -433,13 +446,13 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.index("pair particle", n), j = r.index("pair particle", n);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        l.history.push_back(readHistory(r, shapes));
+        l.history.push_back(readHistory(r, extras));
     }
     for (std::uint64_t k = 0; k < wallPairs; ++k) {
         const auto i = r.index("wall pair particle", n);
         const auto w = r.index("wall pair wall", t.walls.size());
         l.wallPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(w)});
-        l.wallHistory.push_back(readHistory(r, shapes));
+        l.wallHistory.push_back(readHistory(r, extras));
     }
     for (std::uint64_t k = 0; k < references; ++k) l.referencePosition.push_back(r.vec("reference position"));
     r.expect(key::oneWayPairs);
@@ -447,7 +460,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     for (std::uint64_t k = 0; k < oneWayPairs; ++k) {
         const auto i = r.index("one-way pair particle", n), j = r.index("one-way pair particle", n);
         l.oneWayPairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        l.oneWayHistory.push_back(readHistory(r, shapes));
+        l.oneWayHistory.push_back(readHistory(r, extras));
     }
     r.expect(key::random);
     {

@@ -44,7 +44,7 @@ private:
 };
 
 struct StepWorkspace {
-    using LawTables = std::variant<PairTable<LinearSpringDashpot>, PairTable<HertzMindlin>>;
+    using LawTables = SpeciesTable::PairTables;  // (one per law of Species/ContactLaws.h)
     LawTables laws;
     HGrid grid;
     ContactSummary summary;         // of the last force evaluation

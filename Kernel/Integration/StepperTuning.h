@@ -1,7 +1,7 @@
 // How the steppers (Integration/Integrator.h) and the force loop's sweep may advance a run:
 // switches that change speed, not physics (at most the round-off of the force sums). Set from the
 // command line (--waves, --wave-steps, --wave-strip, --waves-from, --drift-pass,
-// --near-skin-fraction, --sweep-frame, --sweep) or in a driver through settings().stepper; part
+// --near-skin-fraction, --sweep-frame, --sweep, --overlap-ghosts) or in a driver through settings().stepper; part
 // of RunSettings, which validates them. The restart file keeps the waves' steps and strip width
 // (Documentation/FileFormats/restart.md): the steps the saved run took (1: none), so that a
 // restarted run goes on as it did.
@@ -44,6 +44,10 @@ struct StepperTuning {
     bool sweepInFlowFrame = true;
     // The sweep's form (Contacts/SweepForm.h); undecided: the fastest, chosen by timing.
     SweepForm sweepForm = SweepForm::undecided;
+    // On ranks, the forces of the pairs of two owned particles computed while the ghosts' states
+    // travel (Parallel/RankContext.h); off: after they have arrived, for measurements and for the
+    // test that compares the two (the same trajectories to the bit).
+    bool overlapGhosts = true;
 
     // Waves of `steps` steps wherever the scene allows them (1: none; the strip width set before
     // stays), or in strips of stripColumns.

@@ -117,21 +117,6 @@ void makeNearPairs(PairList& list, const Vec3* position, std::size_t particleCou
 }
 SweepForm sweepForm() { return laneKernels().sweepFormInUse(); }
 
-template <class Law>
-std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>& arguments) {
-    return laneKernels().forceLoop<Law>().make(arguments);
-}
-template <class Law>
-void addContactForcesInLanes(const ContactForceLoopArguments<Law>& arguments, PairList& list,
-                             const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
-                             const Domain& domain) {
-    laneKernels().forceLoop<Law>().addContactForces(arguments, list, walls, motions, domain);
-}
-#define TALUS_FORCE_LOOP_OF(Law)                                                                                      \
-    template std::unique_ptr<ContactForceLoopOfForm<Law>> makeContactForceLoop(const ContactForceLoopArguments<Law>&); \
-    template void addContactForcesInLanes(const ContactForceLoopArguments<Law>&, PairList&, const std::vector<Wall>&,  \
-                                          const std::vector<PrescribedMotion>&, const Domain&);
-TALUS_FORCE_LOOP_OF(LinearSpringDashpot)
-TALUS_FORCE_LOOP_OF(HertzMindlin)
+const ForceLoopKernelTable& forceLoopKernelsInUse() { return laneKernels().forceLoops; }
 
 }  // namespace talus

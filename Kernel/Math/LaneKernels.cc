@@ -17,9 +17,10 @@ std::unique_ptr<ContactForceLoopOfForm<Law>> makeLoop(const ContactForceLoopArgu
     return std::make_unique<ContactForceLoopInLanes<Law>>(arguments);
 }
 
-template <class Law>
-constexpr ForceLoopKernels<Law> forceLoopOf() {
-    return {makeLoop<Law>, addContactForces<Law>};
+// The force loop of every law of the list, compiled in this form.
+template <class... Laws>
+constexpr ForceLoopKernelTable forceLoopsOf(LawList<Laws...>) {
+    return {ForceLoopKernels<Laws>{makeLoop<Laws>, addContactForces<Laws>}...};
 }
 
 }  // namespace
@@ -33,7 +34,6 @@ const LaneKernels kernels{compiledLaneForm,
                           &driftPassKernels,
                           makeNearPairs,
                           [] { return sweepForm(); },
-                          forceLoopOf<LinearSpringDashpot>(),
-                          forceLoopOf<HertzMindlin>()};
+                          forceLoopsOf(ContactLawList{})};
 
 }  // namespace talus::TALUS_LANES

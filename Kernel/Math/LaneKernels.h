@@ -16,19 +16,8 @@
 #include "Math/LaneForm.h"
 #include "Particles/DriftPass.h"
 #include "Particles/RotationBatch.h"
-#include "Species/HertzMindlin.h"
-#include "Species/LinearSpringDashpot.h"
 
 namespace talus {
-
-// The force loop of one contact law in one form (ContactForces.h).
-template <class Law>
-struct ForceLoopKernels {
-    std::unique_ptr<ContactForceLoopOfForm<Law>> (*make)(const ContactForceLoopArguments<Law>& arguments);
-    void (*addContactForces)(const ContactForceLoopArguments<Law>& arguments, PairList& list,
-                             const std::vector<Wall>& walls, const std::vector<PrescribedMotion>& motions,
-                             const Domain& domain);
-};
 
 // The drift pass of one form (Particles/DriftPass.h), defined by its own compilation of
 // Particles/DriftPass.cc.
@@ -64,17 +53,8 @@ struct LaneKernels {
                           double skin, const PeriodicImage& image, std::vector<SweepPoint>& grownScratch,
                           SweptPairs& scratch);
     SweepForm (*sweepFormInUse)();
-    // Contacts/ContactForces.h, one entry per contact law
-    ForceLoopKernels<LinearSpringDashpot> linearSpringDashpot;
-    ForceLoopKernels<HertzMindlin> hertzMindlin;
-
-    template <class Law>
-    const ForceLoopKernels<Law>& forceLoop() const {
-        if constexpr (std::is_same_v<Law, LinearSpringDashpot>)
-            return linearSpringDashpot;
-        else
-            return hertzMindlin;
-    }
+    // Contacts/ContactForces.h, one entry per contact law of Species/ContactLaws.h
+    ForceLoopKernelTable forceLoops;
 };
 
 // The table of the form in use (laneForm()).

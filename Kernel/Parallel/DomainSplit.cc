@@ -279,10 +279,11 @@ void DomainSplit::makeGhosts(ParticleStore& p, const Domain& domain, double widt
 
 namespace {
 
-// What a ghost needs from its owner each step (the force loop's inputs that change).
-template <class Store, class F>
-void forEachMovingField(Store& p, F&& f) {
-    f(p.position); f(p.velocity); f(p.angularVelocity); f(p.force);
+// What a ghost needs from its owner each step (the force loop's inputs that change), the last
+// forces from `forces`.
+template <class Store, class Forces, class F>
+void forEachMovingField(Store& p, Forces& forces, F&& f) {
+    f(p.position); f(p.velocity); f(p.angularVelocity); f(forces);
     if (p.hasShapes()) f(p.orientation);
 }
 
@@ -297,7 +298,7 @@ void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine
     if (sendTo_.empty() && receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
     std::size_t bytesPerParticle = 0;
-    forEachMovingField(p, [&](const auto& array) { bytesPerParticle += sizeof(array[0]); });
+    forEachMovingField(p, p.force, [&](const auto& array) { bytesPerParticle += sizeof(array[0]); });
     outgoing_.resize(sendTo_.size());
     for (std::size_t k = 0; k < sendTo_.size(); ++k) {
         const std::vector<std::uint32_t>& slots = sendSlots_[k];
@@ -305,7 +306,7 @@ void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine
         char* out = outgoing_[k].data();
         std::memcpy(out, mine.data(), sizeof(Agreement));
         out += sizeof(Agreement);
-        forEachMovingField(p, [&](const auto& array) {
+        forEachMovingField(p, p.force, [&](const auto& array) {
             constexpr std::size_t size = sizeof(array[0]);
             for (std::uint32_t i : slots) {
                 if (i < p.owned()) std::memcpy(out, &array[i], size);
@@ -331,14 +332,15 @@ void DomainSplit::finishGhostUpdate(Agreement& agreement) {
     }
 }
 
-void DomainSplit::applyGhostUpdate(ParticleStore& p) {
+void DomainSplit::applyGhostUpdate(ParticleStore& p, std::vector<Vec3>& lastForces) {
     if (receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
+    require(lastForces.size() == p.size(), "applyGhostUpdate: the last forces are not one per particle");
     std::size_t slot = p.owned();
     for (std::size_t k = 0; k < receiveFrom_.size(); ++k) {
         const std::size_t n = receiveCount_[k];
         const char* in = incoming_[k].data() + sizeof(Agreement);
-        forEachMovingField(p, [&](auto& array) {
+        forEachMovingField(p, lastForces, [&](auto& array) {
             const std::size_t bytes = n * sizeof(array[0]);
             std::memcpy(static_cast<void*>(array.data() + slot), in, bytes);
             in += bytes;

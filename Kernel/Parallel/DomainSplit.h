@@ -76,7 +76,9 @@ public:
     using Agreement = std::array<double, 4>;
     void startGhostUpdate(const ParticleStore& particles, const Agreement& mine);
     void finishGhostUpdate(Agreement& agreement);
-    void applyGhostUpdate(ParticleStore& particles);
+    // lastForces: where the ghosts' last forces go (the particles' force array, or the step's
+    // previousForce where the step has started its forces already: RankContext).
+    void applyGhostUpdate(ParticleStore& particles, std::vector<Vec3>& lastForces);
     bool agreesThroughGhosts() const { return partnersAreAll_; }
     // Whether a particle of this species at x, owned here, is one that no other rank needs as a
     // ghost by the width of the last makeGhosts (the neighbour list's relisting on ranks), and

@@ -12,6 +12,7 @@
 #include "IO/OutputFiles.h"
 #include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
+#include "Particles/VelocityVerlet.h"
 #include "SimulationState.h"
 
 namespace talus {
@@ -75,7 +76,8 @@ void RankContext::splitScene(SimulationState& s, bool boundariesRunOnRanks, cons
 // their histories, reorders, and makes the ghosts anew; otherwise the ghosts are brought up to
 // date.
 bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
-                                      const std::function<void()>& reorder) {
+                                      const std::function<void()>& reorder, StepWorkspace* work,
+                                      std::unique_ptr<AnyContactForceLoop>* begun) {
     ParticleStore& p = s.particles;
     PairList& list = s.pairList;
     const double dt = s.settings.timeStep;
@@ -105,12 +107,21 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     // other rank is a partner they are the agreement (no allreduce); else an allreduce runs while
     // the messages travel. One wait for both; the states are applied unless the step rebuilds.
     split_->startGhostUpdate(p, agreed);
+    // The interior pairs meanwhile, unless this rank already knows that the list goes (or that
+    // the run stops, or that its near list was unmade: moved particles). Only in periodic
+    // domains: without periodic faces the list has no interior pairs apart (PairList::interiorPairs).
+    const bool overlap = begun && work && s.settings.stepper.overlapGhosts && !s.settings.idOrderedSums &&
+                         !p.hasShapes() && s.domain.anyPeriodic() && agreed[0] == 0 && agreed[2] == 0 &&
+                         agreed[3] == 0;
+    if (overlap) beginInteriorPairs(s, *work, *begun);
     if (!split_->agreesThroughGhosts()) {
         const DomainSplit::Stopwatch watch(split_->seconds.agreement);
         world_.allReduce(agreed.data(), static_cast<int>(agreed.size()), Communicator::Reduction::max);
     }
     split_->finishGhostUpdate(agreed);
-    if (agreed[0] == 0 && agreed[2] == 0) split_->applyGhostUpdate(p);
+    const bool keep = agreed[0] == 0 && agreed[2] == 0;
+    if (overlap && !keep) undoInteriorPairs(s, *work, *begun);
+    if (keep) split_->applyGhostUpdate(p, overlap ? work->previousForce : p.force);
     if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"
@@ -128,6 +139,37 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     reorder();
     split_->makeGhosts(p, s.domain, 2 * largestRadius_ + list.skin + 2 * list.maxSpeed * dt);
     return true;
+}
+
+// As the step would start its forces after the ghost update (Simulation::computeForces), but
+// with the contact histories that the interior pairs change saved, to be put back by
+// undoInteriorPairs. The largest speed is that of the last agreement until the caller gives the
+// new one (allowSpeed: only the wall candidates read it).
+void RankContext::beginInteriorPairs(SimulationState& s, StepWorkspace& work,
+                                     std::unique_ptr<AnyContactForceLoop>& begun) {
+    ParticleStore& p = s.particles;
+    work.previousForce.swap(p.force);
+    startForcesWithGravity(p, s.gravity);
+    work.summary = ContactSummary{};
+    if (!interiorChanges_) interiorChanges_ = std::make_unique<ContactHistoryLog>();
+    interiorChanges_->clear();
+    begun = std::visit(
+        [&](const auto& laws) {
+            return sphereContactForceLoop(p, laws, s.settings.timeStep, work.previousForce, work.summary);
+        },
+        work.laws);
+    begun->interiorPairs(s.pairList, s.domain, s.motions.empty(), *interiorChanges_);
+    ++overlappedSteps_;
+}
+
+// The histories as they were, and the last forces back in the particles' array, where the
+// step takes them from after the build (the forces begun are dropped: the build starts anew).
+void RankContext::undoInteriorPairs(SimulationState& s, StepWorkspace& work,
+                                    std::unique_ptr<AnyContactForceLoop>& begun) {
+    begun.reset();
+    interiorChanges_->restore(s.pairList.history);
+    s.particles.force.swap(work.previousForce);
+    ++undoneOverlaps_;
 }
 
 // Equal particle counts (a function of the positions only, so runs stay repeatable).
@@ -199,6 +241,7 @@ PairList listOfGathered(const std::vector<CarriedHistory>& histories, const Part
                         const PairList& running, std::size_t walls) {
     PairList saved;
     if (running.history.hasWarmStarts()) saved.enableWarmStarts();
+    if (running.history.hasRollingSprings()) saved.enableRollingSprings();
     saved.skin = running.skin;
     saved.reach = running.reach;
     saved.maxSpeed = running.maxSpeed;

@@ -18,8 +18,10 @@
 
 namespace talus {
 
+class AnyContactForceLoop;
 class Boundary;
 class Communicator;
+class ContactHistoryLog;
 class DomainSplit;
 class OutputFiles;
 struct CarriedHistory;
@@ -79,8 +81,20 @@ public:
     // a rebuild, the largest speed, errors and moved positions; then either updates the ghosts
     // (returns false) or migrates, rebalances if due, calls reorder and makes the ghosts anew,
     // filling carried with the histories for the build (returns true).
+    // begun (given by a step that may: no contacts recorded, no drift pass): while the ghosts'
+    // states travel, a rank that keeps its list starts the step's forces (the last ones become
+    // work.previousForce, the new ones start from gravity) and computes its interior pairs,
+    // which read no ghost (AnyContactForceLoop::interiorPairs), in the loop it leaves in begun
+    // for the rest of the step; if another rank rebuilds the list after all, all of that is
+    // undone (begun empty), and the step computes its forces after the build as without begun.
+    // Spheres only, in a periodic domain, without sums in id order, and with --overlap-ghosts on.
     bool updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
-                             const std::function<void()>& reorder);
+                             const std::function<void()>& reorder, StepWorkspace* work = nullptr,
+                             std::unique_ptr<AnyContactForceLoop>* begun = nullptr);
+    // Steps that computed interior pairs while their ghosts travelled, and those of them undone
+    // (another rank rebuilt the list), on this rank.
+    std::uint64_t overlappedSteps() const { return overlappedSteps_; }
+    std::uint64_t undoneOverlaps() const { return undoneOverlaps_; }
     // A blow-up diagnosis (empty: none): agreed now by all ranks (collective), or with the next
     // step's neighbourhood update.
     void agreeOnOverlaps(const std::string& diagnosis);
@@ -92,6 +106,8 @@ public:
 private:
     void renumberNewParticles(SimulationState& s);
     void rebalance(SimulationState& s);
+    void beginInteriorPairs(SimulationState& s, StepWorkspace& work, std::unique_ptr<AnyContactForceLoop>& begun);
+    void undoInteriorPairs(SimulationState& s, StepWorkspace& work, std::unique_ptr<AnyContactForceLoop>& begun);
 
     Communicator& world_;
     std::unique_ptr<DomainSplit> split_;
@@ -106,6 +122,8 @@ private:
     std::uint64_t provisionalIds_ = 0;  // particles this rank added since the last renumbering
     static constexpr std::uint64_t provisionalIdBase = std::uint64_t{1} << 62;
     std::string overlapsToAgree_;  // this rank's overlap blow-up, for the next step's agreement
+    std::unique_ptr<ContactHistoryLog> interiorChanges_;  // the histories the interior pairs changed this step
+    std::uint64_t overlappedSteps_ = 0, undoneOverlaps_ = 0;
 };
 
 }  // namespace talus

@@ -14,8 +14,11 @@ void addParticleOnce(Simulation& simulation, const Vec3& position, double radius
 }
 
 void addSuperquadricOnce(Simulation& simulation, const Vec3& position, std::size_t shape, std::size_t species,
-                         const Quat& orientation) {
-    if (addsHere(simulation)) simulation.scene().addSuperquadric(position, shape, species, orientation);
+                         const Quat& orientation, const Vec3& velocity) {
+    if (addsHere(simulation))
+        simulation.scene().addSuperquadric(position, shape, species, orientation, velocity);
+    else
+        simulation.scene().enableShapes();  // (the ranks exchange particles in one layout)
 }
 
 }  // namespace talus

@@ -17,6 +17,6 @@ class Simulation;
 void addParticleOnce(Simulation& simulation, const Vec3& position, double radius, std::size_t species,
                      const Vec3& velocity = Vec3::Zero());
 void addSuperquadricOnce(Simulation& simulation, const Vec3& position, std::size_t shape, std::size_t species,
-                         const Quat& orientation);
+                         const Quat& orientation, const Vec3& velocity = Vec3::Zero());
 
 }  // namespace talus

@@ -28,12 +28,12 @@ Selection both(Selection a, Selection b) {
     return [a = std::move(a), b = std::move(b)](const ParticleStore& p, std::size_t i) { return a(p, i) && b(p, i); };
 }
 
-namespace {
-
 double particleVolume(const Simulation& s, const ParticleStore& p, std::size_t i) {
     if (p.isShaped(i)) return s.scene().shapes()[static_cast<std::size_t>(p.shape[i])].volume();
     return 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
 }
+
+namespace {
 
 // T = L.omega/2 for a rigid body, which for a sphere is |omega|^2 I/2 (0 for a fixed particle).
 double rotationalEnergy(const ParticleStore& p, std::size_t i) {

@@ -42,6 +42,8 @@ struct Totals {
     // The solid fraction of a region of the given volume that holds these particles' centres.
     double solidFraction(double regionVolume) const { return volume / regionVolume; }
 };
+// 4/3 pi r^3 of a sphere, the shape's volume of a superquadric.
+double particleVolume(const Simulation& simulation, const ParticleStore& particles, std::size_t i);
 Totals totalsOver(const Simulation& simulation, const Selection& selection = mobileParticles());
 
 // Sums of several quantities over the same particles, in one pass and one collective.

@@ -1,6 +1,8 @@
 // How a run used its ranks, for a benchmark's summary line: the rank count, the share of the
 // time loop's wall time spent on the domain split's communication (its mean over the ranks),
-// of it the ghost exchange and the agreement of all ranks, and the ghosts over all ranks.
+// of it the ghost exchange and the agreement of all ranks, the ghosts over all ranks, and the
+// steps of all ranks that computed their interior pairs while the ghosts travelled, and of those
+// the ones undone because another rank rebuilt the list (RankContext::updateNeighbourhood).
 // Collective: every rank calls it; the text is the same on all.
 #pragma once
 
@@ -10,7 +12,7 @@ namespace talus {
 
 class Simulation;
 
-// "ranks N  communication C%  ghosts G  (ghost exchange X%, agreement A%)"
+// "ranks N  communication C%  ghosts G  (ghost exchange X%, agreement A%)  overlapped S  undone U"
 std::string describeRanks(const Simulation& simulation);
 
 }  // namespace talus

@@ -79,6 +79,12 @@ std::size_t Scene::addShape(const Superquadric& shape) {
     return state_.shapes.size() - 1;
 }
 
+void Scene::enableShapes() {
+    if (state_.particles.hasShapes()) return;
+    state_.particles.enableShapes();
+    state_.pairList.enableWarmStarts();
+}
+
 std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                         const Quat& orientation, const Vec3& velocity, const Vec3& angularVelocity) {
     const std::string which = "particle " + std::to_string(state_.nextId);
@@ -86,10 +92,7 @@ std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std:
     requireValidOrientation(orientation, which);
     require(species < state_.species.size(), which + ": species " + std::to_string(species) + " does not exist");
     ParticleStore& p = state_.particles;
-    if (!p.hasShapes()) {
-        p.enableShapes();
-        state_.pairList.enableWarmStarts();
-    }
+    enableShapes();
     const Superquadric& s = state_.shapes[shape];
     const std::size_t i = addParticle(position, s.boundingRadius(), species, velocity, angularVelocity);
     const double density = state_.species[species].density;
@@ -170,6 +173,17 @@ std::size_t Scene::addWall(const Vec3& normal, const Vec3& point, std::size_t sp
     return state_.walls.size() - 1;
 }
 
+std::size_t Scene::addOpenBox(const Vec3& lo, const Vec3& hi, std::size_t species) {
+    require(isFinite(lo) && isFinite(hi) && lo.x() < hi.x() && lo.y() < hi.y(),
+            "open box: the corners must be finite, with lo below hi along x and y");
+    const std::size_t floor = addWall(Vec3::UnitZ(), lo, species);
+    addWall(Vec3::UnitX(), lo, species);
+    addWall(-Vec3::UnitX(), Vec3(hi.x(), lo.y(), lo.z()), species);
+    addWall(Vec3::UnitY(), lo, species);
+    addWall(-Vec3::UnitY(), Vec3(lo.x(), hi.y(), lo.z()), species);
+    return floor;
+}
+
 std::size_t Scene::addMotion(const PrescribedMotion& motion) {
     require(isFinite(motion.velocity) && isFinite(motion.angularVelocity) && isFinite(motion.centre),
             "prescribed motion: velocity, angular velocity and centre must be finite");
@@ -203,10 +217,8 @@ double Scene::shortestCollisionTime(std::string* which) const {
     double shortest = INFINITY;
     auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
         const ContactLaw law = state_.species.pairLaw(a, b);
-        double tc = INFINITY;
-        if (auto* l = std::get_if<LinearSpringDashpot>(&law)) tc = l->collisionTime(reducedMass);
-        if (auto* h = std::get_if<HertzMindlin>(&law))
-            tc = h->collisionTime(reducedMass, effectiveRadius, h->characteristicVelocity);
+        const double tc =
+            std::visit([&](const auto& l) { return l.collisionTimeOfPair(reducedMass, effectiveRadius); }, law);
         if (tc >= shortest) return;
         shortest = tc;
         if (which)

@@ -54,6 +54,10 @@ public:
     std::size_t addFixedSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                      const Quat& orientation = Quat::Identity(), int motion = -1);
     const std::vector<Superquadric>& shapes() const { return state_.shapes; }
+    // The store's arrays of superquadrics, which addSuperquadric makes at its first particle. On
+    // ranks each rank's store needs them once any rank has a superquadric: the ranks exchange
+    // particles in one layout (Sampling/AddedOnce.h calls it on the ranks that do not add).
+    void enableShapes();
     void removeParticle(std::size_t slot);
     // Moves a particle by a jump (a boundary's wrap, like the maser's): the neighbour list then
     // relists its pairs rather than being built anew.
@@ -70,6 +74,10 @@ public:
 
     // --- walls, motions, boundaries ---
     std::size_t addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion = -1);
+    // A box open at the top: a floor at lo.z() and side walls at lo and hi along x and y (in
+    // that order: floor, x = lo, x = hi, y = lo, y = hi), all pointing inwards. Returns the
+    // floor's index; the sides follow it.
+    std::size_t addOpenBox(const Vec3& lo, const Vec3& hi, std::size_t species);
     // The inside of a cylinder (a drum's mantle, Walls/Wall.h) of the given radius about the axis
     // through axisPoint along axisDirection; a drum turns with a motion whose centre is on the
     // axis and whose angular velocity is along it (addMotion).

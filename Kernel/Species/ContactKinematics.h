@@ -23,6 +23,9 @@ struct ContactKinematics {
     double otherAcceleration = 0;
     double effectiveRadius;    // ri rj / (ri + rj); ri for walls
     double inverseDistance;    // 1 / |ri - rj| for particle pairs; 0 for walls (advanceTangentialSpring)
+    // Laws with rolling resistance only (set by the force loop for those, else left unset):
+    Vec3 relativeSpin;         // wi - wj (walls: wi minus the wall's angular velocity)
+    double rollingRadius;      // ri rj / (ri + rj); ri for walls (Theory/ContactLaws.md eq. (21))
 
     double reducedMass() const { return 1 / inverseReducedMass; }  // mi mj / (mi + mj)
 };

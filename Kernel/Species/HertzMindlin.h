@@ -28,6 +28,17 @@ struct HertzMindlin {
     static constexpr const char* name = "HertzMindlin";
     static constexpr bool usesEffectiveRadius = true;
     static constexpr bool batched = false;  // (no lastingContactForce: ContactForceLoop computes it pair by pair)
+    static constexpr bool rollingResistance = false;
+
+    // (As LinearSpringDashpot::parameters.)
+    template <class Law, class Visit>
+    static void parameters(Law& law, Visit&& visit) {
+        visit("effective Young's modulus", law.effectiveYoungsModulus);
+        visit("effective shear modulus", law.effectiveShearModulus);
+        visit("restitution", law.restitution);
+        visit("friction", law.friction);
+        visit("characteristic velocity", law.characteristicVelocity);
+    }
 
     // Effective moduli from Young's modulus E and Poisson ratio nu of two equal materials.
     static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {
@@ -55,6 +66,11 @@ struct HertzMindlin {
             15 * reducedMass * impactSpeed * impactSpeed / (16 * effectiveYoungsModulus * std::sqrt(effectiveRadius)),
             0.4);
         return 2 * 0.4 * std::beta(0.4, 0.5) * maxOverlap / impactSpeed;
+    }
+
+    // What the time-step check compares with dt: the collision time at the characteristic velocity.
+    double collisionTimeOfPair(double reducedMass, double effectiveRadius) const {
+        return collisionTime(reducedMass, effectiveRadius, characteristicVelocity);
     }
 
     static HertzMindlin mix(const HertzMindlin& a, const HertzMindlin& b) {

@@ -24,8 +24,24 @@ struct LinearSpringDashpot {
     // LAMMPS (gran/hooke/history) and LIGGGHTS do, for comparing with them (error O(dt/tc)).
     bool treatContactEnds = true;
 
+    // The members every contact law has (Species/ContactLaws.h; Documentation/Architecture.md
+    // "Adding a part"): its name in restart files, its flags for the force loop, its parameters
+    // in the order of the restart file, the mixing rule, validate and collisionTimeOfPair.
     static constexpr const char* name = "LinearSpringDashpot";
     static constexpr bool usesEffectiveRadius = false;
+    static constexpr bool rollingResistance = false;
+
+    // visit(label, field) for each parameter, in the order of the restart file (the labels name
+    // the field in a reader's errors). Law is this law or a law built on it, const or not.
+    template <class Law, class Visit>
+    static void parameters(Law& law, Visit&& visit) {
+        visit("normal stiffness", law.normalStiffness);
+        visit("normal damping", law.normalDamping);
+        visit("tangential stiffness", law.tangentialStiffness);
+        visit("tangential damping", law.tangentialDamping);
+        visit("friction", law.friction);
+        visit("contact-end flag", law.treatContactEnds);
+    }
 
     // Theory/ContactLaws.md eq. (12) inverse formulas for a central collision of reduced mass m:
     // kn = m (pi^2 + ln(e)^2) / tc^2, gn = -2 m ln(e) / tc; and kt = 2/7 kn, gt = gn.
@@ -50,6 +66,11 @@ struct LinearSpringDashpot {
     double collisionTime(double reducedMass) const {
         const double w2 = normalStiffness / reducedMass - std::pow(normalDamping / (2 * reducedMass), 2);
         return w2 > 0 ? pi / std::sqrt(w2) : INFINITY;
+    }
+    // What the time-step check compares with dt (Theory/Integration.md "The time step and the
+    // collision time check").
+    double collisionTimeOfPair(double reducedMass, double /*effectiveRadius*/) const {
+        return collisionTime(reducedMass);
     }
     // Theory/ContactLaws.md eq. (10)-(11): e = exp(-tc gn / (2m)).
     double restitution(double reducedMass) const {

@@ -14,16 +14,9 @@
 #include <variant>
 #include <vector>
 
-#include "Species/HertzMindlin.h"
-#include "Species/LinearSpringDashpot.h"
+#include "Species/ContactLaws.h"
 
 namespace talus {
-
-using ContactLaw = std::variant<LinearSpringDashpot, HertzMindlin>;
-
-inline const char* lawName(const ContactLaw& law) {
-    return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::name; }, law);
-}
 
 struct Species {
     std::string name;
@@ -70,6 +63,17 @@ public:
 
     // Checks densities, every pair's parameters, and that all species use one kind of law.
     void validate() const;
+
+    // The pair table of the kind of law the species use (call validate first).
+    using PairTables = ContactLawList::VariantOf<PairTable>;
+    PairTables tables() const {
+        return std::visit([this]<class Law>(const Law&) -> PairTables { return table<Law>(); }, species_.at(0).law);
+    }
+    // Whether the contacts of this kind of law keep a rolling spring (ContactHistory::rollingSpring).
+    bool keepsRollingSprings() const {
+        return !species_.empty() &&
+               std::visit([]<class Law>(const Law&) { return Law::rollingResistance; }, species_[0].law);
+    }
 
     template <class Law>
     PairTable<Law> table() const {

@@ -17,15 +17,15 @@ private:
     talus::LinearSpringDashpot law_ = talus::LinearSpringDashpot::fromCollision(0.005, 0.5, 1.0);
 
     void setupInitialConditions() override {
-        setGravity(talus::Vec3(0, 0, -gravity));
-        const auto species = addSpecies("grain", 6 / talus::pi, law_);  // (mass 1 for radius 0.5)
-        addWall(talus::Vec3::UnitZ(), talus::Vec3::Zero(), species);
-        addParticle(talus::Vec3(0, 0, radius), radius, species);
+        scene().setGravity(talus::Vec3(0, 0, -gravity));
+        const auto species = scene().addSpecies("grain", 6 / talus::pi, law_);  // (mass 1 for radius 0.5)
+        scene().addWall(talus::Vec3::UnitZ(), talus::Vec3::Zero(), species);
+        scene().addParticle(talus::Vec3(0, 0, radius), radius, species);
     }
     void actionsAfterSolve() override {
-        const double mass = particles().mass[0];
+        const double mass = scene().particles().mass[0];
         const double expected = radius - mass * gravity / law_.normalStiffness;
-        const double height = particles().position[0].z();
+        const double height = scene().particles().position[0].z();
         std::printf("resting height %.15f, statics %.15f, difference %.1e\n", height, expected, height - expected);
         atRest = std::abs(height - expected) < 1e-12;
     }
@@ -33,9 +33,9 @@ private:
 
 int main(int argc, char** argv) {
     RestingSphere sphere;
-    sphere.setName("RestingSphere");
-    sphere.setTimeStep(1e-4);
-    sphere.setEndTime(2);
+    sphere.settings().name = "RestingSphere";
+    sphere.settings().timeStep = 1e-4;
+    sphere.settings().endTime = 2;
     const int status = sphere.solve(argc, argv);
     if (status != 0) return status;
     std::puts(sphere.atRest ? "at rest on its spring" : "not at the height of the statics");

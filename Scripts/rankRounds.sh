@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# 2 ranks against 1 on the benchmark chute (Documentation/Parallel.md, "Speed"), in interleaved
+# rounds: every configuration in turn, round after round, so that the host's slow spells fall on
+# all of them alike. Configurations: this build on 1 rank, on 2 ranks, on 2 ranks with
+# --overlap-ghosts off, and (if given) another build on 2 ranks; the order turns by one each
+# round. Prints a line per run (round, ranks, build, load average, wall seconds of the time loop,
+# communication shares, as Documentation/Performance/ranks-3000-idle.txt has them), then per
+# configuration the best and the median, and the ratios of the medians.
+# -n: the runs at this niceness (nice -n; below 0 needs root): on a host shared with other jobs,
+# -10 keeps the ranks from waiting for the others' turns, most of what a loaded host measures.
+#   Scripts/rankRounds.sh [-r rounds] [-t end-time] [-d data] [-n niceness] BUILD [OTHER-BUILD]
+# e.g. Scripts/rankRounds.sh -r 8 build ../before/build   (scene B, flowing start, 10000 steps)
+set -euo pipefail
+rounds=8 endTime=1 niceness=0 data=${TALUS_SHARED_DIR:-$(cd "$(dirname "$0")/../.." && pwd)/shared}/peers/data/chute_B_flowing.data
+while getopts "r:t:d:n:" option; do
+  case $option in
+    n) niceness=$OPTARG ;;
+    r) rounds=$OPTARG ;;
+    t) endTime=$OPTARG ;;
+    d) data=$OPTARG ;;
+    *) sed -n 2,12p "$0" >&2; exit 2 ;;
+  esac
+done
+shift $((OPTIND - 1))
+[ $# -ge 1 ] || { sed -n 2,12p "$0" >&2; exit 2; }
+[ -f "$data" ] || { echo "rankRounds.sh: no start file $data (-d)" >&2; exit 2; }
+program() { echo "$1/Drivers/Benchmarks/PeriodicChuteBenchmark"; }
+for build in "$@"; do
+  [ -x "$(program "$build")" ] || { echo "rankRounds.sh: no benchmark in $build (build it first)" >&2; exit 2; }
+done
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+# label ranks build extra-flags
+configs=("1rank 1 $1" "2ranks 2 $1" "2ranks-overlap-off 2 $1 --overlap-ghosts off")
+[ $# -ge 2 ] && configs+=("2ranks-other-build 2 $2")
+field() { awk -v key="$2" '{for (i = 1; i < NF; ++i) if ($i == key) print $(i + 1)}' <<< "$1" | tr -d '%,)'; }
+results=$(mktemp)
+trap 'rm -f "$results"' EXIT
+for round in $(seq "$rounds"); do
+  n=${#configs[@]}
+  for k in $(seq 0 $((n - 1))); do
+    set -- ${configs[$(((k + round - 1) % n))]}
+    label=$1 ranks=$2 build=$3
+    shift 3
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    line=$(nice -n "$niceness" mpirun --bind-to core -np "$ranks" "$(program "$build")" --data "$data" --end-time "$endTime" \
+             --progress-interval 1e9 "$@" | grep '^benchmark:')
+    echo "round $round ranks $ranks build $label load $load wall $(field "$line" wall) comm $(field "$line" communication)%" \
+         "exch $(field "$line" exchange)% agree $(field "$line" agreement)%" | tee -a "$results"
+  done
+done
+# Best and median of each configuration (walls sorted), then the ratios of the medians.
+declare -A median
+for config in "${configs[@]}"; do
+  set -- $config
+  read -r best middle count < <(awk -v c="$1" '$6 == c {print $10}' "$results" | sort -g |
+    awk '{t[NR] = $1} END {print t[1], (NR % 2 ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2), NR}')
+  median[$1]=$middle
+  printf "%-20s best %.3f s  median %.3f s  (%d runs)\n" "$1" "$best" "$middle" "$count"
+done
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+echo -n "ratios of the medians: 1 rank / 2 ranks $(ratio "${median[1rank]}" "${median[2ranks]}") (the speedup);" \
+        "overlap off / on $(ratio "${median[2ranks-overlap-off]}" "${median[2ranks]}")"
+[ -n "${median[2ranks-other-build]:-}" ] &&
+  echo -n "; other build / this build on 2 ranks $(ratio "${median[2ranks-other-build]}" "${median[2ranks]}")"
+echo
