@@ -84,7 +84,7 @@ Simulation::Simulation()
            "(a form the lane form lacks is the scalar loop). The same pairs",
            [&c](const std::string& v) { c.stepper.sweepForm = sweepFormNamed(v, "--sweep"); });
     cl.add("overlap-ghosts", "on|off",
-           "on ranks, compute the pairs of two owned particles while the ghosts travel (on, the default), or after: "
+           "on ranks, compute the pairs of two owned particles while the ghosts travel (on), or after (off, the default): "
            "the same trajectories, for measurements",
            [&c](const std::string& v) { c.stepper.overlapGhosts = CommandLine::toBool("overlap-ghosts", v); });
     cl.add("lane-form", "scalar|avx2|avx512",

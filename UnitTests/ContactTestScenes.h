@@ -25,11 +25,7 @@ using TestScene = SceneSimulation;
 // A square box of side `side` open at the top: a floor at z = 0 and four side walls, all of
 // `species` (SettlingEnergyTest.cc, ContactReportTest.cc).
 inline void addOpenBox(Simulation& s, double side, std::size_t species) {
-    s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species);
-    s.scene().addWall(Vec3::UnitX(), Vec3::Zero(), species);
-    s.scene().addWall(-Vec3::UnitX(), Vec3(side, 0, 0), species);
-    s.scene().addWall(Vec3::UnitY(), Vec3::Zero(), species);
-    s.scene().addWall(-Vec3::UnitY(), Vec3(0, side, 0), species);
+    s.scene().addOpenBox(Vec3::Zero(), Vec3(side, side, 0), species);
 }
 
 // What a head-on collision measured.

@@ -45,9 +45,10 @@ struct StepperTuning {
     // The sweep's form (Contacts/SweepForm.h); undecided: the fastest, chosen by timing.
     SweepForm sweepForm = SweepForm::undecided;
     // On ranks, the forces of the pairs of two owned particles computed while the ghosts' states
-    // travel (Parallel/RankContext.h); off: after they have arrived, for measurements and for the
-    // test that compares the two (the same trajectories to the bit).
-    bool overlapGhosts = true;
+    // travel (Parallel/RankContext.h); off (the default): after they have arrived. The same
+    // trajectories to the bit; off because the overlap made 2 ranks slower at 3000 particles
+    // (Documentation/Parallel.md "Speed").
+    bool overlapGhosts = false;
 
     // Waves of `steps` steps wherever the scene allows them (1: none; the strip width set before
     // stays), or in strips of stripColumns.

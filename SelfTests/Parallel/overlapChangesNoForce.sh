@@ -1,7 +1,7 @@
 #!/bin/bash
 # Self-test of the overlap of the ghost exchange with the interior pairs (Documentation/Parallel.md,
 # "Speed"): on ranks, the pairs of two owned particles are computed while the ghosts' states
-# travel (--overlap-ghosts on, the default), and the rest once they have arrived; with it off all
+# travel (--overlap-ghosts on; off is the default), and the rest once they have arrived; with it off all
 # pairs are computed after. The force loop sums every particle's forces in the same order either
 # way, so the two runs must write the same files to the bit. The flowing chute of the benchmark
 # (3000 spheres, 1500 steps) rebuilds its list every few hundred steps, at a step where one
