@@ -121,6 +121,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         actionsBeforeTimeStep();
         integrator_->advance(*host_, saving);
         k = last;
+        for (const auto& b : scene_->boundaries()) b->afterStep(*this);
         actionsAfterTimeStep();
         if (saving) {
             writeOutput();
@@ -216,7 +217,7 @@ void Simulation::initialise(bool restarted) {
     if (anyFile && ranks_->rank() == 0) files_ = std::make_unique<OutputFiles>(state_, restarted);
     if (ranks_->isSplit()) {
         bool boundariesRunOnRanks = true;
-        for (const Boundary* b : scene_->boundaries()) boundariesRunOnRanks = boundariesRunOnRanks && b->runsOnRanks();
+        for (const auto& b : scene_->boundaries()) boundariesRunOnRanks = boundariesRunOnRanks && b->runsOnRanks();
         ranks_->splitScene(state_, boundariesRunOnRanks, c.name);
     }
     integrator_->tune(*host_, restarted);  // (before the first list build: waves order it)

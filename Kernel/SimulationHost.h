@@ -16,9 +16,13 @@ public:
     const SimulationState& state() const override { return s_.state_; }
     StepWorkspace& workspace() override { return *s_.work_; }
     bool onRanks() const override { return s_.ranks_->isSplit(); }
-    bool hasBoundaries() const override { return !s_.scene_->boundaries().empty(); }
+    bool hasBoundaries() const override {
+        for (const auto& b : s_.scene_->boundaries())
+            if (b->actsAfterDrift()) return true;
+        return false;
+    }
     void afterDrift() override {
-        for (Boundary* b : s_.scene_->boundaries()) b->afterDrift(s_);
+        for (const auto& b : s_.scene_->boundaries()) b->afterDrift(s_);
     }
     void computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted) override {
         s_.computeForces(recordContacts, check, drifted);

@@ -1,14 +1,18 @@
 // The deletion boundary (Kernel/Boundaries/DeletionBoundary.h): it removes exactly the particles
 // past its plane, records their number, mass and volume per species, and keeps the totals across
-// a restart.
+// a restart. The scene owns it and applies it after every step (the driver calls nothing).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 
 #include "Boundaries/DeletionBoundary.h"
 #include "TestHelpers.h"
 
 using namespace talus;
+
+// Only the scene makes boundaries (Scene::addBoundary): one made elsewhere would never act.
+static_assert(!std::is_default_constructible_v<Boundary::Made>);
 
 namespace {
 
@@ -18,7 +22,7 @@ const double outflowStep = 1e-3;
 // speed 1 towards a deletion plane at x = 10.5 without touching each other; no gravity. After a
 // time t the spheres that started beyond 10.5 - t are gone.
 struct Outflow : test::SceneSimulation {
-    DeletionBoundary outlet{*this, Vec3::UnitX(), Vec3(10.5, 0, 0), 2, "outlet"};
+    DeletionBoundary& outlet = scene().addBoundary<DeletionBoundary>(*this, Vec3::UnitX(), Vec3(10.5, 0, 0), 2, "outlet");
     Outflow() {
         setup = [](SceneSimulation& s) {
             s.settings().timeStep = outflowStep;
@@ -29,7 +33,6 @@ struct Outflow : test::SceneSimulation {
             for (int k = 0; k < 10; ++k) s.scene().addParticle(Vec3(k, 0, 0), 0.2 + 0.01 * k, k % 2, Vec3(1, 0, 0));
             s.scene().addFixedParticle(Vec3(12, 0, 0), 0.2, 0);  // fixed particles stay, even past the plane
         };
-        afterStep = [this](SceneSimulation& s) { outlet.apply(s); };
     }
 };
 
@@ -84,5 +87,5 @@ TEST(DeletionBoundary, TotalsContinueAfterARestart) {
 
 TEST(DeletionBoundary, BadPlaneIsAClearError) {
     test::SceneSimulation s;
-    test::expectError([&] { DeletionBoundary(s, Vec3::Zero(), Vec3::Zero(), 1); }, {"deletion boundary", "normal"});
+    test::expectError([&] { s.scene().addBoundary<DeletionBoundary>(s, Vec3::Zero(), Vec3::Zero(), 1); }, {"deletion boundary", "normal"});
 }

@@ -18,7 +18,7 @@ const LinearSpringDashpot grainLaw = LinearSpringDashpot::fromCollision(0.05, 0.
 // A maser box [-10, 0] along x, periodic in y over [0, 4]; no gravity. `arrange` adds the
 // particles (after the species: chute 0, maser copy 1) and may activate the maser.
 struct MaserScene : test::SceneSimulation {
-    MaserBoundary maser{*this, -10, 0, 3};
+    MaserBoundary& maser = scene().addBoundary<MaserBoundary>(*this, -10, 0, 3);
     std::function<void(MaserScene&)> arrange;
     MaserScene() {
         setup = [this](SceneSimulation&) {
@@ -165,7 +165,7 @@ TEST(MaserBoundary, FirstPhaseIsAPlainPeriodicBoxBitForBit) {
     test::SceneSimulation plain;
     plain.setup = [&](test::SceneSimulation& s) { scene(s, nullptr); };
     test::SceneSimulation withMaser;
-    MaserBoundary maser(withMaser, -8, 0, 2);
+    MaserBoundary& maser = withMaser.scene().addBoundary<MaserBoundary>(withMaser, -8, 0, 2);
     withMaser.setup = [&](test::SceneSimulation& s) { scene(s, &maser); };
     const auto flags = test::stepsWithoutFiles(1e-4, 10000);
     plain.solveOrThrow(flags);

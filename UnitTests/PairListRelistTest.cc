@@ -20,7 +20,7 @@ namespace {
 // to x = 20: 100 spheres of two sizes dropped into the box slide and roll down a frictional
 // base wall under gravity tilted by 24 degrees, through the box's faces and into the chute.
 struct FedChute : test::SceneSimulation {
-    MaserBoundary maser{*this, -10, 0, 1};
+    MaserBoundary& maser = scene().addBoundary<MaserBoundary>(*this, -10, 0, 1);
     std::size_t grain = 0;
     FedChute() {
         setup = [this](SceneSimulation&) {

@@ -139,7 +139,7 @@ TEST(RunningSums, StepIntegralOfFreeFlight) {
 // An event runs once, at the step that reaches its time; after a restart past it, not again,
 // and a later one still runs.
 struct EventDriver : SceneSimulation {
-    TimedEvents events{*this, "events"};
+    TimedEvents& events = scene().addBoundary<TimedEvents>(*this, "events");
     std::vector<double> ranAt;
     EventDriver() {
         setup = threeSpheres;

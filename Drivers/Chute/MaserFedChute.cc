@@ -105,7 +105,6 @@ public:
     }
 
     void actionsAfterTimeStep() override {
-        outlet.apply(*this);
         // m vx dt of the maser's spheres per size: over the box length, the mass crossing its face.
         const ParticleQuantity momentum = [](const ParticleStore& p, std::size_t i) { return p.mass[i] * p.velocity[i].x(); };
         if (activatedAt_ >= 0)
@@ -165,8 +164,8 @@ public:
         requireOnAllRanks(*this, conserved, "mass is not conserved between the maser, the chute and the outlet");
     }
 
-    MaserBoundary maser{*this, 0, 20, chuteSpeciesCount};
-    DeletionBoundary outlet{*this, Vec3::UnitX(), Vec3(120, 0, 0), chuteSpeciesCount, "outlet"};
+    MaserBoundary& maser = scene().addBoundary<MaserBoundary>(*this, 0, 20, chuteSpeciesCount);
+    DeletionBoundary& outlet = scene().addBoundary<DeletionBoundary>(*this, Vec3::UnitX(), Vec3(120, 0, 0), chuteSpeciesCount, "outlet");
 
 private:
     // The maser's spheres; the chute's (mobile) ones with their mass, and the front.

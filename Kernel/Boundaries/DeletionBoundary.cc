@@ -7,9 +7,9 @@
 
 namespace talus {
 
-DeletionBoundary::DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
+DeletionBoundary::DeletionBoundary(Made made, Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
                                    const std::string& name)
-    : speciesMass_(species, 0), speciesVolume_(species, 0) {
+    : Boundary(made), speciesMass_(species, 0), speciesVolume_(species, 0) {
     setPlane(normal, point);
     // The plane too: a driver may set it from its flags in setupInitialConditions, which a
     // restarted run does not call.

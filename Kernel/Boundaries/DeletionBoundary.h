@@ -8,31 +8,33 @@
 #include <string>
 #include <vector>
 
+#include "Boundaries/Boundary.h"
 #include "Math/Vector.h"
 
 namespace talus {
 
 class Simulation;
 
-class DeletionBoundary {
+class DeletionBoundary : public Boundary {
 public:
-    // Deletes particles with (x - point) . normal > 0. Construct it in the driver's constructor
-    // (it registers its totals with the simulation, as flags are); `name` prefixes the totals in
-    // the restart file and must be unique among the driver's boundaries; totals are kept per
-    // species for the first `species` species.
-    DeletionBoundary(Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
+    // Deletes particles with (x - point) . normal > 0 at the end of every step (of every wave).
+    // Make it in the driver's constructor,
+    //   DeletionBoundary& outlet = scene().addBoundary<DeletionBoundary>(*this, normal, point, species, "outlet");
+    // `name` prefixes its totals in the restart file and must be unique among the driver's
+    // boundaries; totals are kept per species for the first `species` species.
+    DeletionBoundary(Made made, Simulation& s, const Vec3& normal, const Vec3& point, std::size_t species,
                      const std::string& name = "deletion");
-    DeletionBoundary(const DeletionBoundary&) = delete;  // the simulation holds references to the totals
-    DeletionBoundary& operator=(const DeletionBoundary&) = delete;
 
     // Moves the plane (before the run, for a geometry known only then).
     void setPlane(const Vec3& normal, const Vec3& point);
 
-    // Removes every mobile particle past the plane; returns how many. Call it from
-    // actionsAfterTimeStep() (every step, or every few steps: a particle past the plane of an
-    // open end touches nothing that matters). On ranks every rank calls it at the same step: each
-    // removes the particles it owns (and returns their number), the totals are summed.
+    // Removes every mobile particle past the plane; returns how many. The simulation calls it at
+    // the end of every step (of a wave's last step: a particle past the plane of an open end
+    // touches nothing that matters). On ranks every rank calls it at the same step: each removes
+    // the particles it owns (and returns their number), the totals are summed.
     std::size_t apply(Simulation& s);
+    void afterStep(Simulation& s) override { apply(s); }
+    bool runsOnRanks() const override { return true; }
 
     const Vec3& normal() const { return normal_; }
     const Vec3& point() const { return point_; }

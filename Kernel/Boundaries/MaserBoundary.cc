@@ -7,10 +7,9 @@
 
 namespace talus {
 
-MaserBoundary::MaserBoundary(Simulation& s, double lo, double hi, std::size_t species, const std::string& name)
-    : speciesCount_(species, 0), speciesMass_(species, 0) {
+MaserBoundary::MaserBoundary(Made made, Simulation& s, double lo, double hi, std::size_t species, const std::string& name)
+    : Boundary(made), speciesCount_(species, 0), speciesMass_(species, 0) {
     setBox(lo, hi);
-    s.scene().addBoundary(*this);
     s.run().keepInRestart(name + ".lo", lo_);  // (a driver sets the box in its set-up, which a restart skips)
     s.run().keepInRestart(name + ".hi", hi_);
     s.run().keepInRestart(name + ".crossings", crossings_);

@@ -30,13 +30,11 @@ class Simulation;
 class MaserBoundary : public Boundary {
 public:
     // The box spans [lo, hi] along x (it must be longer than two particle diameters: checked at
-    // activation and at every neighbour-list build). Construct it in the driver's constructor:
-    // it registers with the simulation as a boundary and its totals as kept values; totals are
-    // kept per chute species for the first `species` species; `name` prefixes them in the
-    // restart file.
-    MaserBoundary(Simulation& s, double lo, double hi, std::size_t species, const std::string& name = "maser");
-    MaserBoundary(const MaserBoundary&) = delete;  // the simulation holds references to it
-    MaserBoundary& operator=(const MaserBoundary&) = delete;
+    // activation and at every neighbour-list build). Make it in the driver's constructor,
+    //   MaserBoundary& maser = scene().addBoundary<MaserBoundary>(*this, lo, hi, species);
+    // its totals are kept in the restart file per chute species for the first `species`
+    // species; `name` prefixes them there.
+    MaserBoundary(Made made, Simulation& s, double lo, double hi, std::size_t species, const std::string& name = "maser");
 
     // Moves the box (before its species are added: for a geometry known only then, from flags).
     void setBox(double lo, double hi);
@@ -75,6 +73,7 @@ public:
     double seeded() const { return seeded_; }
     double seededMass() const { return seededMass_; }
 
+    bool actsAfterDrift() const override { return true; }
     void afterDrift(Simulation& s) override;
     // On ranks each rank copies and moves the box particles it owns; the totals are summed over
     // the ranks every step, so every rank (and the restart file) has them whole. The box may be

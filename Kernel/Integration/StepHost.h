@@ -21,7 +21,7 @@ public:
     virtual const SimulationState& state() const = 0;
     virtual StepWorkspace& workspace() = 0;
     virtual bool onRanks() const = 0;
-    // Boundaries (Boundaries/Boundary.h) act between the drift and the forces.
+    // Whether a boundary (Boundaries/Boundary.h) acts between the drift and the forces; they act.
     virtual bool hasBoundaries() const = 0;
     virtual void afterDrift() = 0;
     // The forces at the positions now (the neighbour list updated first; recordContacts: into the

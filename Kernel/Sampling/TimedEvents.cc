@@ -6,8 +6,7 @@
 
 namespace talus {
 
-TimedEvents::TimedEvents(Simulation& simulation, const std::string& name) {
-    simulation.scene().addBoundary(*this);
+TimedEvents::TimedEvents(Made made, Simulation& simulation, const std::string& name) : Boundary(made) {
     simulation.run().keepInRestart(
         name,
         [this] {

@@ -20,15 +20,15 @@ class Simulation;
 
 class TimedEvents : public Boundary {
 public:
-    TimedEvents(Simulation& simulation, const std::string& name);
-    TimedEvents(const TimedEvents&) = delete;
-    TimedEvents& operator=(const TimedEvents&) = delete;
+    // Made by the scene: TimedEvents& events = scene().addBoundary<TimedEvents>(*this, "events").
+    TimedEvents(Made made, Simulation& simulation, const std::string& name);
 
     void at(double time, std::function<void()> action);
     void at(std::function<double()> time, std::function<void()> action);
     // Whether the event registered k-th (from 0) has run.
     bool done(std::size_t k) const { return events_.at(k).done; }
 
+    bool actsAfterDrift() const override { return true; }
     void afterDrift(Simulation& simulation) override;
     bool runsOnRanks() const override { return true; }  // every rank runs every action
 

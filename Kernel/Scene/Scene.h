@@ -7,15 +7,16 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "Boundaries/Boundary.h"
 #include "SimulationState.h"
 
 namespace talus {
 
-class Boundary;
 class RankContext;
 
 class Scene {
@@ -89,10 +90,17 @@ public:
     // particles follow from the next step.
     std::vector<PrescribedMotion>& motions() { return state_.motions; }
     const std::vector<PrescribedMotion>& motions() const { return state_.motions; }
-    // A boundary that acts every step after the drift, before the forces (Boundaries/Boundary.h);
-    // boundaries register themselves, in their constructors. Not owned: it must outlive the run.
-    void addBoundary(Boundary& boundary) { boundaries_.push_back(&boundary); }
-    const std::vector<Boundary*>& boundaries() const { return boundaries_; }
+    // A boundary (Boundaries/Boundary.h) of type B, made from B's constructor arguments after the
+    // first, and owned by the scene: keep the reference, e.g.
+    //   DeletionBoundary& outlet = scene().addBoundary<DeletionBoundary>(*this, normal, point, 2, "outlet");
+    template <class B, class... Arguments>
+    B& addBoundary(Arguments&&... arguments) {
+        auto made = std::make_unique<B>(Boundary::Made{}, std::forward<Arguments>(arguments)...);
+        B& boundary = *made;
+        boundaries_.push_back(std::move(made));
+        return boundary;
+    }
+    const std::vector<std::unique_ptr<Boundary>>& boundaries() const { return boundaries_; }
 
     // The run's random generator (kept by the restart file): for insertion and the like.
     std::mt19937_64& random() { return state_.random; }
@@ -110,7 +118,7 @@ private:
 
     SimulationState& state_;
     RankContext& ranks_;
-    std::vector<Boundary*> boundaries_;
+    std::vector<std::unique_ptr<Boundary>> boundaries_;
 };
 
 }  // namespace talus
