@@ -202,7 +202,7 @@ TEST(MaserBoundary, RestartContinuesExactly) {
 
 TEST(MaserBoundary, BadSetupsAreClearErrors) {
     test::SceneSimulation s;
-    test::expectError([&] { MaserBoundary(s, 0, -1, 1); }, {"maser box", "downstream end"});
+    test::expectError([&] { s.scene().addBoundary<MaserBoundary>(s, 0, -1, 1); }, {"maser box", "downstream end"});
     MaserScene empty;
     empty.arrange = [](MaserScene& s) {
         s.scene().addParticle(Vec3(1, 1, 0), 0.5, 0);  // a chute particle only
