@@ -62,7 +62,7 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
     if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
         throw InputError(dataPath + " line " + std::to_string(frame.headerLine) + ": the frame at t = " + str(frame.time) +
                          " has " + std::to_string(n) + " particles, but the restart file describes " +
-                         std::to_string(setup_.excluded.size()) + ": its fixed particles cannot be matched (drop --fixed exclude)");
+                         std::to_string(setup_.excluded.size()) + ": its fixed particles cannot be matched (drop --fixed exclude or boundary)");
     }
     radius_.clear();
     axial_.clear();
