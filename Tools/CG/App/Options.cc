@@ -323,7 +323,8 @@ std::string usage() {
 
 Coarse-grains DEM output (.data/.fstat of Talus or MercuryDPM) into continuum fields
 (Documentation/CoarseGraining.md, Documentation/Theory/CoarseGraining.md): density, volume fraction, momentum, velocity,
-kinetic stress, contact stress, per-species density and concentration.
+kinetic stress, contact stress, the boundary's force density (InteractionForce), per-species
+density and concentration.
 
 input:
   --data FILE             particle file (default NAME.data)
