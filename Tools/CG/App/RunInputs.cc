@@ -156,6 +156,7 @@ bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
         }
         if (time < timeMin_) continue;
         if (time > timeMax_) return false;
+        if (inputs_.restart) applyRestartShapes(*inputs_.restart, frame, inputs_.dataPath);
         return true;
     }
 }

@@ -128,7 +128,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              " species only (--density d0,d1,... or --restart)");
         }
         if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
-        const double volume = frame.sphereVolume(p);
+        const double volume = frame.volumeOf(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
             lo[k] = frame.position[p][k] - halfExtent_[k];
