@@ -196,10 +196,14 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
         const double expected = ri - 0.5 * c.overlap;
         const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
-        if (std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
+        // (A superquadric's contact point lies within its bounding radius r, plus dn/2.)
+        const bool shaped = frame.isShaped(c.i);
+        if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
+                   : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
             throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
                              " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
-                             " (frame t = " + str(frame.time) + "), but r - dn/2 = " + str(expected) +
+                             " (frame t = " + str(frame.time) + "), but " +
+                             (shaped ? "its bounding radius is " + str(ri) : "r - dn/2 = " + str(expected)) +
                              ": the .fstat and .data files do not describe the same particles");
         }
         // Branch b from the far end to x_i: the partner's centre (its image next to i: the
@@ -210,8 +214,12 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         if (c.isWall()) {
             b = toCentre;
         } else {
+            // A superquadric's centre is not r - dn along the normal from the contact: the line
+            // of centres itself.
+            const Vec3& xj = frame.position[c.j];
             const double length = ri + frame.radius[c.j] - c.overlap;
-            for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
+            if (shaped || frame.isShaped(c.j)) b = minimumImage({xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]});
+            else for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
             weight = 1.0 / linesOfPair[key(c.i, c.j)];
         }
         std::array<double, 9> tensor;

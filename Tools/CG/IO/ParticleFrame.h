@@ -30,11 +30,15 @@ struct ParticleFrame {
     // restart file (IO/ParticleShapes.h), whose .data radius is their bounding radius; empty:
     // spheres.
     std::vector<double> volume;
+    // Per particle, true for a superquadric (its contact points and partners' centres are not
+    // along the contact normal at r - dn/2); empty: all spheres.
+    std::vector<bool> shaped;
     // Masses, when the caller knows them (a driver coarse-graining its own particles, of any
     // shape); empty for .data frames, whose masses come from the volume and the species density.
     std::vector<double> mass;
 
     std::size_t size() const { return radius.size(); }
+    bool isShaped(std::size_t p) const { return !shaped.empty() && shaped[p]; }
     // Particle p's volume: given, or a sphere of its radius.
     double volumeOf(std::size_t p) const { return volume.empty() ? sphereVolume(p) : volume[p]; }
     // Particle p's mass: given, or its volume times the species' density.
@@ -46,6 +50,7 @@ struct ParticleFrame {
         radius.clear();
         species.clear();
         volume.clear();
+        shaped.clear();
         mass.clear();
     }
 };

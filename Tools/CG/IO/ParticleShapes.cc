@@ -33,6 +33,7 @@ void applyRestartShapes(const RestartInfo& restart, ParticleFrame& frame, const 
                          ": their shapes cannot be matched (a frame before the last insertion? --time-min)");
     }
     frame.volume.resize(n);
+    frame.shaped.resize(n);
     for (std::size_t p = 0; p < n; ++p) {
         const RestartParticle& particle = restart.particles[p];
         const std::string line = dataPath + " line " + std::to_string(frame.headerLine + 1 + static_cast<long>(p));
@@ -44,6 +45,7 @@ void applyRestartShapes(const RestartInfo& restart, ParticleFrame& frame, const 
                              ": the files describe different particles");
         }
         frame.volume[p] = particle.shape < 0 ? frame.sphereVolume(p) : restart.shapes[particle.shape].volume();
+        frame.shaped[p] = particle.shape >= 0;
     }
 }
 
