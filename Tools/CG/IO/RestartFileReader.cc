@@ -204,6 +204,21 @@ bool valueAfter(const std::vector<std::string_view>& fields, std::string_view ke
     return false;
 }
 
+// A MercuryDPM particle line starts with its kind; those of a sphere's shape are read (mass from
+// the .data radius). A SuperQuadricParticle (`axes a b c exp1 e1 exp2 e2`) would be coarse-grained
+// as the sphere of its .data radius, a bounding radius: refused, as is a kind this reader does not
+// know.
+void requireSphericalKind(const TextFile& file, const std::vector<std::string_view>& fields) {
+    static constexpr std::string_view spheres[] = {"BaseParticle", "SphericalParticle", "LiquidFilmParticle", "ThermalParticle"};
+    const std::string_view kind = fields.empty() ? std::string_view() : fields[0];
+    if (std::find(std::begin(spheres), std::end(spheres), kind) != std::end(spheres)) return;
+    if (kind == "SuperQuadricParticle")
+        file.fail("a MercuryDPM SuperQuadricParticle: talus-cg takes superquadric shapes from Talus restart files only "
+                  "(as a sphere of its .data radius, its bounding radius, its mass and volume would be wrong)");
+    file.fail("particle of an unknown kind '" + std::string(kind) + "' (BaseParticle, SphericalParticle, LiquidFilmParticle "
+              "or ThermalParticle)");
+}
+
 // MercuryDPM restart: `Species S` then species lines with `id K density D` (mixed species have
 // idA/idB and no density), `PeriodicBoundary ... normal nx ny nz`, `Particles N` then lines
 // `BaseParticle id K ... invMass X` (X = 0 for fixed particles).
@@ -243,6 +258,7 @@ RestartInfo readMercuryRestart(TextFile& file) {
             for (long p = 0; p < count; ++p) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
                 splitFields(line, fields);
+                requireSphericalKind(file, fields);
                 if (!valueAfter(fields, "invMass", value)) file.fail("particle line without 'invMass'");
                 info.fixed.push_back(parseReal(value, file, "the inverse mass") == 0.0);
             }

@@ -245,6 +245,12 @@ TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
          "unshaped.restart line 10: expected 34 fields for a particle of a scene with shapes, found 23"},
         {"mass.restart", ellipsoid + "particles 1 1\n" + shapedParticle("0", "0.5236"),
          "mass.restart line 10: the mass 0.5236 of particle id 0 is not its species' density times the volume of its shape 0 (0.1308996939)"},
+        {"mercuryshape.restart", "MercuryDPM 1\nParticles 1\nSuperQuadricParticle id 0 indSpecies 0 axes 1 0.5 0.5 exp1 1 exp2 1\n",
+         "mercuryshape.restart line 3: a MercuryDPM SuperQuadricParticle: talus-cg takes superquadric shapes from Talus restart files "
+         "only (as a sphere of its .data radius, its bounding radius, its mass and volume would be wrong)"},
+        {"mercurykind.restart", "MercuryDPM 1\nParticles 1\nClumpParticle id 0 invMass 1\n",
+         "mercurykind.restart line 3: particle of an unknown kind 'ClumpParticle' (BaseParticle, SphericalParticle, LiquidFilmParticle "
+         "or ThermalParticle)"},
         {"version.restart", "Talus restart 8\n", "version.restart line 1: format version 8 is newer than this talus-cg reads (up to 7)"},
         {"nanradius.restart", talus + "shapes 0 0\nparticles 1 1\n   0 0.5 0.5 0.5 0 0 0 0 0 0 0 0 0 0 0 0 nan 1 1 10 0 0 -1\n",
          "nanradius.restart line 9: 'nan' for the radius is not a finite number"},
