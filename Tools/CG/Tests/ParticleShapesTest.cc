@@ -12,6 +12,7 @@
 #include "CGTestHelpers.h"
 #include "Fields/CoarseGrainer.h"
 #include "IO/DataFileReader.h"
+#include "IO/FstatFileReader.h"
 #include "IO/InputError.h"
 #include "IO/RestartFileReader.h"
 
@@ -159,4 +160,48 @@ TEST(ParticleShapes, FramesThatDoNotMatchTheRestartFile) {
     EXPECT_EQ(errorOf([&] { applyRestartShapes(info, radius[0], "radius.data"); }),
               "radius.data line 3: radius 0.6 and species 0, but the restart file's particle 1 (id 1) has radius 0.5 and "
               "species 0: the files describe different particles");
+}
+
+// The contact stress of two superquadrics spreads the force along their line of centres: its
+// integral over a depth profile (Z) is the virial f (x) b / area with b = x_i - x_j (the box's
+// area A = 20 x 20 from the .data header). Ellipsoids of semi-axes (0.8, 0.4, 0.3) at (0, 0, 0)
+// and (1.2, 0, 0.5), a contact at c = (0.7, 0, 0.2) with normal (-1, 0, 0) and fn = 2, written
+// from both sides: f on i = (-2, 0, 0), b = (-1.2, 0, -0.5), so int sigma_xx dz = 2.4/A and
+// int sigma_xz dz = 1/A. Taking them as spheres of their bounding radii would put the branch
+// (r_i + r_j - dn) n = (-1.59, 0, 0) along the normal (int sigma_xz dz = 0) and refuse the
+// contact point, 0.728 from x_i instead of r - dn/2 = 0.795.
+TEST(ParticleShapes, ContactStressBranchIsTheLineOfCentres) {
+    const SuperquadricShape ellipsoid{{0.8, 0.4, 0.3}, 1, 1};
+    const double rho = 1, m = rho * ellipsoid.volume();
+    write("pair.restart", shapedRestart(rho, "   0.8 0.4 0.3 1 1\n", 1, {{0, 0, 0.8, m, 0}, {1, 0, 0.8, m, 0}}));
+    write("pair.data", "2 1 -10 -10 -10 10 10 10\n0 0 0 0 0 0 0.8 0 0 0 0 0 0 0\n1.2 0 0.5 0 0 0 0.8 0 0 0 0 0 0 0\n");
+    write("pair.fstat", "# 1 1\n# -10 -10 -10 10 10 10\n# 0.8 0.8 0 0 0 0\n"
+                        "1 0 1 0.7 0 0.2 0.01 0 2 0 -1 0 0 0 0 0\n1 1 0 0.7 0 0.2 0.01 0 2 0 1 0 0 0 0 0\n");
+    const RestartInfo info = readRestartFile("pair.restart");
+    std::vector<ParticleFrame> frames = readAllDataFrames("pair.data");
+    applyRestartShapes(info, frames[0], "pair.data");
+    const auto contacts = readAllFstatFrames("pair.fstat");
+    CoarseGrainingSetup setup;
+    setup.speciesDensity = {rho};
+    setup.coordinates = Coordinates::fromName("Z");
+    setup.contactStress = true;
+    CoarseGrainer grainer(setup);
+    grainer.setFrame(frames[0], &contacts[0], "pair.data", "pair.fstat");
+    // The integrand is smooth between the breakpoints: the segment's ends z = 0, 0.5 and them +- w.
+    const GaussLegendre rule(20);
+    std::vector<double> z, weight;
+    rule.panels(-1.5, 2, {-1, -0.5, 0, 0.5, 1, 1.5}, z, weight);
+    std::vector<Vec3> points;
+    for (double zk : z) points.push_back({0, 0, zk});
+    std::vector<double> sums;
+    grainer.evaluate(points, sums);
+    const int fields = grainer.layout().count(), stress = grainer.layout().contactStressIndex();
+    double xx = 0, xz = 0;
+    for (std::size_t k = 0; k < z.size(); ++k) {
+        xx += weight[k] * sums[k * fields + stress + 0];
+        xz += weight[k] * sums[k * fields + stress + 2];
+    }
+    const double area = 400;
+    EXPECT_NEAR(xx * area, 2.4, 1e-12);
+    EXPECT_NEAR(xz * area, 1.0, 1e-12);
 }
