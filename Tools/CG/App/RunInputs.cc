@@ -89,7 +89,8 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
     if (!in.restartPath.empty()) {
         in.restart = readRestartFile(in.restartPath);
         log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << commaList(in.restart->speciesDensity)
-            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles\n";
+            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles"
+            << shapesSummary(*in.restart) << "\n";
     }
 
     CoarseGrainingSetup& setup = in.setup;

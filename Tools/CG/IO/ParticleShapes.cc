@@ -49,4 +49,12 @@ void applyRestartShapes(const RestartInfo& restart, ParticleFrame& frame, const 
     }
 }
 
+std::string shapesSummary(const RestartInfo& restart) {
+    std::size_t shaped = 0;
+    for (const RestartParticle& particle : restart.particles) shaped += particle.shape >= 0;
+    if (shaped == 0) return {};
+    return ", " + std::to_string(shaped) + " superquadrics of " + std::to_string(restart.shapes.size()) +
+           (restart.shapes.size() == 1 ? " shape" : " shapes") + " (mass and volume from the shape)";
+}
+
 }  // namespace talus::cg

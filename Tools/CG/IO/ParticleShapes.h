@@ -43,4 +43,8 @@ struct RestartParticle {
 // InputError naming the .data line (`dataPath`).
 void applyRestartShapes(const RestartInfo& restart, ParticleFrame& frame, const std::string& dataPath);
 
+// For the log line of the restart file: ", N superquadrics of S shapes (mass and volume from the
+// shape)", or nothing when every particle is a sphere.
+std::string shapesSummary(const RestartInfo& restart);
+
 }  // namespace talus::cg
