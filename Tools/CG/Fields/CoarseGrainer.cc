@@ -196,7 +196,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
         const double expected = ri - 0.5 * c.overlap;
         const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
-        // (A superquadric's contact point lies within its bounding radius r, plus dn/2.)
+        // (A superquadric's contact point lies within its bounding radius r, give or take the overlap.)
         const bool shaped = frame.isShaped(c.i);
         if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
                    : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
