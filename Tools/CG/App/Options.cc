@@ -330,7 +330,8 @@ input:
   --data FILE             particle file (default NAME.data)
   --fstat FILE            contact file for the contact stress (default NAME.fstat when present)
   --stress on|off         contact stress (default: on when a .fstat file is found)
-  --restart FILE|none     densities, periodic directions, fixed particles (default NAME.restart when present)
+  --restart FILE|none     densities, periodic directions, fixed particles, superquadric shapes
+                          (default NAME.restart when present)
   --density d0,d1,...     density of each species (default from the restart file, else 6/pi)
   --periodic x,y|none     periodic directions (default from the restart file, else none)
   --fixed include|exclude|boundary

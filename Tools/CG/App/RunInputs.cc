@@ -100,7 +100,8 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
     if (!in.restartPath.empty()) {
         in.restart = readRestartFile(in.restartPath);
         log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << commaList(in.restart->speciesDensity)
-            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles\n";
+            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles"
+            << shapesSummary(*in.restart) << "\n";
     }
 
     CoarseGrainingSetup& setup = in.setup;
@@ -164,6 +165,7 @@ bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
         }
         if (time < timeMin_) continue;
         if (time > timeMax_) return false;
+        if (inputs_.restart) applyRestartShapes(*inputs_.restart, frame, inputs_.dataPath);
         return true;
     }
 }

@@ -133,7 +133,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              " species only (--density d0,d1,... or --restart)");
         }
         if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
-        const double volume = frame.sphereVolume(p);
+        const double volume = frame.volumeOf(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
             lo[k] = frame.position[p][k] - halfExtent_[k];
@@ -213,10 +213,14 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
         const double expected = ri - 0.5 * c.overlap;
         const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
-        if (std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
+        // (A superquadric's contact point lies within its bounding radius r, give or take the overlap.)
+        const bool shaped = frame.isShaped(c.i);
+        if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
+                   : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
             throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
                              " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
-                             " (frame t = " + str(frame.time) + "), but r - dn/2 = " + str(expected) +
+                             " (frame t = " + str(frame.time) + "), but " +
+                             (shaped ? "its bounding radius is " + str(ri) : "r - dn/2 = " + str(expected)) +
                              ": the .fstat and .data files do not describe the same particles");
         }
         // Which side flows: a wall, or a fixed particle under --fixed boundary, is the boundary;
@@ -231,8 +235,12 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         // boundary contact.
         Vec3 xm = xi, f = c.force, b;
         if (!jBoundary && !iBoundary) {
+            // A superquadric's centre is not r - dn along the normal from the contact: the line
+            // of centres itself.
+            const Vec3& xj = frame.position[c.j];
             const double length = ri + frame.radius[c.j] - c.overlap;
-            for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
+            if (shaped || frame.isShaped(c.j)) b = minimumImage({xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]});
+            else for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
         } else if (!iBoundary) {
             b = toCentre;
         } else {
