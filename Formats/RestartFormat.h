@@ -71,6 +71,9 @@ enum WallField : int {
 // `shapes flag count`: flag 1 when the scene has superquadric particles.
 enum ShapesField : int { shapesFlag, shapeCount, shapesFields };
 
+// A shape item: a superquadric's semi-axes a b c and blockiness e1 e2.
+enum ShapeField : int { semiAxes, blockiness = semiAxes + 3, shapeFields = blockiness + 2 };
+
 // `particles count nextId`
 enum ParticlesField : int { particleCount, nextId, particlesFields };
 

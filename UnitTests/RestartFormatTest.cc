@@ -60,7 +60,7 @@ SimulationState distinctState(bool shapes) {
     ParticleStore& p = s.particles;
     if (shapes) {
         p.enableShapes();
-        s.shapes.push_back(Superquadric::ellipsoid(0.6, 0.3, 0.3));
+        s.shapes.push_back(Superquadric(4, 2, 1, 0.5, 0.75));  // (every field distinct)
     }
     for (int i = 0; i < 2; ++i) {
         const double b = 100 * (i + 1);  // particle i's values: b + 1, b + 2, ...
@@ -130,6 +130,14 @@ TEST(RestartFormat, FieldsAreWhereTheDescriptionSays) {
         ASSERT_EQ(shapesLine.size(), std::size_t(restart::shapesFields));
         EXPECT_EQ(shapesLine[restart::shapesFlag], shapes ? "1" : "0");
         EXPECT_EQ(shapesLine[restart::shapeCount], shapes ? "1" : "0");
+        if (shapes) {
+            const auto shape = wordsOf(path, restart::key::shapes, 0);
+            ASSERT_EQ(shape.size(), std::size_t(restart::shapeFields));
+            EXPECT_EQ(shape[restart::semiAxes], "4");
+            EXPECT_EQ(shape[restart::semiAxes + 2], "1");
+            EXPECT_EQ(shape[restart::blockiness], "0.5");
+            EXPECT_EQ(shape[restart::blockiness + 1], "0.75");
+        }
 
         const auto particles = wordsOf(path, restart::key::particles);
         ASSERT_EQ(particles.size(), std::size_t(restart::particlesFields));

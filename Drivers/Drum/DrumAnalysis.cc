@@ -6,8 +6,6 @@
 #include <numbers>
 #include <vector>
 
-#include "Fields/CoarseGrainer.h"
-#include "Fields/EvaluationPoints.h"
 
 namespace talus::drum {
 
@@ -34,13 +32,8 @@ MixingIndices mixingIndices(const ParticleStore& p, std::size_t sphereSpecies, d
     setup.coordinates = cg::Coordinates::fromName("XZ");
     setup.width = cg::WidthMatrix::isotropic(width);
     setup.speciesDensity.assign(speciesCount, 1.0);  // (unused: the masses are given)
-    cg::CoarseGrainer grainer(setup);
-    grainer.setFrame(bed, nullptr);
-    const std::vector<cg::Vec3> points =
-        cg::gridPoints(setup.coordinates, {cells, 1, cells}, {-extent, 0, -extent}, {extent, 0, extent});
-    std::vector<double> sums;
-    grainer.evaluate(points, sums);
-    return cg::mixingIndices(grainer.layout(), points, sums, setup.coordinates, static_cast<int>(sphereSpecies));
+    return cg::frameMixingIndices(bed, setup, {cells, 1, cells}, {-extent, 0, -extent}, {extent, 0, extent},
+                                  static_cast<int>(sphereSpecies));
 }
 
 double surfaceAngle(const ParticleStore& p, double binWidth, double centralFraction) {

@@ -15,7 +15,8 @@ namespace talus::drum {
 
 // Theory/RotatingDrum.md eq. (5)-(8): the mixing index M and segregation index S of
 // talus-cg's --mixing (Tools/CG/Fields/MixingIndex.h, Theory/CoarseGraining.md eq. (13)-(16)),
-// computed by the coarse-graining library on the bed's mobile particles with their own masses:
+// computed by the coarse-graining library (cg::frameMixingIndices: the CoarseGrainer, grid points
+// and mixingIndices of talus-cg --mixing) on the bed's mobile particles with their own masses:
 //   rho(p)   = sum_i m_i W(p - x_i) / L,  rho_s(p) the same over the spheres, phi = rho_s / rho,
 //   m        = phi ln phi + (1 - phi) ln(1 - phi),
 //   M        = -sum_p rho m / (ln 2 sum_p rho)   over the cell centres p of a regular grid,

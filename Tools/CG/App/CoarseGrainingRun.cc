@@ -213,7 +213,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                                (setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
                                                                   : std::string()) +
                                ", periodic " + periodicText(setup.periodic) + ", densities " + commaList(setup.speciesDensity) +
-                               (options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
+                               (options.fixedAsBoundary ? ", fixed particles a boundary" : options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
             if (setup.coordinates.isCylindrical()) {
                 const Coordinates& c = setup.coordinates;
                 comments.push_back("cylindrical coordinates: r = distance from the axis along " + c.coordinateName(2) + " through (" +

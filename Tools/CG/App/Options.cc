@@ -78,6 +78,16 @@ std::string canonical(const std::string& option) {
     return option;
 }
 
+// --fixed include|exclude|boundary: whether the fixed particles (of the restart file) are in the
+// particle fields, and whether their contacts with flowing particles are a boundary.
+void parseFixedParticles(const std::string& option, const std::string& mode, ProgramOptions& o) {
+    if (mode != "include" && mode != "exclude" && mode != "boundary") {
+        throw InputError(option + ": expected include, exclude or boundary, found '" + mode + "'");
+    }
+    o.excludeFixed = mode != "include";
+    o.fixedAsBoundary = mode == "boundary";
+}
+
 }  // namespace
 
 ProgramOptions parseOptions(int argc, const char* const* argv) {
@@ -160,9 +170,7 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             }
             o.densities = densities;
         } else if (option == "--fixed") {
-            const std::string mode = args.text(given);
-            if (mode != "include" && mode != "exclude") throw InputError(given + ": expected include or exclude, found '" + mode + "'");
-            o.excludeFixed = mode == "exclude";
+            parseFixedParticles(given, args.text(given), o);
         } else if (option == "--time-min") {
             o.timeMin = args.real(given);
         } else if (option == "--time-max") {
@@ -315,16 +323,23 @@ std::string usage() {
 
 Coarse-grains DEM output (.data/.fstat of Talus or MercuryDPM) into continuum fields
 (Documentation/CoarseGraining.md, Documentation/Theory/CoarseGraining.md): density, volume fraction, momentum, velocity,
-kinetic stress, contact stress, per-species density and concentration.
+kinetic stress, contact stress, the boundary's force density (InteractionForce), per-species
+density and concentration.
 
 input:
   --data FILE             particle file (default NAME.data)
   --fstat FILE            contact file for the contact stress (default NAME.fstat when present)
   --stress on|off         contact stress (default: on when a .fstat file is found)
-  --restart FILE|none     densities, periodic directions, fixed particles (default NAME.restart when present)
+  --restart FILE|none     densities, periodic directions, fixed particles, superquadric shapes
+                          (default NAME.restart when present)
   --density d0,d1,...     density of each species (default from the restart file, else 6/pi)
   --periodic x,y|none     periodic directions (default from the restart file, else none)
-  --fixed include|exclude fixed particles (from the restart file) in the particle fields (default include)
+  --fixed include|exclude|boundary
+                          fixed particles (from the restart file) in the particle fields (include,
+                          the default) or not (exclude); boundary: not, and their contacts with
+                          flowing particles act as a boundary, as walls always do: stress only from
+                          the flowing particle's centre to the contact point, the force as the
+                          InteractionForce density at the contact point
 
 coarse-graining function:
   --function NAME         Lucy (default), Gauss or Heaviside

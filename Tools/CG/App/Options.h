@@ -44,7 +44,8 @@ struct ProgramOptions {
 
     std::optional<std::array<bool, 3>> periodic;  // --periodic x,y | none
     std::optional<std::vector<double>> densities; // --density d0,d1,...
-    bool excludeFixed = false;                    // --fixed include|exclude
+    bool excludeFixed = false;                    // --fixed include|exclude|boundary (exclude, boundary)
+    bool fixedAsBoundary = false;                 // --fixed boundary (CoarseGrainingSetup::excludedAreBoundary)
 
     double timeMin = -1e300, timeMax = 1e300;     // --time-min, --time-max
     bool timeAverage = false;                     // --time-average

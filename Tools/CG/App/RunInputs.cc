@@ -16,6 +16,17 @@ bool exists(const std::string& path) {
     return !path.empty() && std::filesystem::is_regular_file(path, error);
 }
 
+// --fixed exclude|boundary: the fixed particles of the restart file.
+void applyFixedParticles(const ProgramOptions& options, RunInputs& in) {
+    if (!options.excludeFixed) return;
+    if (!in.restart) {
+        throw InputError(std::string("--fixed ") + (options.fixedAsBoundary ? "boundary" : "exclude") +
+                         ": needs a restart file to know which particles are fixed (--restart FILE)");
+    }
+    in.setup.excluded = in.restart->fixed;
+    in.setup.excludedAreBoundary = options.fixedAsBoundary;
+}
+
 }  // namespace
 
 void resolveDrumAxis(const ProgramOptions& options, RunInputs& in, std::ostream& log) {
@@ -89,7 +100,8 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
     if (!in.restartPath.empty()) {
         in.restart = readRestartFile(in.restartPath);
         log << "talus-cg: " << in.restartPath << " (" << in.restart->writer << "): densities " << commaList(in.restart->speciesDensity)
-            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles\n";
+            << ", periodic " << periodicText(in.restart->periodic) << ", " << in.restart->fixed.size() << " particles"
+            << shapesSummary(*in.restart) << "\n";
     }
 
     CoarseGrainingSetup& setup = in.setup;
@@ -108,10 +120,7 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
         setup.speciesDensity.assign(16, 6.0 / std::numbers::pi);
     }
     setup.periodic = options.periodic ? *options.periodic : in.restart ? in.restart->periodic : std::array<bool, 3>{false, false, false};
-    if (options.excludeFixed) {
-        if (!in.restart) throw InputError("--fixed exclude: needs a restart file to know which particles are fixed (--restart FILE)");
-        setup.excluded = in.restart->fixed;
-    }
+    applyFixedParticles(options, in);
 
     in.fstatPath = options.fstatPath;
     if (in.fstatPath.empty() && exists(in.base + ".fstat")) in.fstatPath = in.base + ".fstat";
@@ -156,6 +165,7 @@ bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
         }
         if (time < timeMin_) continue;
         if (time > timeMax_) return false;
+        if (inputs_.restart) applyRestartShapes(*inputs_.restart, frame, inputs_.dataPath);
         return true;
     }
 }

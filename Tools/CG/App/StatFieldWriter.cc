@@ -10,6 +10,9 @@ namespace {
 
 // MercuryDPM's fields in their order with their component counts (stat.md): our sums fill
 // VolumeFraction, Density, Momentum, MomentumFlux and (the whole contact stress) NormalStress.
+// After them comes the boundary's force density under the name and component order of
+// MercuryCG's InteractionForce (a vector X Y Z), so that readers of the 85 fields by position
+// are not disturbed.
 struct StatBlock {
     const char* name;
     int components;  // 1 scalar, 3 vector, 6 symmetric tensor, 9 tensor
@@ -19,7 +22,9 @@ constexpr StatBlock statBlocks[] = {
     {"MomentumFlux", 6}, {"DisplacementMomentumFlux", 6}, {"EnergyFlux", 3}, {"NormalStress", 9},
     {"TangentialStress", 9}, {"NormalTraction", 3}, {"TangentialTraction", 3}, {"Fabric", 6},
     {"CollisionalHeatFlux", 3}, {"Dissipation", 1}, {"Potential", 1}, {"LocalAngularMomentum", 3},
-    {"LocalAngularMomentumFlux", 9}, {"ContactCoupleStress", 9}};
+    {"LocalAngularMomentumFlux", 9}, {"ContactCoupleStress", 9}, {"InteractionForce", 3}};
+constexpr int statColumns = 88;
+constexpr int interactionForceColumn = 85;
 const char* const vectorSuffix[3] = {"X", "Y", "Z"};
 const char* const symmetricSuffix[6] = {"XX", "XY", "XZ", "YY", "YZ", "ZZ"};
 const char* const tensorSuffix[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
@@ -80,7 +85,7 @@ void StatFieldWriter::writeFrame(double firstTime, double time, const std::vecto
     if (setup_.timeAverage) std::fprintf(file_, "%.10g %.10g\n", firstTime, time);
     else std::fprintf(file_, "%.10g\n", time);
     const FieldSums& layout = setup_.layout;
-    double row[85];
+    double row[statColumns];
     for (std::size_t p = 0; p < setup_.points.size(); ++p) {
         const double* s = sums.data() + p * layout.count();
         for (double& v : row) v = 0;
@@ -88,11 +93,12 @@ void StatFieldWriter::writeFrame(double firstTime, double time, const std::vecto
         row[1] = s[FieldSums::density];
         for (int c = 0; c < 3; ++c) row[2 + c] = s[FieldSums::momentum + c];
         // MomentumFlux after VolumeFraction 1, Density 1, Momentum 3, DisplacementMomentum 3,
-        // Displacement 6: column 14 of the 85 (0-based); same component order xx xy xz yy yz zz.
+        // Displacement 6: column 14 of the 88 (0-based); same component order xx xy xz yy yz zz.
         for (int c = 0; c < 6; ++c) row[14 + c] = s[FieldSums::momentumFlux + c];
         if (layout.contactStress) {
             // NormalStress starts after DisplacementMomentumFlux 6 and EnergyFlux 3: column 29.
             for (int c = 0; c < 9; ++c) row[29 + c] = s[layout.contactStressIndex() + c];
+            for (int c = 0; c < 3; ++c) row[interactionForceColumn + c] = s[layout.interactionForceIndex() + c];
         }
         const Vec3& x = setup_.points[p];
         std::fprintf(file_, "%.16g %.16g %.16g", x[0], x[1], x[2]);

@@ -32,6 +32,11 @@ struct HeavisideShape {
 
 std::string lineOf(const std::string& path, long line) { return path + " line " + std::to_string(line); }
 
+Vec3 shifted(Vec3 v, const Vec3& shift) {
+    for (int k = 0; k < 3; ++k) v[k] += shift[k];
+    return v;
+}
+
 }  // namespace
 
 CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
@@ -105,7 +110,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         throw InputError(lineOf(dataPath, frame.headerLine) + ": the frame at t = " + str(frame.time) + " has " +
                          std::to_string(n) + " particles, but the restart file describes " +
                          std::to_string(setup_.excluded.size()) +
-                         ": its fixed particles cannot be matched (drop --fixed exclude)");
+                         ": its fixed particles cannot be matched (drop --fixed exclude or boundary)");
     }
     for (int k = 0; k < 3; ++k) {
         const double length = frame.box.length(k);
@@ -128,7 +133,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              " species only (--density d0,d1,... or --restart)");
         }
         if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
-        const double volume = frame.sphereVolume(p);
+        const double volume = frame.volumeOf(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
             lo[k] = frame.position[p][k] - halfExtent_[k];
@@ -154,16 +159,23 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
     Vec3 cellSize;
     for (int k = 0; k < 3; ++k) cellSize[k] = std::max(2 * halfExtent_[k], 1e-12);
     particleBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
-    boxLo.clear();
-    boxHi.clear();
 
     contactStart_.clear();
     contactSegment_.clear();
     contactTensor_.clear();
-    if (!setup_.contactStress || contacts == nullptr) {
+    boundaryPoint_.clear();
+    boundaryForce_.clear();
+    if (setup_.contactStress && contacts != nullptr) {
+        addContacts(frame, *contacts, dataPath, fstatPath, cellSize);
+    } else {
         contactBins_.build({}, {}, setup_.coordinates.resolvesAxes(), cellSize);
-        return;
+        boundaryBins_.build({}, {}, setup_.coordinates.resolvesAxes(), cellSize);
     }
+}
+
+void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
+                                const std::string& fstatPath, const Vec3& cellSize) {
+    const std::size_t n = frame.size();
     // A pair may be written once (Talus and MercuryDPM skip the side of a fixed particle) or
     // once from each side (fstat.md): each line counts 1/(lines of its pair), so every contact
     // counts once whichever convention the file follows.
@@ -172,7 +184,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         const auto a = static_cast<std::uint64_t>(std::min(i, j)), b = static_cast<std::uint64_t>(std::max(i, j));
         return (a << 32) | b;
     };
-    for (const ContactLine& c : contacts->contacts) {
+    for (const ContactLine& c : contacts.contacts) {
         if (c.i >= static_cast<long>(n) || c.j >= static_cast<long>(n)) {
             throw InputError(lineOf(fstatPath, c.line) + ": particle " + std::to_string(std::max(c.i, c.j)) +
                              " is not in the .data frame at t = " + str(frame.time) + " (" + std::to_string(n) +
@@ -187,7 +199,12 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         }
         return d;
     };
-    for (const ContactLine& c : contacts->contacts) {
+    // Whether particle p is part of the boundary (--fixed boundary and fixed).
+    auto inBoundary = [&](long p) {
+        return setup_.excludedAreBoundary && !setup_.excluded.empty() && setup_.excluded[static_cast<std::size_t>(p)];
+    };
+    std::vector<Vec3> segmentLo, segmentHi, pointLo, pointHi, shifts;
+    for (const ContactLine& c : contacts.contacts) {
         const Vec3& xi = frame.position[c.i];
         const double ri = frame.radius[c.i];
         // The contact point lies r_i - dn/2 from the centre of i (fstat.md): a cheap check that
@@ -196,49 +213,77 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
         const double expected = ri - 0.5 * c.overlap;
         const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
-        if (std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
+        // (A superquadric's contact point lies within its bounding radius r, give or take the overlap.)
+        const bool shaped = frame.isShaped(c.i);
+        if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
+                   : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
             throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
                              " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
-                             " (frame t = " + str(frame.time) + "), but r - dn/2 = " + str(expected) +
+                             " (frame t = " + str(frame.time) + "), but " +
+                             (shaped ? "its bounding radius is " + str(ri) : "r - dn/2 = " + str(expected)) +
                              ": the .fstat and .data files do not describe the same particles");
         }
-        // Branch b from the far end to x_i: the partner's centre (its image next to i: the
-        // normal points from j to i) for pairs, the contact point for walls
-        // (Theory/CoarseGraining.md eq. (10)).
-        Vec3 b;
-        double weight = 1;
-        if (c.isWall()) {
+        // Which side flows: a wall, or a fixed particle under --fixed boundary, is the boundary;
+        // a contact within the boundary is not part of the flow.
+        const bool iBoundary = inBoundary(c.i);
+        const bool jBoundary = c.isWall() || inBoundary(c.j);
+        if (iBoundary && jBoundary) continue;
+        const double weight = c.isWall() ? 1.0 : 1.0 / linesOfPair[key(c.i, c.j)];
+        // The flowing particle m (at x_m), the force f on it, and the branch b from the far end
+        // of the segment to x_m (Theory/CoarseGraining.md eq. (10)): the partner's centre for a
+        // pair (its image next to i: the normal points from j to i), the contact point for a
+        // boundary contact.
+        Vec3 xm = xi, f = c.force, b;
+        if (!jBoundary && !iBoundary) {
+            // A superquadric's centre is not r - dn along the normal from the contact: the line
+            // of centres itself.
+            const Vec3& xj = frame.position[c.j];
+            const double length = ri + frame.radius[c.j] - c.overlap;
+            if (shaped || frame.isShaped(c.j)) b = minimumImage({xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]});
+            else for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
+        } else if (!iBoundary) {
             b = toCentre;
         } else {
-            const double length = ri + frame.radius[c.j] - c.overlap;
-            for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
-            weight = 1.0 / linesOfPair[key(c.i, c.j)];
+            // The line describes the fixed side i: the flowing particle is j, pushed by -f.
+            xm = frame.position[c.j];
+            for (int k = 0; k < 3; ++k) f[k] = -f[k];
+            b = minimumImage({xm[0] - c.point[0], xm[1] - c.point[1], xm[2] - c.point[2]});
         }
         std::array<double, 9> tensor;
         for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) tensor[3 * r + col] = weight * c.force[r] * b[col];
+            for (int col = 0; col < 3; ++col) tensor[3 * r + col] = weight * f[r] * b[col];
         }
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(xi[k], xi[k] - b[k]) - halfExtent_[k];
-            hi[k] = std::max(xi[k], xi[k] - b[k]) + halfExtent_[k];
+            lo[k] = std::min(xm[k], xm[k] - b[k]) - halfExtent_[k];
+            hi[k] = std::max(xm[k], xm[k] - b[k]) + halfExtent_[k];
         }
         imageShifts(lo, hi, frame.box, shifts);
         for (const Vec3& shift : shifts) {
-            Vec3 start = xi, l = lo, h = hi;
-            for (int k = 0; k < 3; ++k) {
-                start[k] += shift[k];
-                l[k] += shift[k];
-                h[k] += shift[k];
-            }
-            contactStart_.push_back(start);
+            contactStart_.push_back(shifted(xm, shift));
             contactSegment_.push_back({-b[0], -b[1], -b[2]});
             contactTensor_.push_back(tensor);
-            boxLo.push_back(l);
-            boxHi.push_back(h);
+            segmentLo.push_back(shifted(lo, shift));
+            segmentHi.push_back(shifted(hi, shift));
+        }
+        if (!iBoundary && !jBoundary) continue;
+        // The boundary's force on the flowing particle, spread from the contact point x_m - b
+        // (the image of c next to x_m).
+        const Vec3 point{xm[0] - b[0], xm[1] - b[1], xm[2] - b[2]};
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = point[k] - halfExtent_[k];
+            hi[k] = point[k] + halfExtent_[k];
+        }
+        imageShifts(lo, hi, frame.box, shifts);
+        for (const Vec3& shift : shifts) {
+            boundaryPoint_.push_back(shifted(point, shift));
+            boundaryForce_.push_back({weight * f[0], weight * f[1], weight * f[2]});
+            pointLo.push_back(shifted(lo, shift));
+            pointHi.push_back(shifted(hi, shift));
         }
     }
-    contactBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
+    contactBins_.build(segmentLo, segmentHi, setup_.coordinates.resolvesAxes(), cellSize);
+    boundaryBins_.build(pointLo, pointHi, setup_.coordinates.resolvesAxes(), cellSize);
 }
 
 template <class Profile, bool Diagonal>
@@ -317,6 +362,28 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
     }
 }
 
+void CoarseGrainer::evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const {
+    const int fields = layout_.count();
+    const int first = layout_.interactionForceIndex();
+    const auto& a = setup_.width.a();
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        double* row = sums.data() + p * fields + first;
+        const auto range = boundaryBins_.sourcesNear(points[p]);
+        for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
+            const std::uint32_t c = *it;
+            const double d[3] = {points[p][0] - boundaryPoint_[c][0], points[p][1] - boundaryPoint_[c][1],
+                                 points[p][2] - boundaryPoint_[c][2]};
+            double q2 = 0;
+            for (int r = 0; r < 3; ++r) {
+                const double u = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
+                q2 += u * u;
+            }
+            const double w = scale_ * profile_.value(q2);
+            for (int k = 0; k < 3; ++k) row[k] += w * boundaryForce_[c][k];
+        }
+    }
+}
+
 void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const {
     if (cylindrical_) {
         cylindrical_->evaluate(points, sums);
@@ -336,7 +403,10 @@ void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double
                      : evaluateParticles<HeavisideShape, false>(points, sums);
             break;
     }
-    if (setup_.contactStress) evaluateContacts(points, sums);
+    if (setup_.contactStress) {
+        evaluateContacts(points, sums);
+        evaluateBoundaryForces(points, sums);
+    }
 }
 
 }  // namespace talus::cg

@@ -6,6 +6,17 @@
 // builds the sources (particles with their periodic images, contact segments) and their cell
 // lists, and evaluate() fills one row of sums per point. Cylindrical coordinates (RZ, R) are
 // handed to CylindricalCoarseGrainer, which averages over the angle around the drum axis.
+//
+// Boundaries (Weinhart, Thornton, Luding and Bokhove 2012, "From discrete particles to continuum
+// fields near a boundary", Granular Matter 14; Documentation/CoarseGraining.md "Boundaries"): a
+// contact of a flowing particle i with a wall, or with a fixed particle under --fixed boundary
+// (CoarseGrainingSetup::excludedAreBoundary), at contact point c with force f on i contributes
+//   contact stress     f (x) (r_i - c) int_0^1 W(r - r_i + s (r_i - c)) ds   (branch r_i to c only)
+//   InteractionForce   f W(r - c)
+// Since the divergence of the first is f [W(r - c) - W(r - r_i)], the two together carry the
+// force f to the particle's centre, where the momentum balance of the flow needs it:
+//   d(rho V)/dt + div(rho V V) = -div(sigma) + rho g + InteractionForce
+// (sigma = kinetic + contact stress, compressive positive as everywhere in talus-cg).
 #pragma once
 
 #include <array>
@@ -44,11 +55,16 @@ public:
 
     std::size_t particleSourceCount() const { return cylindrical_ ? cylindrical_->sourceCount() : mass_.size(); }
     std::size_t contactSourceCount() const { return contactTensor_.size(); }
+    std::size_t boundaryContactCount() const { return boundaryForce_.size(); }
 
 private:
     template <class Profile, bool Diagonal>
     void evaluateParticles(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateContacts(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    void evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    // Adds the contact lines of a frame: pair segments, boundary segments and boundary forces.
+    void addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
+                     const std::string& fstatPath, const Vec3& cellSize);
     // Shifts (one per periodic image, the original included) of a support box along the
     // periodic kernel axes that bring it into the domain box.
     void imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox& box, std::vector<Vec3>& shifts) const;
@@ -69,12 +85,17 @@ private:
     std::vector<int> species_;
     SupportBins particleBins_;
 
-    // Contact segments: from start_ along segment_ (x_j - x_i, or c - x_i for walls), carrying
+    // Contact segments: from start_ along segment_ (x_j - x_i, or c - x_i for boundary contacts), carrying
     // the tensor w f (x) b (row-major).
     std::vector<Vec3> contactStart_;
     std::vector<Vec3> contactSegment_;
     std::vector<std::array<double, 9>> contactTensor_;
     SupportBins contactBins_;
+
+    // Boundary contacts (images included): the contact point and the force on the flowing particle.
+    std::vector<Vec3> boundaryPoint_;
+    std::vector<Vec3> boundaryForce_;
+    SupportBins boundaryBins_;
 };
 
 }  // namespace talus::cg

@@ -23,6 +23,11 @@ struct CoarseGrainingSetup {
     // Per .data line: true for particles left out of the particle fields (fixed base particles
     // with --fixed exclude); empty: none left out.
     std::vector<bool> excluded;
+    // --fixed boundary: the excluded particles are a boundary, like walls (CoarseGrainer.h
+    // "Boundaries"): a contact of a flowing particle with one contributes stress only along the
+    // branch from the flowing particle's centre to the contact point, and its force to the
+    // InteractionForce density; contacts among excluded particles are left out.
+    bool excludedAreBoundary = false;
 };
 
 // How many periodic lengths a kernel may reach over along a periodic axis that it resolves. Every

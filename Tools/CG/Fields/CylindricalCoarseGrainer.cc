@@ -62,7 +62,7 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
     if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
         throw InputError(dataPath + " line " + std::to_string(frame.headerLine) + ": the frame at t = " + str(frame.time) +
                          " has " + std::to_string(n) + " particles, but the restart file describes " +
-                         std::to_string(setup_.excluded.size()) + ": its fixed particles cannot be matched (drop --fixed exclude)");
+                         std::to_string(setup_.excluded.size()) + ": its fixed particles cannot be matched (drop --fixed exclude or boundary)");
     }
     radius_.clear();
     axial_.clear();
@@ -95,7 +95,7 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
         // C2 vanish, so the choice does not enter the fields).
         const double cosine = ri > 0 ? d1 / ri : 1.0, sine = ri > 0 ? d2 / ri : 0.0;
         const Vec3 u{v[across1] * cosine + v[across2] * sine, -v[across1] * sine + v[across2] * cosine, v[axis_]};
-        const double volume = frame.sphereVolume(p);
+        const double volume = frame.volumeOf(p);
         // Images along a periodic axis whose support overlaps the box.
         for (long image = -reach; image <= reach; ++image) {
             const double si = x[axis_] + double(image) * length;

@@ -27,6 +27,7 @@ std::vector<OutputColumn> derivedColumns(const FieldSums& layout) {
     if (layout.contactStress) {
         for (auto s : tensorSuffix) columns.push_back({std::string("ContactStress") + s, "M/(L T^2)"});
         for (auto s : tensorSuffix) columns.push_back({std::string("Stress") + s, "M/(L T^2)"});
+        for (auto s : vectorSuffix) columns.push_back({std::string("InteractionForce") + s, "M/(L^2 T^2)"});
     }
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Density_s" + std::to_string(s), "M/L^3"});
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Concentration_s" + std::to_string(s), "1"});
@@ -53,6 +54,7 @@ void appendDerivedFields(const FieldSums& layout, const double* sums, std::vecto
         const double* contact = sums + layout.contactStressIndex();
         for (int c = 0; c < 9; ++c) values.push_back(contact[c]);
         for (int c = 0; c < 9; ++c) values.push_back(kinetic[c] + contact[c]);
+        for (int c = 0; c < 3; ++c) values.push_back(sums[layout.interactionForceIndex() + c]);
     }
     for (int s = 0; s < layout.species; ++s) values.push_back(sums[layout.speciesDensityIndex(s)]);
     for (int s = 0; s < layout.species; ++s) {

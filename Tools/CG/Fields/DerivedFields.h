@@ -10,6 +10,9 @@
 //   ContactStress   sigma_c (9 components, compressive positive: the force on i along the
 //                   branch from its partner to i gives a positive normal stress)
 //   Stress          sigma_k + sigma_c (when contact stress is evaluated)
+//   InteractionForce  the boundary's force density on the flow (with the contact stress;
+//                   Fields/CoarseGrainer.h "Boundaries"), so that in a steady state
+//                   -div(Stress) + rho g + InteractionForce = 0 (with rho V V for a mean flow)
 //   Concentration   phi_s = rho_s / rho, in [0, 1] (0 where rho = 0)
 //   AngularVelocity (cylindrical coordinates) angular momentum / moment of inertia about the axis
 #pragma once

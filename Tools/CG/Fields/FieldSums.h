@@ -7,6 +7,10 @@
 //   MomentumFlux (6)   K        = sum_i m_i v_i v_i W(r - r_i)   (xx xy xz yy yz zz)
 //   Density of species s (S)    = sum over particles of species s of m_i W(r - r_i)
 //   ContactStress (9, optional) = sum_contacts w_c f_c (x) b_c int_0^1 W(r - r_c + s b_c) ds
+//   InteractionForce (3, with the contact stress) = sum over boundary contacts of w_c f_c W(r - c):
+//                   the force density the boundary (walls; fixed particles with --fixed
+//                   boundary) exerts on the flowing particles, spread from the contact points c
+//                   (Weinhart et al. 2012; CoarseGrainer.h "Boundaries")
 //   cylindrical only (2):  AngularMomentum  sum_i m_i r_i u_theta,i <W>,
 //                          MomentOfInertia  sum_i m_i r_i^2 <W>   (about the drum axis)
 //
@@ -31,7 +35,8 @@ struct FieldSums {
 
     int speciesDensityIndex(int s) const { return speciesDensity + s; }
     int contactStressIndex() const { return speciesDensity + species; }  // 9 components, row-major
-    int angularMomentumIndex() const { return speciesDensity + species + (contactStress ? 9 : 0); }  // then inertia
+    int interactionForceIndex() const { return contactStressIndex() + 9; }  // 3 components
+    int angularMomentumIndex() const { return speciesDensity + species + (contactStress ? 12 : 0); }  // then inertia
     int count() const { return angularMomentumIndex() + (cylindrical ? 2 : 0); }
 };
 

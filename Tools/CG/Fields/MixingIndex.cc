@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "Fields/CoarseGrainer.h"
+#include "Fields/EvaluationPoints.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
@@ -52,6 +54,16 @@ MixingIndices mixingIndices(const FieldSums& layout, const std::vector<Vec3>& po
     result.speciesAtCore = speciesMass > 0 && result.speciesDistance < result.materialDistance;
     result.segregation = result.speciesAtCore ? result.mixing - 1 : 1 - result.mixing;
     return result;
+}
+
+MixingIndices frameMixingIndices(const ParticleFrame& frame, const CoarseGrainingSetup& setup,
+                                 const std::array<long, 3>& count, const Vec3& lo, const Vec3& hi, int species) {
+    CoarseGrainer grainer(setup);
+    grainer.setFrame(frame, nullptr);
+    const std::vector<Vec3> points = gridPoints(setup.coordinates, count, lo, hi);
+    std::vector<double> sums;
+    grainer.evaluate(points, sums);
+    return mixingIndices(grainer.layout(), points, sums, setup.coordinates, species);
 }
 
 }  // namespace talus::cg

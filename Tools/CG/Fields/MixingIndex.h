@@ -20,8 +20,10 @@
 // another composition phi_0 has M = -m(phi_0)/ln 2 < 1.
 #pragma once
 
+#include <array>
 #include <vector>
 
+#include "Fields/CoarseGrainingSetup.h"
 #include "Fields/Coordinates.h"
 #include "Fields/FieldSums.h"
 #include "IO/ParticleFrame.h"
@@ -41,5 +43,12 @@ struct MixingIndices {
 // (naming --mixing) when `species` is not one of the layout's species or there is no mass.
 MixingIndices mixingIndices(const FieldSums& layout, const std::vector<Vec3>& points, const std::vector<double>& sums,
                             const Coordinates& coordinates, int species);
+
+// M and S of one frame: its particles coarse-grained by `setup` (masses as the frame gives them,
+// ParticleFrame::massOf) at the cell centres of the regular grid of `count` cells over [lo, hi]
+// (EvaluationPoints.h gridPoints): the steps talus-cg --mixing takes for a frame (`-n`, `-x`, `-y`,
+// `-z`), for a driver to call on its particles in memory (Drivers/Drum/DrumAnalysis.h).
+MixingIndices frameMixingIndices(const ParticleFrame& frame, const CoarseGrainingSetup& setup,
+                                 const std::array<long, 3>& count, const Vec3& lo, const Vec3& hi, int species);
 
 }  // namespace talus::cg

@@ -26,21 +26,31 @@ struct ParticleFrame {
     std::vector<Vec3> velocity;
     std::vector<double> radius;
     std::vector<int> species;  // the info column, which both codes fill with the species index
+    // Volumes, when the particles are not all spheres of their radius: superquadrics of a Talus
+    // restart file (IO/ParticleShapes.h), whose .data radius is their bounding radius; empty:
+    // spheres.
+    std::vector<double> volume;
+    // Per particle, true for a superquadric (its contact points and partners' centres are not
+    // along the contact normal at r - dn/2); empty: all spheres.
+    std::vector<bool> shaped;
     // Masses, when the caller knows them (a driver coarse-graining its own particles, of any
-    // shape); empty for .data frames, whose masses come from the radius and the species density.
+    // shape); empty for .data frames, whose masses come from the volume and the species density.
     std::vector<double> mass;
 
     std::size_t size() const { return radius.size(); }
-    // Particle p's mass: given, or a sphere of its radius and the species' density.
-    double massOf(std::size_t p, double density) const {
-        return mass.empty() ? density * sphereVolume(p) : mass[p];
-    }
+    bool isShaped(std::size_t p) const { return !shaped.empty() && shaped[p]; }
+    // Particle p's volume: given, or a sphere of its radius.
+    double volumeOf(std::size_t p) const { return volume.empty() ? sphereVolume(p) : volume[p]; }
+    // Particle p's mass: given, or its volume times the species' density.
+    double massOf(std::size_t p, double density) const { return mass.empty() ? density * volumeOf(p) : mass[p]; }
     double sphereVolume(std::size_t p) const { return 4.0 / 3.0 * std::numbers::pi * radius[p] * radius[p] * radius[p]; }
     void clear() {
         position.clear();
         velocity.clear();
         radius.clear();
         species.clear();
+        volume.clear();
+        shaped.clear();
         mass.clear();
     }
 };

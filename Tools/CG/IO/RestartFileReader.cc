@@ -29,15 +29,109 @@ std::size_t reservable(long count, const TextFile& file) {
         std::min<std::uintmax_t>(static_cast<std::uintmax_t>(count), file.size() / (2 * restart::sphereFields)));
 }
 
+// `shapes FLAG Q` (restart format 5 on) and its Q lines `a b c e1 e2`: FLAG 1 when the scene has
+// superquadric particles, the one kind of shape the format knows. Returns FLAG.
+bool readShapes(TextFile& file, std::vector<std::string_view>& fields, RestartInfo& info) {
+    if (fields.size() != 1 + restart::shapesFields) file.fail("expected 'shapes FLAG COUNT'");
+    const long flag = parseCount(fields[1 + restart::shapesFlag], file, "the shapes flag");
+    if (flag > 1)
+        file.fail("shapes flag " + std::to_string(flag) + ": an unknown kind of shapes (0: spheres only, 1: superquadrics)");
+    const long count = parseCount(fields[1 + restart::shapeCount], file, "the shape count");
+    std::string line;
+    for (long k = 0; k < count; ++k) {
+        if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the shape list (truncated file?)");
+        splitFields(line, fields);
+        if (fields.size() != restart::shapeFields)
+            file.fail("expected a superquadric 'a b c e1 e2' (" + std::to_string(restart::shapeFields) + " numbers) for shape " +
+                      std::to_string(k) + ", found " + std::to_string(fields.size()) + " fields: an unknown kind of shape");
+        SuperquadricShape shape;
+        for (int axis = 0; axis < 3; ++axis) {
+            shape.semiAxes[axis] = parseReal(fields[restart::semiAxes + axis], file, "a semi-axis of shape " + std::to_string(k));
+            if (!(shape.semiAxes[axis] > 0)) file.fail("the semi-axes of shape " + std::to_string(k) + " must be positive");
+        }
+        shape.e1 = parseReal(fields[restart::blockiness], file, "the blockiness e1 of shape " + std::to_string(k));
+        shape.e2 = parseReal(fields[restart::blockiness + 1], file, "the blockiness e2 of shape " + std::to_string(k));
+        // Theory/Superquadrics.md eq. (1): convex for 0 < e1, e2 <= 1, the shapes the kernel simulates.
+        if (!(shape.e1 > 0 && shape.e1 <= 1 && shape.e2 > 0 && shape.e2 <= 1))
+            file.fail("the blockiness e1 = " + str(shape.e1) + ", e2 = " + str(shape.e2) + " of shape " + std::to_string(k) +
+                      " is outside (0, 1]: not a convex superquadric");
+        info.shapes.push_back(shape);
+    }
+    return flag == 1;
+}
+
+// The orientation and shape index of a particle line of a scene with shapes; the mass the kernel
+// gave a superquadric is its density times the shape's volume (Kernel/Scene/Scene.cc
+// addSuperquadric), the same expression as SuperquadricShape::volume: a file whose masses
+// disagree is not one the kernel wrote.
+void readShapedParticle(const TextFile& file, const std::vector<std::string_view>& fields, const RestartInfo& info,
+                        RestartParticle& particle) {
+    const std::string which = "particle id " + std::to_string(particle.id);
+    double norm2 = 0;
+    for (int k = 0; k < 4; ++k) {
+        particle.orientation[k] = parseReal(fields[restart::orientation + k], file, "the orientation of " + which);
+        norm2 += particle.orientation[k] * particle.orientation[k];
+    }
+    // (Particles/RigidBodyRotation.h: the kernel's orientations are normalised to 1e-6.)
+    if (!(std::abs(std::sqrt(norm2) - 1) <= 1e-6))
+        file.fail("the orientation quaternion of " + which + " has length " + str(std::sqrt(norm2)) + ", not 1");
+    const long shape = parseInteger(fields[restart::shape], file, "the shape index of " + which);
+    if (shape < -1 || shape >= static_cast<long>(info.shapes.size()))
+        file.fail(which + " has shape " + std::to_string(shape) + ", which is no shape of the file (it has " +
+                  std::to_string(info.shapes.size()) + "; -1: a sphere)");
+    particle.shape = static_cast<int>(shape);
+    if (shape < 0) return;
+    const double mass = info.speciesDensity[particle.species] * info.shapes[particle.shape].volume();
+    if (!(std::abs(particle.mass - mass) <= 1e-12 * mass))
+        file.fail("the mass " + str(particle.mass) + " of " + which + " is not its species' density times the volume of its shape " +
+                  std::to_string(shape) + " (" + str(mass) + ")");
+}
+
+// `particles N nextId` and its N lines (23 fields, 34 in a scene with shapes: Formats/RestartFormat.h),
+// kept in ascending id, the order of the .data lines (data.md).
+void readParticles(TextFile& file, std::vector<std::string_view>& fields, bool shaped, RestartInfo& info) {
+    if (fields.size() != 1 + restart::particlesFields) file.fail("expected 'particles COUNT NEXTID'");
+    const long count = parseCount(fields[1 + restart::particleCount], file, "the particle count");
+    const std::size_t expected = shaped ? restart::shapedFields : restart::sphereFields;
+    std::vector<std::pair<RestartParticle, bool>> particles;  // (particle, fixed)
+    particles.reserve(reservable(count, file));
+    std::string line;
+    for (long p = 0; p < count; ++p) {
+        if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
+        splitFields(line, fields);
+        if (fields.size() != expected)
+            file.fail("expected " + std::to_string(expected) + " fields for a particle" + (shaped ? " of a scene with shapes" : "") +
+                      ", found " + std::to_string(fields.size()));
+        RestartParticle particle;
+        particle.id = parseCount(fields[restart::id], file, "the particle id");
+        const std::string which = "particle id " + std::to_string(particle.id);
+        particle.radius = parseReal(fields[restart::radius], file, "the radius");
+        particle.mass = parseReal(fields[restart::mass], file, "the mass");
+        if (!(particle.radius > 0 && particle.mass > 0)) file.fail("the radius and mass of " + which + " must be positive");
+        const long species = parseCount(fields[restart::particleSpecies], file, "the species");
+        if (species >= static_cast<long>(info.speciesDensity.size()))
+            file.fail(which + ": species " + std::to_string(species) + " is not in the species list (" +
+                      std::to_string(info.speciesDensity.size()) + " species)");
+        particle.species = static_cast<int>(species);
+        if (shaped) readShapedParticle(file, fields, info, particle);
+        particles.emplace_back(particle, parseFlag(fields[restart::fixed], file, "the fixed flag"));
+    }
+    std::sort(particles.begin(), particles.end(), [](const auto& a, const auto& b) { return a.first.id < b.first.id; });
+    for (const auto& [particle, fixed] : particles) {
+        info.particles.push_back(particle);
+        info.fixed.push_back(fixed);
+    }
+}
+
 // Talus restart formats 4 to 7 (restart.md; the fields by the names of Formats/RestartFormat.h):
 // `domain lo(3) hi(3) px py pz`, `species S` + S lines `name density law...`, `walls W` + W
-// lines, `shapes S Q`, `particles N nextId` + N lines of 23 fields (spheres only).
+// lines, `shapes FLAG Q` + Q lines, `particles N nextId` + N lines.
 RestartInfo readTalusRestart(TextFile& file) {
     RestartInfo info;
     info.writer = "Talus";
     std::string line;
     std::vector<std::string_view> fields;
-    bool sawDomain = false, sawSpecies = false, sawParticles = false;
+    bool sawDomain = false, sawSpecies = false, sawParticles = false, shaped = false;
     while (file.nextLine(line)) {
         splitFields(line, fields);
         if (fields.empty()) continue;
@@ -85,31 +179,9 @@ RestartInfo readTalusRestart(TextFile& file) {
                 if (wall.radius > 0) info.cylinders.push_back(wall);
             }
         } else if (fields[0] == restart::key::shapes) {
-            // Restart format 5: `shapes S Q`, S = 1 when the scene has superquadric particles. The
-            // fields here treat every particle as a sphere of its .data radius (mass, volume, the
-            // branch vectors of the contact stress), which for a superquadric is its bounding
-            // radius: refused rather than silently wrong.
-            if (fields.size() != 1 + restart::shapesFields) file.fail("expected 'shapes FLAG COUNT'");
-            if (parseFlag(fields[1 + restart::shapesFlag], file, "the shapes flag"))
-                file.fail("the run has superquadric particles (Documentation/Superquadrics/Superquadrics.md); "
-                          "talus-cg coarse-grains spheres only so far");
+            shaped = readShapes(file, fields, info);
         } else if (fields[0] == restart::key::particles) {
-            if (fields.size() != 1 + restart::particlesFields) file.fail("expected 'particles COUNT NEXTID'");
-            const long count = parseCount(fields[1 + restart::particleCount], file, "the particle count");
-            std::vector<std::pair<long, bool>> idFixed;
-            idFixed.reserve(reservable(count, file));
-            for (long p = 0; p < count; ++p) {
-                if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
-                splitFields(line, fields);
-                if (fields.size() != restart::sphereFields)
-                    file.fail("expected " + std::to_string(restart::sphereFields) + " fields for a particle, found " +
-                              std::to_string(fields.size()));
-                idFixed.emplace_back(parseCount(fields[restart::id], file, "the particle id"),
-                                     parseFlag(fields[restart::fixed], file, "the fixed flag"));
-            }
-            // .data lines are in ascending id (data.md).
-            std::sort(idFixed.begin(), idFixed.end());
-            for (const auto& [id, fixed] : idFixed) info.fixed.push_back(fixed);
+            readParticles(file, fields, shaped, info);
             sawParticles = true;
         }
     }
@@ -130,6 +202,21 @@ bool valueAfter(const std::vector<std::string_view>& fields, std::string_view ke
         }
     }
     return false;
+}
+
+// A MercuryDPM particle line starts with its kind; those of a sphere's shape are read (mass from
+// the .data radius). A SuperQuadricParticle (`axes a b c exp1 e1 exp2 e2`) would be coarse-grained
+// as the sphere of its .data radius, a bounding radius: refused, as is a kind this reader does not
+// know.
+void requireSphericalKind(const TextFile& file, const std::vector<std::string_view>& fields) {
+    static constexpr std::string_view spheres[] = {"BaseParticle", "SphericalParticle", "LiquidFilmParticle", "ThermalParticle"};
+    const std::string_view kind = fields.empty() ? std::string_view() : fields[0];
+    if (std::find(std::begin(spheres), std::end(spheres), kind) != std::end(spheres)) return;
+    if (kind == "SuperQuadricParticle")
+        file.fail("a MercuryDPM SuperQuadricParticle: talus-cg takes superquadric shapes from Talus restart files only "
+                  "(as a sphere of its .data radius, its bounding radius, its mass and volume would be wrong)");
+    file.fail("particle of an unknown kind '" + std::string(kind) + "' (BaseParticle, SphericalParticle, LiquidFilmParticle "
+              "or ThermalParticle)");
 }
 
 // MercuryDPM restart: `Species S` then species lines with `id K density D` (mixed species have
@@ -171,6 +258,7 @@ RestartInfo readMercuryRestart(TextFile& file) {
             for (long p = 0; p < count; ++p) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the particle list (truncated file?)");
                 splitFields(line, fields);
+                requireSphericalKind(file, fields);
                 if (!valueAfter(fields, "invMass", value)) file.fail("particle line without 'invMass'");
                 info.fixed.push_back(parseReal(value, file, "the inverse mass") == 0.0);
             }
@@ -194,8 +282,15 @@ RestartInfo readRestartFile(const std::string& path) {
     if (!file.nextLine(first)) throw InputError(path + ": empty restart file");
     std::vector<std::string_view> words;
     splitFields(first, words);
-    if (words.size() >= 2 && words[0] == restart::magicWords[0] && words[1] == restart::magicWords[1])
+    if (words.size() >= 2 && words[0] == restart::magicWords[0] && words[1] == restart::magicWords[1]) {
+        // A later format may hold what this reader does not know (another kind of shape, say).
+        if (words.size() != 3) file.fail("expected 'Talus restart VERSION'");
+        const long version = parseCount(words[2], file, "the format version");
+        if (version > restart::version)
+            file.fail("format version " + std::to_string(version) + " is newer than this talus-cg reads (up to " +
+                      std::to_string(restart::version) + ")");
         return readTalusRestart(file);
+    }
     if (first.starts_with("MercuryDPM")) return readMercuryRestart(file);
     file.fail("not a restart file of Talus ('Talus restart ...') or MercuryDPM ('MercuryDPM ...')");
 }

@@ -1,12 +1,15 @@
 // What the CG tool takes from a restart file (Talus's, Documentation/FileFormats/restart.md, or
 // MercuryDPM's): the density of each species (the .data file has no masses), which directions
-// are periodic, which particles are fixed (the base of a chute), in .data line order, and the
-// cylinder walls of a drum (the default axis of cylindrical coordinates).
+// are periodic, which particles are fixed (the base of a chute), in .data line order, the
+// cylinder walls of a drum (the default axis of cylindrical coordinates), and from Talus's the
+// superquadric shapes of the particles (IO/ParticleShapes.h).
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
+
+#include "IO/ParticleShapes.h"
 
 namespace talus::cg {
 
@@ -26,6 +29,10 @@ struct RestartInfo {
     // (Talus: ascending global id; MercuryDPM: particle index).
     std::vector<bool> fixed;
     std::vector<CylinderWall> cylinders;  // Talus `walls` with radius > 0 (MercuryDPM: not read)
+    // Talus: the superquadrics of the `shapes` section, and the particles in ascending id (the
+    // order of the .data lines), whose shape indices point into `shapes`. MercuryDPM: empty.
+    std::vector<SuperquadricShape> shapes;
+    std::vector<RestartParticle> particles;
     double time = 0;
 };
 

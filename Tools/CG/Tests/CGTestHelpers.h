@@ -1,18 +1,33 @@
 // Helpers of the CG tests: Gauss-Legendre quadrature (nodes computed here by Newton's method
 // on the Legendre polynomials, independently of the library), composite quadrature over
-// panels between given breakpoints, and small frames built by hand.
+// panels between given breakpoints, small frames built by hand, and small files written for the
+// readers with the message of the InputError they raise.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <numbers>
 #include <random>
 #include <vector>
 
+#include "IO/InputError.h"
 #include "IO/ParticleFrame.h"
 
 namespace talus::cg::test {
+
+inline void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The message of the InputError `f` throws, or "(no error)".
+inline std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "(no error)";
+}
 
 struct GaussLegendre {
     std::vector<double> node, weight;  // on [-1, 1]

@@ -83,10 +83,13 @@ TEST(OutputFormats, StatFileHoldsTheSumsInMercuryColumns) {
     std::istringstream names(line);
     std::vector<std::string> columns;
     for (std::string name; names >> name;) columns.push_back(name);
-    ASSERT_EQ(columns.size(), 85u);
+    ASSERT_EQ(columns.size(), 88u);  // MercuryDPM's 85, then InteractionForceX Y Z
     EXPECT_EQ(columns[1], "Density");
     EXPECT_EQ(columns[14], "MomentumFluxXX");  // after 1 + 1 + 3 + 3 + 6 columns
     EXPECT_EQ(columns[29], "NormalStressXX");  // after MomentumFlux 6, DisplacementMomentumFlux 6, EnergyFlux 3
+    EXPECT_EQ(columns[84], "ContactCoupleStressZZ");
+    EXPECT_EQ(columns[85], "InteractionForceX");
+    EXPECT_EQ(columns[87], "InteractionForceZ");
     std::getline(in, line);
     EXPECT_EQ(line.rfind("w 1.095445115 dim 3 domainStat 0 6 0 4 0 5 n 5 1 3 statType XZ CG_type Lucy", 0), 0u) << line;  // w = sqrt(1.5 x 0.8)
     std::getline(in, line);
@@ -97,7 +100,7 @@ TEST(OutputFormats, StatFileHoldsTheSumsInMercuryColumns) {
         std::istringstream row(line);
         std::vector<double> v;
         for (double value; row >> value;) v.push_back(value);
-        ASSERT_EQ(v.size(), 88u);
+        ASSERT_EQ(v.size(), 91u);
         const double* sums = s.sums.data() + p * layout.count();
         for (int k = 0; k < 3; ++k) EXPECT_EQ(v[k], s.output.points[p][k]);
         auto near = [](double a, double b) { return std::abs(a - b) <= 1e-15 * std::max(1.0, std::abs(b)); };
@@ -106,6 +109,7 @@ TEST(OutputFormats, StatFileHoldsTheSumsInMercuryColumns) {
         for (int c = 0; c < 3; ++c) EXPECT_TRUE(near(v[5 + c], sums[FieldSums::momentum + c]));
         for (int c = 0; c < 6; ++c) EXPECT_TRUE(near(v[3 + 14 + c], sums[FieldSums::momentumFlux + c]));
         for (int c = 0; c < 9; ++c) EXPECT_EQ(v[3 + 29 + c], 0.0);  // no contact stress evaluated
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(v[3 + 85 + c], 0.0);  // nor boundary forces
     }
     EXPECT_FALSE(std::getline(in, line) && !line.empty());
 }

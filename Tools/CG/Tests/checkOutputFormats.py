@@ -10,10 +10,10 @@ usage: checkOutputFormats.py FIELDS.csv FIELDS.h5 FIELDS.stat
 - FIELDS.xmf: well-formed XML; one grid per frame with the frame's time; the topology's
   dimensions are the datasets' shapes; every DataItem names a dataset of FIELDS.h5 with
   the stated dimensions.
-- FIELDS.stat: MercuryDPM's layout: 85 names, a parameter line, per frame a time line
-  (t, or tmin tmax for a time average) and one line of 3 + 85 numbers per point;
-  VolumeFraction, Density, Momentum equal the CSV's, NormalStress its ContactStress, and
-  MomentumFlux - p p / rho its KineticStress.
+- FIELDS.stat: MercuryDPM's layout: 85 names and Talus's InteractionForceX Y Z, a parameter
+  line, per frame a time line (t, or tmin tmax for a time average) and one line of 3 + 88
+  numbers per point; VolumeFraction, Density, Momentum and InteractionForce equal the CSV's,
+  NormalStress its ContactStress, and MomentumFlux - p p / rho its KineticStress.
 
 The CSV values have 12 significant digits (%.12g), so values agree to a relative 1e-11 of
 the column's largest magnitude (the HDF5 and .stat values have 17 and 16 digits).
@@ -131,8 +131,9 @@ def check_stat(names, frames, path):
     with open(path) as f:
         lines = f.read().split('\n')
     stat_names = lines[0].split()
-    if len(stat_names) != 85 or stat_names[0] != 'VolumeFraction' or stat_names[-1] != 'ContactCoupleStressZZ':
-        fail(f"{path}: line 1 does not hold MercuryDPM's 85 field names")
+    if len(stat_names) != 88 or stat_names[0] != 'VolumeFraction' or stat_names[84] != 'ContactCoupleStressZZ' \
+            or stat_names[85:] != ['InteractionForceX', 'InteractionForceY', 'InteractionForceZ']:
+        fail(f"{path}: line 1 does not hold MercuryDPM's 85 field names and InteractionForceX Y Z")
     parameters = lines[1].split()
     if parameters[0] != 'w' or parameters[2] != 'dim' or parameters[4] != 'domainStat' or parameters[11] != 'n' or parameters[15] != 'statType':
         fail(f"{path}: line 2 is not MercuryDPM's parameter line: {lines[1]}")
@@ -140,8 +141,8 @@ def check_stat(names, frames, path):
     while at < len(lines) and lines[at].strip():
         head = [float(v) for v in lines[at].split()]
         rows = [[float(v) for v in line.split()] for line in lines[at + 1:at + 1 + len(frames[0][1])]]
-        if len(head) not in (1, 2) or any(len(r) != 88 for r in rows):
-            fail(f"{path} line {at + 1}: expected a time line and rows of 88 numbers")
+        if len(head) not in (1, 2) or any(len(r) != 91 for r in rows):
+            fail(f"{path} line {at + 1}: expected a time line and rows of 91 numbers")
         blocks.append((head, np.array(rows)))
         at += 1 + len(rows)
     if len(blocks) != len(frames):
@@ -160,6 +161,9 @@ def check_stat(names, frames, path):
         if 'ContactStressXX' in names:
             for c in ['XX', 'XY', 'XZ', 'YX', 'YY', 'YZ', 'ZX', 'ZY', 'ZZ']:
                 worst = max(worst, agree(f"{path} NormalStress{c}", rows[:, names.index('ContactStress' + c)], stat[:, column['NormalStress' + c]]))
+            for c in 'XYZ':
+                worst = max(worst, agree(f"{path} InteractionForce{c}", rows[:, names.index('InteractionForce' + c)],
+                                         stat[:, column['InteractionForce' + c]]))
         rho = stat[:, column['Density']]
         p = [stat[:, column['Momentum' + a]] for a in 'XYZ']
         for c in ['XX', 'XY', 'XZ', 'YY', 'YZ', 'ZZ']:
