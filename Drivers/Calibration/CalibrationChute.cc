@@ -136,21 +136,13 @@ public:
     }
 
     // A run that reached its end time undecided says so in its result line.
-    void actionsAfterSolve() override {
-        if (!finished_) writeResult();
-    }
+    void actionsAfterSolve() override { if (!finished_) writeResult(); }
 
 private:
-    static Selection fixedSpheres() {
-        return [](const ParticleStore& p, std::size_t i) { return p.fixed[i] != 0; };
-    }
+    static Selection fixedSpheres() { return [](const ParticleStore& p, std::size_t i) { return p.fixed[i] != 0; }; }
     DepthProfile profileOfThisChute() const { return DepthProfile(0.25, boxHeight, length, width, smallSpecies); }
 
-    void finish() {
-        writeResult();
-        finished_ = true;
-        run().finishAfterNextStep();
-    }
+    void finish() { writeResult(), finished_ = true, run().finishAfterNextStep(); }
 
     void writeResult() {
         std::vector<double> u, h;  // (an undecided run: its last sample)
@@ -163,14 +155,15 @@ private:
         const double averaged = averageFrom_ >= 0 && decision_.state() == FlowState::steady ? time() - averageFrom_ : 0;
         const double mu = averaged > 0 ? -force[0] / force[1] : NAN;
         const double weightCarried = averaged > 0 ? force[1] / averaged / (flowMass_ * std::cos(theta)) : NAN;
+        const double uChange = averaged > 0 ? (samples_.back().meanVelocity - samples_[0].meanVelocity) / velocity.mean : NAN;
         const FlowState state = decision_.state();
         const char* name = flowStateName(state);
         writeFileOnce(*this, settings().name + ".result.csv", [&](std::ostream& out) {
-            out << "species,concentration,angle,length,width,seed,particles,h,u,uError,F,alpha,mu,weightCarried,"
+            out << "species,concentration,angle,length,width,seed,particles,h,u,uError,uChange,F,alpha,mu,weightCarried,"
                    "state,decidedAt,averagedFor\n"
                 << species << ',' << (species == "mixture" ? concentration : species == "small" ? 1 : 0) << ','
                 << angle << ',' << length << ',' << width << ',' << seed << ',' << flowParticles() << ',' << height.mean
-                << ',' << velocity.mean << ',' << velocity.error << ',' << froude << ',' << profile.shapeFactor << ','
+                << ',' << velocity.mean << ',' << velocity.error << ',' << uChange << ',' << froude << ',' << profile.shapeFactor << ','
                 << mu << ',' << weightCarried << ',' << name << ',' << (state == FlowState::undecided ? time() : decision_.decidedAt())
                 << ',' << averaged << '\n';
         });

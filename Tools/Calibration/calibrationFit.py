@@ -163,8 +163,11 @@ def bootstrap(points, d=1.0, with_gamma=True, replicates=200, seed=1, level=0.95
     return intervals, failed
 
 
-def read_points(path, species=None):
-    """The result lines of a study (runStudy.py's results.csv, or one run's NAME.result.csv)."""
+def read_points(path, species=None, max_change=0.2):
+    """The result lines of a study (runStudy.py's results.csv, or one run's NAME.result.csv). A
+    flowing point whose velocity changed by more than max_change of its mean over the averaging
+    (column uChange) was still slowing down or speeding up: its state becomes "unsteady", and
+    neither the h_stop nor the flow-rule fit uses it."""
     import csv
     with open(path) as f:
         rows = list(csv.DictReader(f))
@@ -177,8 +180,10 @@ def read_points(path, species=None):
     for r in rows:
         if species is not None and r["species"] != species:
             continue
+        change = float(r.get("uChange", "nan"))
+        state = "unsteady" if r["state"] == "flowing" and abs(change) > max_change else r["state"]
         points.append({"angle": float(r["angle"]), "h": float(r["h"]), "F": float(r["F"]), "mu": float(r["mu"]),
-                       "alpha": float(r["alpha"]), "state": r["state"], "species": r["species"]})
+                       "alpha": float(r["alpha"]), "state": state, "species": r["species"], "uChange": change})
     if not points:
         raise FitError(f"{path}: no points of species {species!r} (it has {', '.join(kinds)})")
     return points

@@ -38,7 +38,8 @@ def plot(points, fit, d, prefix):
     paths = []
 
     fig, ax = plt.subplots(figsize=(5, 4))
-    for state, marker, colour in (("arrested", "x", "tab:blue"), ("flowing", "o", "tab:red"), ("undecided", "s", "grey")):
+    for state, marker, colour in (("arrested", "x", "tab:blue"), ("flowing", "o", "tab:red"), ("unsteady", "^", "orange"),
+                                  ("undecided", "s", "grey")):
         chosen = [p for p in points if p["state"] == state]
         if chosen:
             ax.scatter([p["angle"] for p in chosen], [p["h"] for p in chosen], marker=marker, color=colour, label=state,
@@ -89,20 +90,23 @@ def main():
     parser.add_argument("--species", help="the points of one species (large, small, mixture)")
     parser.add_argument("--diameter", type=float, help="d of the flowing spheres (default: by species)")
     parser.add_argument("--no-gamma", action="store_true", help="flow rule F = beta h/h_stop (the thesis's eq. 3.11)")
+    parser.add_argument("--max-change", type=float, default=0.2,
+                        help="flowing points whose velocity changed by more than this share over the averaging "
+                             "are left out as unsteady (default 0.2)")
     parser.add_argument("--bootstrap", type=int, default=200, help="resamples for the intervals (default 200)")
     parser.add_argument("--plots", help="prefix of the plots PREFIX-hstop.png, -flowrule.png, -friction.png")
     args = parser.parse_args()
     try:
-        points = cf.read_points(args.results, args.species)
+        points = cf.read_points(args.results, args.species, args.max_change)
         species = points[0]["species"]
         d = args.diameter or (SMALL_DIAMETER if species == "small" else 1.0)
         fit = cf.fit_all(points, d, not args.no_gamma)
         intervals, failed = cf.bootstrap(points, d, not args.no_gamma, args.bootstrap)
     except (cf.FitError, OSError) as error:
         sys.exit(f"fitCalibration: {error}")
-    counts = {s: sum(p["state"] == s for p in points) for s in ("flowing", "arrested", "undecided")}
+    counts = {s: sum(p["state"] == s for p in points) for s in ("flowing", "arrested", "unsteady", "undecided")}
     print(f"{len(points)} points of {species} (d = {d:.4g}): {counts['flowing']} flowing, {counts['arrested']} arrested, "
-          f"{counts['undecided']} undecided (left out)")
+          f"{counts['unsteady']} unsteady and {counts['undecided']} undecided (left out)")
     print("h_stop per angle: " + ", ".join(f"{a:g}: {h:.2f} +- {e:.2f}" for a, h, e in fit["hstop"]["estimates"]))
     seed = TABLE_3_1.get(species, {})
     print(f"{'parameter':<10}{'fit':>10}{'95% interval':>22}{'Table 3.1':>12}")
