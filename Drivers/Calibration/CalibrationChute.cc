@@ -2,24 +2,23 @@
 // "Closure relations for shallow granular flows from particle simulations").
 //
 // Methods. A chute inclined at --angle degrees, periodic in x (--length) and y (--width), has a
-// disordered rough base of fixed spheres of diameter 1 (Theory/Chutes.md "The rough base"). Above
-// it, spheres of the thesis's Table 3.C.1 (large d = 1, small d = 2^(-1/3), density 6/pi; linear
-// spring-dashpot with kn = 2e5, gn = 25 for two large spheres, e and tc/sqrt(d) the same for
-// every pair type, base included; friction 0.5 large, 0.25 small, 0.375 between) are placed at
-// rest in a loose layer (solid fraction 0.2) and fall onto the base: --species large, small, or a
-// mixture with --concentration the small spheres' share of the volume; as many as fill the base
-// area to --depth at solid fraction 0.6 (or --particles). Every --sample-interval the run samples
-// the kinetic energy per unit mass and the mass flux, and FlowDecision.h decides: arrested (kinetic
-// energy below --arrest-energy g d for --arrest-time), or steady (both on a plateau over --window
-// samples). A steady flow is then averaged for --average-time: flow height h (twice the mass-weighted
-// mean height above z = 0), mean velocity u, the depth profile of the velocity, and the force of
-// the base on the flow, integrated over every step. The run ends there and writes NAME.result.csv:
-// one line with h, u, F = u / sqrt(g h cos theta), alpha = <u^2>/<u>^2 over the depth, the basal
-// friction mu = -Fx/Fz of the base's force, and that force's normal part over the flow's weight
-// normal to the base. In a steady flow the base carries the whole weight (momentum balance), so the
-// last is 1 and mu = tan(theta) up to the fluctuations: a conservation check on each point.
+// disordered rough base of fixed spheres of diameter 1 (Theory/Chutes.md "The rough base"). Spheres
+// of the thesis's Table 3.C.1 (MaserChutePairLaws.h: large d = 1, small d = 2^(-1/3), friction 0.5,
+// 0.25, 0.375 between) start at rest in a loose layer and fall onto the base: --species large,
+// small, or a mixture (--concentration: the small share of the volume), as many as fill the base
+// to --depth at solid fraction 0.6. Every --sample-interval FlowDecision.h decides from the kinetic
+// energy per unit mass and the mass flux: arrested (energy below --arrest-energy g d for
+// --arrest-time) or steady (both on a plateau over --window samples). A steady flow is averaged
+// for --average-time: height h (twice the mass-weighted mean height above z = 0), velocity u, its
+// depth profile, and the base's force on the flow, integrated over every step. Then the run ends
+// and writes NAME.result.csv: h, u, F = u / sqrt(g h cos theta), alpha = <u^2>/<u>^2 over the
+// depth, the basal friction mu = -Fx/Fz of the base's force and its normal part over the weight.
+// A steady flow's momentum balance makes the last 1 and mu = tan(theta): a check on each point.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../Chute/MaserChutePairLaws.h"
@@ -62,6 +61,8 @@ public:
         run().addFlag("arrest-energy", "kinetic energy per unit mass (g d) below which the flow is at rest", criteria.arrestEnergy);
         run().addFlag("arrest-time", "time at rest that makes the flow arrested", criteria.arrestTime);
         run().addFlag("average-time", "time a steady flow is averaged over", averageTime);
+        run().keepInRestart("run.species", [this] { return std::vector<double>{double(kind())}; },  // (a text flag)
+                            [this](const std::vector<double>& v) { species = kinds.at(std::size_t(v.at(0))); });
         run().keepInRestart("run.flowMass", flowMass_);
         run().keepInRestart("run.averageFrom", averageFrom_);
         run().keepInRestart("run.samples", [this] { return snapshotNumbers(samples_); },
@@ -74,7 +75,7 @@ public:
 
     void setupInitialConditions() override {
         require(angle > 0 && angle < 90, "--angle " + str(angle) + ": the chute angle must lie in (0, 90) degrees");
-        require(species == "large" || species == "small" || species == "mixture",
+        require(kind() < kinds.size(),
                 "--species must be large, small or mixture, got '" + species + "'");
         require(species != "mixture" || (concentration > 0 && concentration < 1),
                 "--concentration " + str(concentration) + ": a mixture's small share must lie in (0, 1)");
@@ -175,6 +176,8 @@ private:
     double flowParticles() const { return sumOver(*this, mobileParticles(), [](const ParticleStore&, std::size_t) { return 1.0; }); }
 
     enum : std::size_t { largeSpecies, smallSpecies, baseSpecies };  // (addMaserChuteSpecies's order)
+    static constexpr std::array<std::string_view, 3> kinds{"large", "small", "mixture"};  // --species
+    std::size_t kind() const { return std::size_t(std::find(kinds.begin(), kinds.end(), species) - kinds.begin()); }
     FlowDecision decision_{*this, "run.decision"};
     SamplingClock clock_{*this, "samples"};
     RunningSums baseForce_{*this, "run.baseForce", 2};
