@@ -11,7 +11,7 @@ runner=$2
 rm -rf study
 mkdir study
 grid="--species large --angles 25 --depths 1,1.5,2 --jobs 1 --restart-interval 0.05"
-flags="--length 6 --width 6 --end-time 4 --window 4 --progress-interval 1e9"
+flags="--length 6 --width 6 --end-time 1.5 --window 4 --progress-interval 1e9"
 /usr/bin/python3 "$runner" --driver "$driver" --out study $grid -- $flags > first.log 2>&1 &
 runner_pid=$!
 first=study/points/large-a25-d1/large-a25-d1.result.csv
