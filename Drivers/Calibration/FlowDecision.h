@@ -34,8 +34,8 @@ class FlowDecision {
 public:
     explicit FlowDecision(const FlowCriteria& criteria = {});
     FlowDecision(Simulation& simulation, const std::string& name);
-    // Forgets every sample and takes the criteria anew (each checked, the message naming `flag`
-    // prefixes: --arrest-energy, --arrest-time, --window, --tolerance).
+    // Forgets every sample and takes the criteria anew; a criterion out of range is an error that
+    // names its flag of CalibrationChute (--arrest-energy, --arrest-time, --window, --tolerance).
     void reset(const FlowCriteria& criteria);
     // One sample: time, kinetic energy per unit mass (g d), mass flux. Returns the state.
     FlowState add(double time, double energyPerMass, double massFlux);
