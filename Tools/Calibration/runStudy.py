@@ -9,7 +9,9 @@ goes into OUT/results.csv (rewritten at every point, with the column `point`).
 
     Tools/Calibration/runStudy.py --driver build/Drivers/Calibration/CalibrationChute --out /work/studies/calibration
 
-Without grid flags the reduced default study runs (REDUCED below): in under an hour on two cores.
+Without grid flags the reduced default study runs: large spheres in a 10 x 10 box, angles 22,
+23.5, 25, 26.5 and 28 degrees, depths 1, 2, 3, 5 and 8 (25 points; estimated at 20 to 40 minutes
+on two free cores).
 """
 import argparse
 import csv
