@@ -9,9 +9,9 @@ goes into OUT/results.csv (rewritten at every point, with the column `point`).
 
     Tools/Calibration/runStudy.py --driver build/Drivers/Calibration/CalibrationChute --out /work/studies/calibration
 
-Without grid flags the reduced default study runs: large spheres in a 10 x 10 box, angles 22,
-23.5, 25, 26.5 and 28 degrees, depths 1, 2, 3, 5 and 8 (25 points; estimated at 20 to 40 minutes
-on two free cores).
+Without grid flags the reduced default study runs: large spheres in a 10 x 10 box, angles 23 to
+27 degrees by 1, depths 1, 2, 3, 5 and 8 (25 points; estimated at 20 to 40 minutes on two free
+cores).
 """
 import argparse
 import csv
@@ -25,12 +25,13 @@ import time
 
 # The reduced default study: large spheres only (the fewest per unit depth) in a 10 x 10 box
 # (in 6 x 6 the flows near h_stop fluctuate too much for any plateau), five angles and five depths
-# around the large spheres' h_stop curve of Table 3.1 (d1 = 18.6, d2 = 30.06 deg, A = 3.07: h_stop =
-# 8.0, 5.0, 2.7, 1.4, 0.75 at 22, 23.5, 25, 26.5, 28 deg; a depth D gives a flow height of about
-# 1.25 D), a plateau of 100 samples within 5%, 30 time units of averaging, at most 500 a point.
+# around the large spheres' h_stop curve: Table 3.1 (d1 = 18.6, d2 = 30.06 deg, A = 3.07) gives
+# h_stop = 5.4, 3.8, 2.7, 1.9, 1.2 at 23 ... 27 deg, and the first points here came out near 1.5
+# times that (a depth D gives a flow height of about 1.2 D). A plateau of 100 samples within 5%,
+# 30 time units of averaging, at most 500 a point.
 REDUCED = {
     "species": ["large"],
-    "angles": [22, 23.5, 25, 26.5, 28],
+    "angles": [23, 24, 25, 26, 27],
     "depths": [1, 2, 3, 5, 8],
     "driver_flags": ["--length", "10", "--width", "10", "--window", "100", "--tolerance", "0.05",
                      "--average-time", "30", "--end-time", "500"],
