@@ -100,7 +100,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
 
     const double dt = state_.settings.timeStep;
     const double remaining = state_.settings.endTime - state_.time;
-    const auto steps = remaining > 0 ? static_cast<std::uint64_t>(std::llround(remaining / dt)) : 0;
+    auto steps = remaining > 0 ? static_cast<std::uint64_t>(std::llround(remaining / dt)) : 0;
+    run_->finishing_ = false;
     std::size_t mobile = mobileParticleCount();
     std::ostringstream quiet;  // ranks other than 0 print nothing
     std::ostream& out = ranks_->rank() == 0 ? std::cout : quiet;
@@ -117,10 +118,12 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         // A step, or a wave of several (Integration/Integrator.h); output after its last step.
         const std::uint64_t advance = integrator_->stepsNext(*host_, steps - k + 1, every);
         const std::uint64_t last = k + advance - 1;
-        const bool saving = isOutputStep(state_.step + advance, last, steps, every);
+        const bool finish = run_->finishing_;  // (asked for before this step: it is the run's last)
+        const bool saving = finish || isOutputStep(state_.step + advance, last, steps, every);
         actionsBeforeTimeStep();
         integrator_->advance(*host_, saving);
         k = last;
+        if (finish) steps = k;
         for (const auto& b : scene_->boundaries()) b->afterStep(*this);
         actionsAfterTimeStep();
         if (saving) {
@@ -134,6 +137,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
             mobile = mobileParticleCount();
         }
         progress.update(state_.time, k, mobile);
+        if (finish) break;
     }
     progress.finish(state_.time, steps);
     if (steps > 0) {

@@ -13,6 +13,7 @@ packages=(
   libbenchmark-dev          # Drivers/Benchmarks micro-benchmarks
   libfmt-dev
   python3 python3-numpy python3-matplotlib python3-h5py  # Tools/Plot
+  python3-scipy             # Tools/Calibration (the fit)
   python3-vtk9              # SelfTests/checkVtu.py reads the .vtu frames with VTK's readers
 )
 missing=()

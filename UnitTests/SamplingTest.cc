@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -180,6 +181,29 @@ TEST(SeriesFile, TableWithNamedColumns) {
     text << in.rdbuf();
     EXPECT_EQ(text.str(), "# t count mass (a note)\n0.125 3 0.3333\n");
     test::expectError([&] { d.table.write({1.0}); }, {"series file 'table': a row of 1 values for 3 columns"});
+}
+
+// A run saved before its first line (no file yet: a calibration point killed before its first
+// sample) and then restarted starts the file anew: its header, then the restarted run's lines.
+TEST(SeriesFile, RestartedBeforeItsFirstLine) {
+    struct Driver : SceneSimulation {
+        SeriesFile table{*this, "table", {"t"}, ""};
+        Driver() {
+            setup = threeSpheres;
+            afterStep = [this](SceneSimulation&) {
+                if (time() > 0.505) table.write({time()});
+            };
+        }
+    };
+    std::remove("series_late.table");
+    Driver first;
+    runUntil(first, "series_late", 0.3);
+    Driver restarted;
+    restarted.solveOrThrow({"--restart", "series_late.restart", "--end-time", "0.52", "--files", "off"});
+    std::ifstream in("series_late.table");
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), "# t\n0.51\n0.52\n");
 }
 
 }  // namespace

@@ -67,6 +67,9 @@ public:
     // writes.
     void write(const std::string& path, const Simulation* s = nullptr) const;
     std::size_t samples() const { return samples_; }
+    // The mass and the downslope momentum (m vx) in each slab, from z = 0 up, summed over the samples.
+    const std::vector<double>& slabMass() const { return mass_; }
+    const std::vector<double>& slabMomentum() const { return momentum_; }
     // The totals as numbers, for a restart file (Run::keepInRestart), and back.
     std::vector<double> state() const;
     void restore(const std::vector<double>& state);

@@ -57,11 +57,13 @@ SeriesFile::~SeriesFile() {
 
 void SeriesFile::open() {
     path_ = simulation_.settings().name + "." + suffix_;
-    if (restarted_) cutBackToRestartPoint(path_, restartBytes_);  // lines after the restart point go
+    // (A run saved before its first line wrote no file: its restart starts the file anew.)
+    const bool continuing = restarted_ && restartBytes_ > 0;
+    if (continuing) cutBackToRestartPoint(path_, restartBytes_);  // lines after the restart point go
     errno = 0;
-    file_ = std::fopen(path_.c_str(), restarted_ ? "ab" : "wb");
+    file_ = std::fopen(path_.c_str(), continuing ? "ab" : "wb");
     if (!file_) throwWriteError(path_);
-    bytes_ = restarted_ ? restartBytes_ : 0;
+    bytes_ = continuing ? restartBytes_ : 0;
     if (bytes_ == 0) append(header_);
 }
 

@@ -38,6 +38,10 @@ public:
 
     // The restart file the run continues (--restart FILE); empty for a run from its set-up.
     const std::string& restartFile() const { return restartFile_; }
+    // Ends the run after one more step, which saves the output as a run's last step does, before
+    // the end time: for a driver that has decided what it measures (a flow steady or at rest).
+    // Every rank calls it alike, from a hook.
+    void finishAfterNextStep() { finishing_ = true; }
 
 private:
     friend class Simulation;
@@ -60,6 +64,7 @@ private:
     std::unique_ptr<CommandLine> commandLine_;
     std::vector<KeptValue> kept_;
     std::string restartFile_;
+    bool finishing_ = false;  // finishAfterNextStep was called (Simulation's time loop reads it)
 };
 
 }  // namespace talus

@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""The calibration fit (calibrationFit.py) on synthetic studies with known parameters.
+
+A study is made from the closure relations themselves: at each angle, depths drawn at random;
+a point is arrested when its depth lies below h_stop(theta) of the known delta1, delta2, A
+(Documentation/Calibration.md eq. (1)), and otherwise flows with the Froude number of the known
+flow rule F = beta h/h_stop - gamma (eq. (2)) plus Gaussian noise of 0.01, and a basal friction
+tan(theta) plus noise of 0.003 (the momentum balance of a steady flow). The fit must recover each
+known parameter inside its 95% bootstrap interval, and refuse studies with too few points of a
+kind with a message that says which. Prints "calibration fit: all checks passed" at the end.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import calibrationFit as cf  # noqa: E402
+
+failures = []
+
+
+def check(condition, message):
+    print(("ok    " if condition else "FAIL  ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def synthetic_study(truth, d, angles, per_angle, seed):
+    rng = np.random.default_rng(seed)
+    points = []
+    for angle in angles:
+        hstop = cf.hstop_model(angle, truth["delta1"], truth["delta2"], truth["A"] * d)
+        # Depths evenly spaced in log h from 0.3 to 40, each moved at random within its spacing
+        # (a study's grid, without a bias of where h_stop falls between two of its depths).
+        spacing = math.log(40 / 0.3) / (per_angle - 1)
+        grid = 0.3 * np.exp(spacing * (np.arange(per_angle) + rng.uniform(-0.5, 0.5, per_angle)))
+        for h in grid:
+            if h < hstop:
+                points.append({"angle": angle, "h": h, "F": 0.0, "mu": math.nan, "state": "arrested"})
+            else:
+                froude = truth["beta"] * h / hstop - truth["gamma"] + rng.normal(0, 0.01)
+                mu = math.tan(math.radians(angle)) + rng.normal(0, 0.003)
+                points.append({"angle": angle, "h": h, "F": froude, "mu": mu, "state": "flowing"})
+    return points
+
+
+# How close the fit itself must come: the h_stop estimate of an angle is uncertain by about half
+# the distance between neighbouring depths (9% of h_stop with 28 depths from 0.3 to 40), which
+# moves delta1 and delta2 by a few tenths of a degree and A by some 10%; F carries noise 0.01
+# into beta and gamma.
+CLOSE = {"delta1": 0.6, "delta2": 1.5, "A": 0.2, "beta": 0.01, "gamma": 0.06}  # A relative, others absolute
+
+
+def recovers(label, truth, d, with_gamma):
+    angles = np.linspace(truth["delta1"] + 1.5, truth["delta2"] - 1.5, 9)
+    points = synthetic_study(truth, d, angles=angles, per_angle=28, seed=7)
+    fit = cf.fit_all(points, d, with_gamma)
+    intervals, failed = cf.bootstrap(points, d, with_gamma, replicates=150, seed=3)
+    for k in cf.PARAMETERS:
+        low, high = intervals[k]
+        check(low <= truth[k] <= high, f"{label}: {k} = {truth[k]} inside the 95% interval [{low:.4g}, {high:.4g}] "
+                                       f"(fit {fit[k]:.4g})")
+        error = abs(fit[k] - truth[k]) / (truth[k] if k == "A" else 1)
+        check(error <= CLOSE[k], f"{label}: {k} fitted within {CLOSE[k]}{' (relative)' if k == 'A' else ''} of the truth")
+    check(failed < 15, f"{label}: {failed} of 150 resamples could not be fitted (fewer than 15)")
+    # The friction law at the flowing points: mu(h, F) of the fitted parameters is tan(theta)
+    # up to the noise that F carries through it.
+    rms = math.sqrt(np.mean(fit["muResidualTan"] ** 2))
+    check(rms < 0.01, f"{label}: rms of mu(h, F) - tan(theta) at the flowing points {rms:.4f} below 0.01")
+
+
+def refuses(label, points, words):
+    try:
+        cf.fit_all(points)
+        check(False, f"{label}: refused")
+    except cf.FitError as error:
+        text = str(error)
+        check(all(w in text for w in words), f"{label}: refused saying {text!r}")
+
+
+# The large spheres of Table 3.1, with a gamma as in Weinhart et al. 2012 (0.045 there).
+large = {"delta1": 18.60, "delta2": 30.06, "A": 3.07, "beta": 0.146, "gamma": 0.05}
+recovers("large spheres of Table 3.1", large, 1.0, with_gamma=True)
+# The small spheres of Table 3.1 (A in units of their own diameter), with gamma = 0 and the
+# thesis's form of the flow rule.
+small = {"delta1": 17.92, "delta2": 36.53, "A": 0.71, "beta": 0.148, "gamma": 0.0}
+recovers("small spheres of Table 3.1, gamma = 0", small, 2 ** (-1 / 3), with_gamma=False)
+
+study = synthetic_study(large, 1.0, [20, 22, 24, 26], 10, seed=1)
+refuses("no arrested point", [p for p in study if p["state"] != "arrested"], ["0 angles", "arrested"])
+refuses("arrested and flowing at two angles only", [p for p in study if p["angle"] in (22, 24)],
+        ["2 angles", "three are needed"])
+# The flow rule on its own (the h_stop step always leaves one flowing point per angle it used):
+# two flowing points inside (delta1, delta2) are refused.
+hstop = {"delta1": large["delta1"], "delta2": large["delta2"], "A": large["A"]}
+two = [p for p in study if p["state"] == "flowing"][:2] + [p for p in study if p["state"] == "arrested"]
+try:
+    cf.fit_flow_rule(two, hstop)
+    check(False, "two flowing points: refused")
+except cf.FitError as error:
+    check("2 steady flowing points" in str(error), f"two flowing points: refused saying {str(error)!r}")
+
+if failures:
+    sys.exit(f"calibration fit: {len(failures)} checks failed")
+print("calibration fit: all checks passed")
