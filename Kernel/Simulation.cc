@@ -20,6 +20,7 @@
 #include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
+#include "Sampling/StepSampler.h"
 #include "SimulationHost.h"
 
 namespace talus {
@@ -118,14 +119,17 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const std::uint64_t advance = integrator_->stepsNext(*host_, steps - k + 1, every);
         const std::uint64_t last = k + advance - 1;
         const bool saving = isOutputStep(state_.step + advance, last, steps, every);
+        const bool sampling = samplersWant(state_.step + 1, state_.step + advance);
         actionsBeforeTimeStep();
-        integrator_->advance(*host_, saving);
+        integrator_->advance(*host_, saving || sampling);
         k = last;
+        if (sampling) sampleStep();  // (before the driver's hook, which may read the samples)
         actionsAfterTimeStep();
         if (saving) {
             writeOutput();
-            work_->records.release();  // (the next output step records anew)
+            for (StepSampler* sampler : samplers_) sampler->afterOutput(*this);
         }
+        if (saving || sampling) work_->records.release();  // (the next output or sampled step records anew)
         // Boundaries may add and delete particles (waves run without them): count again when the
         // number changed (on ranks, where that takes all ranks, every 256 steps).
         if (advance == 1 && (ranks_->isSplit() ? (k & 255) == 0 : state_.particles.size() != counted)) {
@@ -156,6 +160,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrator_->report(*host_, out, state_.settings.name, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
+    for (StepSampler* sampler : samplers_) sampler->finishRun(*this);
     actionsAfterSolve();
 }
 
@@ -221,6 +226,7 @@ void Simulation::initialise(bool restarted) {
     }
     PositionWatch& positions = work_->positions;
     positions.changedBetweenSteps = 0;
+    for (StepSampler* sampler : samplers_) sampler->startRun(*this);
     if (restarted) {
         integrator_->afterRestart(*host_);
         positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
@@ -229,11 +235,26 @@ void Simulation::initialise(bool restarted) {
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
+    const bool sampling = samplersWant(state_.step, state_.step);
     computeForces(/*recordContacts*/ true, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
     positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
+    if (sampling) sampleStep();
     writeOutput();
+    for (StepSampler* sampler : samplers_) sampler->afterOutput(*this);
     work_->records.release();
+}
+
+bool Simulation::samplersWant(std::uint64_t first, std::uint64_t last) {
+    sampling_.clear();
+    for (StepSampler* sampler : samplers_)
+        if (sampler->wantsSteps(*this, first, last)) sampling_.push_back(sampler);
+    work_->records.keepEachForSampler(!sampling_.empty());
+    return !sampling_.empty();
+}
+
+void Simulation::sampleStep() {
+    for (StepSampler* sampler : sampling_) sampler->sample(*this, work_->records.each());
 }
 
 void Simulation::computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted) {
