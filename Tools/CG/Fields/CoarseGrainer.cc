@@ -95,6 +95,11 @@ void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox&
     }
 }
 
+void CoarseGrainer::setExcluded(std::vector<bool> excluded) {
+    if (cylindrical_) cylindrical_->setExcluded(excluded);
+    setup_.excluded = std::move(excluded);
+}
+
 void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
                              const std::string& dataPath, const std::string& fstatPath) {
     if (!frame.mass.empty() && frame.mass.size() != frame.size())
@@ -132,7 +137,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              std::to_string(s) + ", but densities are known for " + std::to_string(layout_.species) +
                              " species only (--density d0,d1,... or --restart)");
         }
-        if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
+        if ((!setup_.excluded.empty() && setup_.excluded[p]) || !frame.isOwned(p)) continue;
         const double volume = frame.sphereVolume(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {

@@ -29,12 +29,18 @@ struct ParticleFrame {
     // Masses, when the caller knows them (a driver coarse-graining its own particles, of any
     // shape); empty for .data frames, whose masses come from the radius and the species density.
     std::vector<double> mass;
+    // A run coarse-graining its own particles on MPI ranks (InRun/InRunFields.h): the last
+    // `ghosts` lines are copies of particles other ranks own, there only as the partners of this
+    // rank's contacts, and are left out of the particle fields. 0 for .data frames.
+    std::size_t ghosts = 0;
 
     std::size_t size() const { return radius.size(); }
     // Particle p's mass: given, or a sphere of its radius and the species' density.
     double massOf(std::size_t p, double density) const {
         return mass.empty() ? density * sphereVolume(p) : mass[p];
     }
+    // Whether line p is one of this frame's own particles (not a ghost).
+    bool isOwned(std::size_t p) const { return p + ghosts < size(); }
     double sphereVolume(std::size_t p) const { return 4.0 / 3.0 * std::numbers::pi * radius[p] * radius[p] * radius[p]; }
     void clear() {
         position.clear();
