@@ -127,7 +127,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         actionsAfterTimeStep();
         if (saving) {
             writeOutput();
-            for (StepSampler* sampler : samplers_) sampler->afterOutput(*this);
+            for (StepSampler* sampler : samplers_.attached) sampler->afterOutput(*this);
         }
         if (saving || sampling) work_->records.release();  // (the next output or sampled step records anew)
         // Boundaries may add and delete particles (waves run without them): count again when the
@@ -160,7 +160,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrator_->report(*host_, out, state_.settings.name, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
-    for (StepSampler* sampler : samplers_) sampler->finishRun(*this);
+    for (StepSampler* sampler : samplers_.attached) sampler->finishRun(*this);
     actionsAfterSolve();
 }
 
@@ -226,7 +226,7 @@ void Simulation::initialise(bool restarted) {
     }
     PositionWatch& positions = work_->positions;
     positions.changedBetweenSteps = 0;
-    for (StepSampler* sampler : samplers_) sampler->startRun(*this);
+    for (StepSampler* sampler : samplers_.attached) sampler->startRun(*this);
     if (restarted) {
         integrator_->afterRestart(*host_);
         positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
@@ -241,20 +241,21 @@ void Simulation::initialise(bool restarted) {
     positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
     if (sampling) sampleStep();
     writeOutput();
-    for (StepSampler* sampler : samplers_) sampler->afterOutput(*this);
+    for (StepSampler* sampler : samplers_.attached) sampler->afterOutput(*this);
     work_->records.release();
 }
 
 bool Simulation::samplersWant(std::uint64_t first, std::uint64_t last) {
-    sampling_.clear();
-    for (StepSampler* sampler : samplers_)
-        if (sampler->wantsSteps(*this, first, last)) sampling_.push_back(sampler);
-    work_->records.keepEachForSampler(!sampling_.empty());
-    return !sampling_.empty();
+    std::vector<StepSampler*>& now = samplers_.sampling;
+    now.clear();
+    for (StepSampler* sampler : samplers_.attached)
+        if (sampler->wantsSteps(*this, first, last)) now.push_back(sampler);
+    work_->records.keepEachForSampler(!now.empty());
+    return !now.empty();
 }
 
 void Simulation::sampleStep() {
-    for (StepSampler* sampler : sampling_) sampler->sample(*this, work_->records.each());
+    for (StepSampler* sampler : samplers_.sampling) sampler->sample(*this, work_->records.each());
 }
 
 void Simulation::computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted) {

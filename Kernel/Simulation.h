@@ -23,6 +23,7 @@
 #include "Parallel/RankContext.h"
 #include "Particles/Energies.h"
 #include "Run/Run.h"
+#include "Sampling/StepSampler.h"
 #include "Scene/Scene.h"
 #include "SimulationState.h"
 
@@ -30,7 +31,6 @@ namespace talus {
 
 class Integrator;
 class OutputFiles;
-class StepSampler;
 struct StepWorkspace;
 
 class Simulation {
@@ -84,7 +84,7 @@ public:
     // Attaches a sampler that samples the run at its steps with each contact of them
     // (Sampling/StepSampler.h; in-run coarse graining: Tools/CG/InRun). It must live as long as
     // the simulation runs (a member of the driver, say); the samplers are called in the order added.
-    void addSampler(StepSampler& sampler) { samplers_.push_back(&sampler); }
+    void addSampler(StepSampler& sampler) { samplers_.attached.push_back(&sampler); }
 
 protected:
     // --- hooks ---
@@ -121,8 +121,7 @@ private:
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<OutputFiles> files_;
     RunStatistics lastRun_;
-    std::vector<StepSampler*> samplers_;
-    std::vector<StepSampler*> sampling_;  // those sampling the current advance
+    StepSamplers samplers_;
 };
 
 }  // namespace talus

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "Contacts/ContactReport.h"
 
@@ -35,6 +36,13 @@ public:
     virtual void afterOutput(Simulation&) {}
     // After the time loop, before the driver's actionsAfterSolve.
     virtual void finishRun(Simulation&) {}
+};
+
+// A run's samplers: those attached (Simulation::addSampler), in order, and those that sample the
+// current advance.
+struct StepSamplers {
+    std::vector<StepSampler*> attached;
+    std::vector<StepSampler*> sampling;
 };
 
 }  // namespace talus
