@@ -336,6 +336,24 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
     const int fields = layout_.count();
     const int first = layout_.contactStressIndex();
     const auto& a = setup_.width.a();
+    if (profile_.dimension() == 1 && setup_.width.isDiagonal()) {
+        // One resolved axis k (a depth profile): u = a_kk (r_k - x_k - s segment_k), a number.
+        const int k = setup_.coordinates.kernelAxes()[0];
+        const double ak = a[4 * k];
+        for (std::size_t p = 0; p < points.size(); ++p) {
+            double* row = sums.data() + p * fields + first;
+            const auto range = contactBins_.sourcesNear(points[p]);
+            for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
+                const std::uint32_t c = *it;
+                const double line =
+                    profile_.lineIntegralAlongAxis(ak * (points[p][k] - contactStart_[c][k]), -ak * contactSegment_[c][k]);
+                if (line == 0) continue;
+                const double w = scale_ * line;
+                for (int j = 0; j < 9; ++j) row[j] += w * contactTensor_[c][j];
+            }
+        }
+        return;
+    }
     auto apply = [&](const double d[3], double u[3]) {
         for (int r = 0; r < 3; ++r) u[r] = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
     };
