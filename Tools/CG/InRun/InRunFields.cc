@@ -30,9 +30,15 @@ InRunFields::InRunFields(Simulation& simulation, InRunOptions options) : options
     simulation.addSampler(*this);
 }
 
+InRunFields::InRunFields(Simulation& simulation, std::function<InRunOptions()> makeOptions)
+    : makeOptions_(std::move(makeOptions)) {
+    simulation.addSampler(*this);
+}
+
 InRunFields::~InRunFields() = default;
 
 void InRunFields::startRun(Simulation& simulation) {
+    if (makeOptions_) options_ = makeOptions_();
     const InRunOptions& o = options_;
     const std::string label = o.name.empty() ? std::string("(unnamed)") : o.name;
     const double dt = simulation.settings().timeStep;

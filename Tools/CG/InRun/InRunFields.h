@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -79,13 +80,15 @@ public:
     // Attaches itself to `simulation` (Simulation::addSampler); call from the driver's
     // constructor. Options are checked when the run starts (a talus::Error names them).
     InRunFields(Simulation& simulation, InRunOptions options);
+    // The same with options made when each run starts, after the command line was read (also in
+    // a restarted run, which skips setupInitialConditions): for options that follow the driver's
+    // flags.
+    InRunFields(Simulation& simulation, std::function<InRunOptions()> makeOptions);
     ~InRunFields() override;
     InRunFields(const InRunFields&) = delete;
     InRunFields& operator=(const InRunFields&) = delete;
 
     const InRunOptions& options() const { return options_; }
-    // To change until the run starts (from the driver's flags, say, in setupInitialConditions).
-    InRunOptions& options() { return options_; }
     // After the run started: the evaluation points, the layout of a row of sums (one row per
     // point), the derived fields' column names.
     const std::vector<Vec3>& points() const { return points_; }
@@ -114,6 +117,7 @@ private:
     void writeAverage();
 
     InRunOptions options_;
+    std::function<InRunOptions()> makeOptions_;
     std::uint64_t every_ = 1;
     double halfStep_ = 0;
     std::unique_ptr<CoarseGrainer> grainer_;

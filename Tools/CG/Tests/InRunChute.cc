@@ -12,6 +12,7 @@
 // .data/.fstat/.restart at its output steps, so that talus-cg can coarse-grain the same frames
 // (checkInRunAgainstFiles.py compares the two). At the end it prints the depth-averaged velocity
 // of the last sample's profile, read in a hook as a calibration would.
+#include <cstdint>
 #include <string>
 
 #include "Chute/Chute.h"
@@ -23,7 +24,7 @@ using namespace talus;
 class InRunChute : public Chute {
 public:
     double angle = 24, length = 8, width = 4, cgWidth = 0.5;
-    int particles = 150, sampleSteps = 0, cgPoints = 96;
+    int particles = 150, sampleSteps = 0, cgPoints = 96, withField = 1, contactStress = 1;
     std::string fixed = "boundary", averaging = "snapshots";
 
     InRunChute() {
@@ -34,6 +35,8 @@ public:
         run().addFlag("sample-steps", "steps between in-run samples (0: every output interval)", sampleSteps);
         run().addFlag("cg-width", "width of the depth profile's Lucy kernel", cgWidth);
         run().addFlag("cg-points", "points of the depth profile over -1 < z < 11", cgPoints);
+        run().addFlag("with-field", "1: sample the XZ field too; 0: the depth profile alone (for timings)", withField);
+        run().addFlag("contact-stress", "1: with the contact stress; 0: particle fields only (for timings)", contactStress);
         run().addTextFlag("fixed", "fixed particles in the fields: include, exclude or boundary", fixed);
         run().addTextFlag("averaging", "snapshots, per-output or whole-run", averaging);
     }
@@ -48,16 +51,12 @@ public:
         const double top = 1 + particles * pi / 6 / (0.2 * length * width);
         insertAtRest(static_cast<std::size_t>(particles), grains, 0.5, Vec3(0, 0, 1), Vec3(length, width, top),
                      "the start configuration");
-        applyFlags(profile_.options());
-        applyFlags(field_.options());
-        profile_.options().width = cgWidth;
-        profile_.options().count = {1, 1, cgPoints};
-        field_.options().hi = cg::Vec3{length, 0, 11};
     }
 
     void actionsAfterSolve() override {
         // The depth-averaged velocity of the last sample: int p_x dz / int rho dz (midpoint rule on
         // the grid), the mass-weighted mean of Fields/DepthAverage.h.
+        if (profile_.samples() == 0) return;
         const std::vector<double>& sums = profile_.lastSums();
         double mass = 0, momentum = 0;
         for (std::size_t p = 0; p < profile_.points().size(); ++p) {
@@ -69,10 +68,13 @@ public:
     }
 
 private:
-    void applyFlags(cg::InRunOptions& o) const {
+    // The options of both objects, completed from the flags (made when the run starts, restarts
+    // included).
+    cg::InRunOptions withFlags(cg::InRunOptions o, const char* name) const {
         require(fixed == "include" || fixed == "exclude" || fixed == "boundary", "--fixed: include, exclude or boundary");
         require(averaging == "snapshots" || averaging == "per-output" || averaging == "whole-run",
                 "--averaging: snapshots, per-output or whole-run");
+        o.name = settings().name + name;
         o.fixed = fixed == "include" ? cg::FixedParticles::include
                   : fixed == "exclude" ? cg::FixedParticles::exclude
                                        : cg::FixedParticles::boundary;
@@ -81,12 +83,24 @@ private:
                                                   : cg::InRunAveraging::wholeRun;
         o.everySteps = static_cast<std::uint64_t>(sampleSteps);
         o.everyTime = sampleSteps > 0 ? 0 : settings().outputInterval;
-        o.name = settings().name + (&o == &profile_.options() ? ".profile" : ".field");
+        o.contactStress = contactStress != 0;
+        return o;
+    }
+    cg::InRunOptions profileOptions() const {
+        return withFlags({.coordinates = "Z", .width = cgWidth, .count = {1, 1, cgPoints}, .lo = cg::Vec3{0, 0, -1},
+                          .hi = cg::Vec3{0, 0, 11}},
+                         ".profile");
+    }
+    cg::InRunOptions fieldOptions() const {
+        cg::InRunOptions o = withFlags({.coordinates = "XZ", .shape = cg::KernelShape::Gauss, .width = 1, .count = {8, 1, 6},
+                                        .lo = cg::Vec3{0, 0, -1}, .hi = cg::Vec3{length, 0, 11}},
+                                       ".field");
+        if (withField == 0) o.timeMax = -1;  // (never sampled)
+        return o;
     }
 
-    cg::InRunFields profile_{*this, {.coordinates = "Z", .lo = cg::Vec3{0, 0, -1}, .hi = cg::Vec3{0, 0, 11}}};
-    cg::InRunFields field_{*this, {.coordinates = "XZ", .shape = cg::KernelShape::Gauss, .width = 1,
-                                   .count = {8, 1, 6}, .lo = cg::Vec3{0, 0, -1}, .hi = cg::Vec3{8, 0, 11}}};
+    cg::InRunFields profile_{*this, [this] { return profileOptions(); }};
+    cg::InRunFields field_{*this, [this] { return fieldOptions(); }};
 };
 
 int main(int argc, char** argv) {
