@@ -105,6 +105,7 @@ void InRunFields::startRun(Simulation& simulation) {
     sum_.assign(points_.size() * layout_.count(), 0.0);
     last_.clear();
     samples_ = averaged_ = 0;
+    written_ = false;
     seconds_ = 0;
 }
 
@@ -130,6 +131,11 @@ void InRunFields::sample(Simulation& simulation, const ContactRecordList& contac
     if (options_.averaging == InRunAveraging::snapshots) {
         if (writes_) refusingAs(options_.name, [&] { return writer_->writeFrame(state.time, state.time, last_), 0; });
     } else {
+        if (written_) {
+            sum_.assign(sum_.size(), 0.0);
+            averaged_ = 0;
+            written_ = false;
+        }
         if (averaged_ == 0) firstTime_ = state.time;
         lastTime_ = state.time;
         for (std::size_t k = 0; k < sum_.size(); ++k) sum_[k] += last_[k];
@@ -146,10 +152,9 @@ std::vector<double> InRunFields::averageSums() const {
 }
 
 void InRunFields::writeAverage() {
-    if (averaged_ == 0) return;
+    if (averaged_ == 0 || written_) return;
     if (writes_) refusingAs(options_.name, [&] { return writer_->writeFrame(firstTime_, lastTime_, averageSums()), 0; });
-    sum_.assign(sum_.size(), 0.0);
-    averaged_ = 0;
+    written_ = true;
 }
 
 void InRunFields::afterOutput(Simulation&) {
@@ -161,7 +166,7 @@ void InRunFields::finishRun(Simulation& simulation) {
     if (writer_) refusingAs(options_.name, [&] { return writer_->close(), 0; });
     const double seconds = simulation.ranks().max(seconds_);
     say(simulation, "%s: in-run coarse graining %s: %d samples at %zu points in %.3g s (the slowest rank)%s%s\n",
-        simulation.settings().name.c_str(), options_.name.c_str(), samples_, points_.size(), seconds,
+        simulation.settings().name.c_str(), options_.name.empty() ? "(unnamed)" : options_.name.c_str(), samples_, points_.size(), seconds,
         options_.name.empty() ? "" : "; wrote ", options_.name.empty() ? "" : defaultOutputPath(options_.format, options_.name).c_str());
 }
 

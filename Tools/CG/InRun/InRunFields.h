@@ -61,7 +61,7 @@ struct InRunOptions {
     // A grid of count[a] points along each resolved lab axis a, at the cell centres of [lo, hi]
     // (Fields/EvaluationPoints.h; the domain box where not given), or listed `points`.
     std::array<long, 3> count{20, 20, 20};
-    std::optional<Vec3> lo, hi;
+    std::optional<Vec3> lo{}, hi{};
     std::vector<Vec3> points{};
     // Sample every `everySteps` steps (steps numbered as Simulation::step(); the step 0 of a run
     // from its set-up included), or every `everyTime` of simulated time (rounded to steps).
@@ -96,7 +96,8 @@ public:
     std::vector<OutputColumn> columns() const { return derivedColumns(layout_); }
     // The sums of the last sample (summed over the ranks), and the mean of the samples of the
     // current average (perOutput: since the last output; wholeRun: since the run began; snapshots:
-    // the last sample); empty before the first sample.
+    // the last sample); empty before the first sample. A written average stays readable (in the
+    // driver's actionsAfterSolve, say) until the next sample starts a new one.
     const std::vector<double>& lastSums() const { return last_; }
     std::vector<double> averageSums() const;
     int samplesAveraged() const { return averaged_; }
@@ -130,6 +131,7 @@ private:
     std::vector<bool> fixed_;
     std::vector<double> last_, sum_;
     int samples_ = 0, averaged_ = 0;
+    bool written_ = false;  // the average was written: the next sample starts a new one
     double firstTime_ = 0, lastTime_ = 0;
     double seconds_ = 0;
 };

@@ -12,6 +12,7 @@
 // .data/.fstat/.restart at its output steps, so that talus-cg can coarse-grain the same frames
 // (checkInRunAgainstFiles.py compares the two). At the end it prints the depth-averaged velocity
 // of the last sample's profile, read in a hook as a calibration would.
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -65,6 +66,11 @@ public:
         }
         say(*this, "%s: depth-averaged velocity %.6g, mass per area %.6g (last sample of the in-run profile)\n",
             settings().name.c_str(), momentum / mass, mass * 12.0 / cgPoints);
+        // The basal friction: the stress ratio at the base, averaged over the run's samples.
+        const std::vector<double> base = base_.averageSums();
+        say(*this, "%s: at the base -sigma_xz/sigma_zz = %.4g over %d samples (tan %g = %.4g in a steady flow)\n",
+            settings().name.c_str(), -base_.fieldAt(base, 0, "StressXZ") / base_.fieldAt(base, 0, "StressZZ"),
+            base_.samplesAveraged(), angle, std::tan(angle * pi / 180));
     }
 
 private:
@@ -99,6 +105,10 @@ private:
         return o;
     }
 
+    // The stress at the base: one point at z = 0.5 (the top of the base), a Z kernel of width 1, the
+    // base a boundary, every 100 steps, averaged over the run, no file.
+    cg::InRunFields base_{*this, {.coordinates = "Z", .width = 1, .points = {{0, 0, 0.5}}, .everySteps = 100,
+                                  .averaging = cg::InRunAveraging::wholeRun, .fixed = cg::FixedParticles::boundary}};
     cg::InRunFields profile_{*this, [this] { return profileOptions(); }};
     cg::InRunFields field_{*this, [this] { return fieldOptions(); }};
 };

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """In-run coarse graining against talus-cg on the same frames (InRun/InRunFields.h).
 
-usage: checkInRunAgainstFiles.py INRUN.csv FILES.csv [--frames N]
+usage: checkInRunAgainstFiles.py INRUN.csv FILES.csv [--frames FRAMES.csv]
 
 INRUN.csv was written by a run's in-run coarse graining (snapshots, one block per sample, each
 sample at an output step), FILES.csv by talus-cg from the .data/.fstat files that the same run
@@ -33,8 +33,13 @@ kernel at particle i and the sums over the particles:
 Positions printed with 15 digits (|x| <= 11 here: 6e-14) move each kernel value by at most
 |dW/dx| 6e-14 <= 1.8 W(0) / w 6e-14 (Lucy's largest slope is 16/9 W(0) / w, Gauss's 0.61),
 2.2e-13 W(0) for w = 0.5: an absolute 1e-12 times the frame's largest |value| of the column,
-which holds at least one particle's W(0)-sized contribution in these frames. Every bound is
-doubled for margin, and 1e-11 |F| is added for the two csv files' 12 digits. The script
+which holds at least one particle's W(0)-sized contribution in these frames.
+Time averages (INRUN.csv averaged over the run, FILES.csv by talus-cg --time-average, FRAMES.csv
+the same frames one by one): the sums are averaged before the fields are derived, so each sum's
+error is the mean of the frames' errors. The Cauchy-Schwarz bounds hold for the averaged sums
+themselves (the mean of sqrt(a_f b_f) is at most sqrt(mean a mean b), and |<p_a>| is at most
+sqrt(<rho> <K_aa>)); the contact bound is 1e-8 times the mean over the frames of each frame's
+largest |component|, taken from FRAMES.csv. Every bound is doubled for margin, and 1e-11 |F| is added for the two csv files' 12 digits. The script
 prints the largest ratio |difference| / bound over all numbers (it must stay below 1) and the
 largest relative difference of the density.
 """
@@ -55,7 +60,9 @@ def read(path):
 
 
 def blocks(names, rows):
-    """Rows grouped by the time column."""
+    """Rows grouped by the time column (one block for a time average, which has none)."""
+    if 't' not in names:
+        return {'average': rows}
     t = names.index('t')
     out = {}
     for r in rows:
@@ -65,6 +72,7 @@ def blocks(names, rows):
 
 def main():
     inrun_path, files_path = sys.argv[1], sys.argv[2]
+    frames_path = sys.argv[4] if len(sys.argv) > 4 and sys.argv[3] == '--frames' else None
     names, inrun = read(inrun_path)
     names_files, files = read(files_path)
     if names != names_files:
@@ -83,7 +91,13 @@ def main():
         family_max = {}
         for fam in ('ContactStress', 'InteractionForce'):
             cols = [k for n, k in col.items() if n.startswith(fam)]
-            family_max[fam] = max((abs(r[k]) for r in rb for k in cols), default=0.0)
+            if frames_path:  # (the mean over the averaged frames of each frame's largest value)
+                frame_names, frame_rows = read(frames_path)
+                per_frame = list(blocks(frame_names, frame_rows).values())
+                fcols = [k for k, n in enumerate(frame_names) if n.startswith(fam)]
+                family_max[fam] = sum(max(abs(r[k]) for r in rows for k in fcols) for rows in per_frame) / len(per_frame)
+            else:
+                family_max[fam] = max((abs(r[k]) for r in rb for k in cols), default=0.0)
         contacts_seen = contacts_seen or family_max.get('ContactStress', 0) > 0
         for x, y in zip(ra, rb):
             for n in ('x', 'y', 'z'):

@@ -15,3 +15,10 @@ grep "in-run coarse graining" run.log
 "$cg" InRunChute --coordinates XZ --function Gauss -w 1 -n 8 6 -x 0 8 -z -1 11 --fixed "$fixed" -o files.field.csv >> cg.log 2>&1
 /usr/bin/python3 "$check" InRunChute.profile.cg.csv files.profile.csv
 /usr/bin/python3 "$check" InRunChute.field.cg.csv files.field.csv
+# The same run with the depth profile averaged over the run (the sums averaged, then the fields
+# derived) against talus-cg --time-average of its files.
+"$@" "$driver" --fixed "$fixed" --averaging whole-run > run-average.log 2>&1 || { cat run-average.log; exit 1; }
+profile="$cg InRunChute --coordinates Z -n 96 -z -1 11 -w 0.5 --fixed $fixed"
+$profile --time-average -o files.average.csv >> cg.log 2>&1
+$profile -o files.frames.csv >> cg.log 2>&1
+/usr/bin/python3 "$check" InRunChute.profile.cg.csv files.average.csv --frames files.frames.csv
