@@ -5,13 +5,15 @@
 // disordered rough base of fixed spheres of diameter 1 and --particles spheres of diameter 1 and
 // density 6/pi (mass 1) that start at rest in a loose layer, fall onto the base and flow: linear
 // spring-dashpot with kn = 2e5, gn = 25 (tc = 5e-3, e = 0.88), kt = 2/7 kn, friction 0.5,
-// dt = 1e-4. Two coarse-graining objects sample it: a depth profile (coordinates Z, Lucy of width
+// dt = 1e-4. Coarse-graining objects sample it: a depth profile (coordinates Z, Lucy of width
 // --cg-width, --cg-points points over -1 < z < 11) and an XZ field (Gauss of width 1, 8 x 6
 // points), every --sample-steps steps (0: at the output steps), fixed particles as --fixed says,
-// averaged as --averaging says. With the files on (the default), the run also writes
-// .data/.fstat/.restart at its output steps, so that talus-cg can coarse-grain the same frames
-// (checkInRunAgainstFiles.py compares the two). At the end it prints the depth-averaged velocity
-// of the last sample's profile, read in a hook as a calibration would.
+// averaged as --averaging says; and, with fixed options, the stress at the top of the base every
+// 100 steps, averaged over the run (the example of Documentation/CoarseGraining.md). With the
+// files on (the default), the run also writes .data/.fstat/.restart at its output steps, so that
+// talus-cg can coarse-grain the same frames (checkInRunAgainstFiles.py compares the two). At the
+// end it prints the depth-averaged velocity of the last sample's profile and the basal friction
+// -sigma_xz/sigma_zz, read in a hook as a calibration would.
 #include <cmath>
 #include <cstdint>
 #include <string>
