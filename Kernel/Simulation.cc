@@ -20,6 +20,7 @@
 #include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
+#include "Sampling/StepSampler.h"
 #include "SimulationHost.h"
 
 namespace talus {
@@ -120,16 +121,21 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const std::uint64_t last = k + advance - 1;
         const bool finish = run_->finishing_;  // (asked for before this step: it is the run's last)
         const bool saving = finish || isOutputStep(state_.step + advance, last, steps, every);
+        const bool sampling = samplersWant(state_.step + 1, state_.step + advance);
         actionsBeforeTimeStep();
-        integrator_->advance(*host_, saving);
+        integrator_->advance(*host_, saving || sampling);
         k = last;
         if (finish) steps = k;
+        // (Sampled before the boundaries' end of step, which may remove particles the step's
+        // contact records name, and before the driver's hook, which may read the samples.)
+        if (sampling) sampleStep();
         for (const auto& b : scene_->boundaries()) b->afterStep(*this);
         actionsAfterTimeStep();
         if (saving) {
             writeOutput();
-            work_->records.release();  // (the next output step records anew)
+            for (StepSampler* sampler : samplers_.attached) sampler->afterOutput(*this);
         }
+        if (saving || sampling) work_->records.release();  // (the next output or sampled step records anew)
         // Boundaries may add and delete particles (waves run without them): count again when the
         // number changed (on ranks, where that takes all ranks, every 256 steps).
         if (advance == 1 && (ranks_->isSplit() ? (k & 255) == 0 : state_.particles.size() != counted)) {
@@ -161,6 +167,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrator_->report(*host_, out, state_.settings.name, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
+    for (StepSampler* sampler : samplers_.attached) sampler->finishRun(*this);
     actionsAfterSolve();
 }
 
@@ -227,6 +234,7 @@ void Simulation::initialise(bool restarted) {
     integrator_->tune(*host_, restarted);  // (before the first list build: waves order it)
     PositionWatch& positions = work_->positions;
     positions.changedBetweenSteps = 0;
+    for (StepSampler* sampler : samplers_.attached) sampler->startRun(*this);
     if (restarted) {
         integrator_->afterRestart(*host_);
         positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
@@ -235,11 +243,27 @@ void Simulation::initialise(bool restarted) {
 
     // Initial forces, and overlaps checked against the stricter initial limit.
     for (Vec3& x : state_.particles.position) state_.domain.wrap(x);
+    const bool sampling = samplersWant(state_.step, state_.step);
     computeForces(/*recordContacts*/ true, OverlapCheck::none);
     checkOverlaps(c.maxInitialOverlapFraction, /*initial*/ true);
     positions.noteLeft(positionSum(state_.particles, state_.particles.owned()), state_.particles.owned());
+    if (sampling) sampleStep();
     writeOutput();
+    for (StepSampler* sampler : samplers_.attached) sampler->afterOutput(*this);
     work_->records.release();
+}
+
+bool Simulation::samplersWant(std::uint64_t first, std::uint64_t last) {
+    std::vector<StepSampler*>& now = samplers_.sampling;
+    now.clear();
+    for (StepSampler* sampler : samplers_.attached)
+        if (sampler->wantsSteps(*this, first, last)) now.push_back(sampler);
+    work_->records.keepEachForSampler(!now.empty());
+    return !now.empty();
+}
+
+void Simulation::sampleStep() {
+    for (StepSampler* sampler : samplers_.sampling) sampler->sample(*this, work_->records.each());
 }
 
 void Simulation::computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted) {

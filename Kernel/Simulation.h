@@ -23,6 +23,7 @@
 #include "Parallel/RankContext.h"
 #include "Particles/Energies.h"
 #include "Run/Run.h"
+#include "Sampling/StepSampler.h"
 #include "Scene/Scene.h"
 #include "SimulationState.h"
 
@@ -80,6 +81,11 @@ public:
     // statistics (integrator().statistics()).
     const Integrator& integrator() const { return *integrator_; }
 
+    // Attaches a sampler that samples the run at its steps with each contact of them
+    // (Sampling/StepSampler.h; in-run coarse graining: Tools/CG/InRun). It must live as long as
+    // the simulation runs (a member of the driver, say); the samplers are called in the order added.
+    void addSampler(StepSampler& sampler) { samplers_.attached.push_back(&sampler); }
+
 protected:
     // --- hooks ---
     virtual void setupInitialConditions() {}
@@ -100,6 +106,9 @@ private:
     std::size_t mobileParticleCount() const;  // mobile (not fixed) particles in the whole scene
     void reorderParticles(bool withPreviousForces);
     std::uint64_t saveEvery() const;
+    // Whether a sampler wants a step of first..last; the samplers that want the current one sampled.
+    bool samplersWant(std::uint64_t first, std::uint64_t last);
+    void sampleStep();
 
     SimulationState state_;
     // Outside the saved state: the force loop's scratch and what the steppers keep between steps
@@ -112,6 +121,7 @@ private:
     std::unique_ptr<Scene> scene_;
     std::unique_ptr<OutputFiles> files_;
     RunStatistics lastRun_;
+    StepSamplers samplers_;
 };
 
 }  // namespace talus

@@ -40,7 +40,7 @@ class ContactRecords {
 public:
     // Empties the records for a new step; keepEach: keep every record, not only the sums.
     void start(bool keepEach, std::size_t ownedParticles) {
-        keepEach_ = keepEach;
+        keepEach_ = keepEach || keepEachForSampler_;
         owned_ = ownedParticles;
         each_.clear();
         count_ = 0;
@@ -54,6 +54,9 @@ public:
     }
     // Gives the memory of the records back (between output steps).
     void release() { ContactRecordList().swap(each_); }
+    // Whether the next recording keeps every record whatever start() is told: a step sampler
+    // (Sampling/StepSampler.h) needs each contact of its steps, with or without .fstat.
+    void keepEachForSampler(bool keep) { keepEachForSampler_ = keep; }
 
     const ContactRecordList& each() const { return each_; }  // empty unless kept
     std::size_t count() const { return count_; }
@@ -61,6 +64,7 @@ public:
 
 private:
     bool keepEach_ = true;
+    bool keepEachForSampler_ = false;
     std::size_t owned_ = std::numeric_limits<std::size_t>::max();
     ContactRecordList each_;
     std::size_t count_ = 0;

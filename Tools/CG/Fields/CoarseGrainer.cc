@@ -95,6 +95,11 @@ void CoarseGrainer::imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox&
     }
 }
 
+void CoarseGrainer::setExcluded(std::vector<bool> excluded) {
+    if (cylindrical_) cylindrical_->setExcluded(excluded);
+    setup_.excluded = std::move(excluded);
+}
+
 void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
                              const std::string& dataPath, const std::string& fstatPath) {
     if (!frame.mass.empty() && frame.mass.size() != frame.size())
@@ -132,7 +137,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                              std::to_string(s) + ", but densities are known for " + std::to_string(layout_.species) +
                              " species only (--density d0,d1,... or --restart)");
         }
-        if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
+        if ((!setup_.excluded.empty() && setup_.excluded[p]) || !frame.isOwned(p)) continue;
         const double volume = frame.volumeOf(p);
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
@@ -339,6 +344,24 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
     const int fields = layout_.count();
     const int first = layout_.contactStressIndex();
     const auto& a = setup_.width.a();
+    if (profile_.dimension() == 1 && setup_.width.isDiagonal()) {
+        // One resolved axis k (a depth profile): u = a_kk (r_k - x_k - s segment_k), a number.
+        const int k = setup_.coordinates.kernelAxes()[0];
+        const double ak = a[4 * k];
+        for (std::size_t p = 0; p < points.size(); ++p) {
+            double* row = sums.data() + p * fields + first;
+            const auto range = contactBins_.sourcesNear(points[p]);
+            for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
+                const std::uint32_t c = *it;
+                const double line =
+                    profile_.lineIntegralAlongAxis(ak * (points[p][k] - contactStart_[c][k]), -ak * contactSegment_[c][k]);
+                if (line == 0) continue;
+                const double w = scale_ * line;
+                for (int j = 0; j < 9; ++j) row[j] += w * contactTensor_[c][j];
+            }
+        }
+        return;
+    }
     auto apply = [&](const double d[3], double u[3]) {
         for (int r = 0; r < 3; ++r) u[r] = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
     };

@@ -50,6 +50,11 @@ public:
     void setFrame(const ParticleFrame& frame, const ContactFrame* contacts,
                   const std::string& dataPath = ".data", const std::string& fstatPath = ".fstat");
 
+    // The particles left out (CoarseGrainingSetup::excluded, one flag per line) from the next
+    // frame on: for a caller whose frames change in length (a run coarse-graining its own
+    // particles, InRun/InRunFields.h, whose fixed particles and ghosts change from sample to sample).
+    void setExcluded(std::vector<bool> excluded);
+
     // sums[p * layout().count() + f]: field f at points[p] (overwritten).
     void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
 

@@ -86,7 +86,7 @@ void CylindricalCoarseGrainer::setFrame(const ParticleFrame& frame, const std::s
                              ": a particle of species " + std::to_string(s) + ", but densities are known for " +
                              std::to_string(layout_.species) + " species only (--density d0,d1,... or --restart)");
         }
-        if (!setup_.excluded.empty() && setup_.excluded[p]) continue;
+        if ((!setup_.excluded.empty() && setup_.excluded[p]) || !frame.isOwned(p)) continue;
         const Vec3& x = frame.position[p];
         const Vec3& v = frame.velocity[p];
         const double d1 = x[across1] - c.axisPoint()[across1], d2 = x[across2] - c.axisPoint()[across2];

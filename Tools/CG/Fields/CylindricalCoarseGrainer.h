@@ -52,6 +52,7 @@ public:
 
     // Builds the particle sources of a frame (radius, axial coordinate, velocity components).
     void setFrame(const ParticleFrame& frame, const std::string& dataPath);
+    void setExcluded(std::vector<bool> excluded) { setup_.excluded = std::move(excluded); }
     // sums[p * layout().count() + f] at points (r, -, s) (overwritten); throws for r < 0.
     void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
 

@@ -36,6 +36,10 @@ struct ParticleFrame {
     // Masses, when the caller knows them (a driver coarse-graining its own particles, of any
     // shape); empty for .data frames, whose masses come from the volume and the species density.
     std::vector<double> mass;
+    // A run coarse-graining its own particles on MPI ranks (InRun/InRunFields.h): the last
+    // `ghosts` lines are copies of particles other ranks own, there only as the partners of this
+    // rank's contacts, and are left out of the particle fields. 0 for .data frames.
+    std::size_t ghosts = 0;
 
     std::size_t size() const { return radius.size(); }
     bool isShaped(std::size_t p) const { return !shaped.empty() && shaped[p]; }
@@ -43,6 +47,8 @@ struct ParticleFrame {
     double volumeOf(std::size_t p) const { return volume.empty() ? sphereVolume(p) : volume[p]; }
     // Particle p's mass: given, or its volume times the species' density.
     double massOf(std::size_t p, double density) const { return mass.empty() ? density * volumeOf(p) : mass[p]; }
+    // Whether line p is one of this frame's own particles (not a ghost).
+    bool isOwned(std::size_t p) const { return p + ghosts < size(); }
     double sphereVolume(std::size_t p) const { return 4.0 / 3.0 * std::numbers::pi * radius[p] * radius[p] * radius[p]; }
     void clear() {
         position.clear();

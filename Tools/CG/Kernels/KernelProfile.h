@@ -40,8 +40,15 @@ public:
     // for Gauss, a polynomial plus asinh for Lucy). Very short clipped intervals use Gauss-Legendre
     // quadrature instead, where the closed forms would lose digits to cancellation.
     double lineIntegral(const double u0[3], const double e[3]) const;
+    // The same for a kernel of one dimension (coordinates Z, say), where u0 and e are numbers:
+    // int_0^1 W1(u0 + s e) ds = [G(max) - G(min)] / |e| over the ends clipped to the support, with
+    // G(u) = c_1 int_0^u f(t^2) dt a polynomial (Lucy), erf (Gauss) or u (Heaviside): no square root
+    // or logarithm, about 4 times faster than lineIntegral. Short clipped intervals go to
+    // lineIntegral, as there.
+    double lineIntegralAlongAxis(double u0, double e) const;
 
 private:
+    double axialAntiderivative(double u) const;  // G(u) / c_1, odd, constant beyond the cut-off
     double lucyAntiderivative(double tau, double m2) const;
 
     KernelShape shape_;

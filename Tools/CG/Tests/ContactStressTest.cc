@@ -60,6 +60,11 @@ TEST(ContactStress, ExactLineIntegralsAgreeWithQuadrature) {
                 const double exact = profile.lineIntegral(u0, e);
                 ASSERT_NEAR(exact, reference, 1e-11 * std::max(1.0, std::abs(reference)))
                     << kernelShapeName(shape) << " " << d << "-D trial " << trial << " u0 " << u0[0] << " e " << e[0];
+                // One dimension (depth profiles): the antiderivative along the axis.
+                if (d == 1) {
+                    ASSERT_NEAR(profile.lineIntegralAlongAxis(u0[0], e[0]), reference, 1e-11 * std::max(1.0, std::abs(reference)))
+                        << kernelShapeName(shape) << " along the axis, trial " << trial << " u0 " << u0[0] << " e " << e[0];
+                }
             }
         }
     }

@@ -1,0 +1,51 @@
+#include "InRun/InRunFrame.h"
+
+#include "SimulationState.h"
+
+namespace talus::cg {
+
+namespace {
+talus::cg::Vec3 array(const talus::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+}  // namespace
+
+void fillInRunFrame(const SimulationState& state, const ContactRecordList* records, ParticleFrame& frame,
+                    ContactFrame& contacts, std::vector<bool>& fixed) {
+    const ParticleStore& p = state.particles;
+    frame.clear();
+    frame.time = state.time;
+    frame.box.lo = array(state.domain.lo);
+    frame.box.hi = array(state.domain.hi);
+    frame.ghosts = p.ghostCount;
+    const std::size_t n = p.size();
+    frame.position.reserve(n);
+    frame.velocity.reserve(n);
+    frame.radius.reserve(n);
+    frame.species.reserve(n);
+    frame.mass.reserve(n);
+    fixed.assign(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+        frame.position.push_back(array(p.position[i]));
+        frame.velocity.push_back(array(p.velocity[i]));
+        frame.radius.push_back(p.radius[i]);
+        frame.species.push_back(static_cast<int>(p.species[i]));
+        frame.mass.push_back(p.mass[i]);
+        fixed[i] = p.fixed[i] != 0;
+    }
+    contacts.time = state.time;
+    contacts.contacts.clear();
+    if (!records) return;
+    contacts.contacts.reserve(records->size());
+    for (const ContactRecord& r : *records) {
+        ContactLine c;
+        c.i = static_cast<long>(r.i);
+        c.j = static_cast<long>(r.j);
+        c.point = array(r.contactPoint);
+        // (the .fstat reader's normal of a wall contact points into the wall)
+        c.normal = array(c.isWall() ? talus::Vec3(-r.normal) : r.normal);
+        c.overlap = r.overlap;
+        c.force = array(r.normalForce * r.normal + r.tangentialForce);  // on i (fstat.md)
+        contacts.contacts.push_back(c);
+    }
+}
+
+}  // namespace talus::cg
