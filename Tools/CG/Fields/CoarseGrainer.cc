@@ -32,6 +32,12 @@ struct HeavisideShape {
 
 std::string lineOf(const std::string& path, long line) { return path + " line " + std::to_string(line); }
 
+// u = A d: a distance d in units of the (anisotropic) widths, A the inverse width matrix in rows.
+template <class Matrix>
+void inWidths(const Matrix& a, const double d[3], double u[3]) {
+    for (int r = 0; r < 3; ++r) u[r] = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
+}
+
 Vec3 shifted(Vec3 v, const Vec3& shift) {
     for (int k = 0; k < 3; ++k) v[k] += shift[k];
     return v;
@@ -311,10 +317,10 @@ void CoarseGrainer::evaluateParticles(const std::vector<Vec3>& points, std::vect
                 const double u0 = a[0] * d0, u1 = a[4] * d1, u2 = a[8] * d2;
                 q2 = u0 * u0 + u1 * u1 + u2 * u2;
             } else {
-                const double u0 = a[0] * d0 + a[1] * d1 + a[2] * d2;
-                const double u1 = a[3] * d0 + a[4] * d1 + a[5] * d2;
-                const double u2 = a[6] * d0 + a[7] * d1 + a[8] * d2;
-                q2 = u0 * u0 + u1 * u1 + u2 * u2;
+                const double d[3] = {d0, d1, d2};
+                double u[3];
+                inWidths(a, d, u);
+                q2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
             }
             if (q2 >= Profile::cutoffSquared) continue;
             const double w = weightScale * shape(q2);
@@ -362,9 +368,6 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
         }
         return;
     }
-    auto apply = [&](const double d[3], double u[3]) {
-        for (int r = 0; r < 3; ++r) u[r] = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
-    };
     for (std::size_t p = 0; p < points.size(); ++p) {
         double* row = sums.data() + p * fields + first;
         const auto range = contactBins_.sourcesNear(points[p]);
@@ -375,8 +378,8 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
                                  points[p][2] - contactStart_[c][2]};
             const double g[3] = {-contactSegment_[c][0], -contactSegment_[c][1], -contactSegment_[c][2]};
             double u0[3], e[3];
-            apply(d, u0);
-            apply(g, e);
+            inWidths(a, d, u0);
+            inWidths(a, g, e);
             const double line = profile_.lineIntegral(u0, e);
             if (line == 0) continue;
             const double w = scale_ * line;
@@ -396,11 +399,9 @@ void CoarseGrainer::evaluateBoundaryForces(const std::vector<Vec3>& points, std:
             const std::uint32_t c = *it;
             const double d[3] = {points[p][0] - boundaryPoint_[c][0], points[p][1] - boundaryPoint_[c][1],
                                  points[p][2] - boundaryPoint_[c][2]};
-            double q2 = 0;
-            for (int r = 0; r < 3; ++r) {
-                const double u = a[3 * r] * d[0] + a[3 * r + 1] * d[1] + a[3 * r + 2] * d[2];
-                q2 += u * u;
-            }
+            double u[3];
+            inWidths(a, d, u);
+            const double q2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
             const double w = scale_ * profile_.value(q2);
             for (int k = 0; k < 3; ++k) row[k] += w * boundaryForce_[c][k];
         }
