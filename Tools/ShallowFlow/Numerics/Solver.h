@@ -1,0 +1,81 @@
+// The finite-volume solver of the depth-averaged bidisperse model (Theory/DepthAveraged.md eq.
+// (4)-(9)) on a uniform 1-D grid of cells: MUSCL reconstruction of h, u, phi, HLL fluxes, the
+// gravity source explicit and the basal friction implicit in each forward-Euler stage, and Shu &
+// Osher's two-stage strong-stability-preserving Runge-Kutta scheme (Heun's method) in time.
+// Documentation/ShallowFlow.md describes the scheme and its tests.
+#pragma once
+
+#include <vector>
+
+#include "Model/Flux.h"
+#include "Model/FrictionLaw.h"
+#include "Model/ModelParameters.h"
+#include "Model/State.h"
+#include "Numerics/Boundary.h"
+#include "Numerics/Reconstruction.h"
+
+namespace talus::shallow {
+
+struct Grid {
+    double start = 0;   // x of the west face of the first cell
+    double length = 1;  // the domain [start, start + length]
+    std::size_t cells = 100;
+    double spacing() const { return length / static_cast<double>(cells); }
+    double centre(std::size_t i) const { return start + (static_cast<double>(i) + 0.5) * spacing(); }
+};
+
+struct NumericsSettings {
+    // dt = cfl dx / (largest signal speed). The scheme keeps h >= 0 for cfl <= 1/2 (each stage is a
+    // forward-Euler step over faces reconstructed within half a cell); above that a step that would
+    // leave a negative height is redone with half the time step.
+    double cfl = 0.45;
+    Limiter limiter = Limiter::VanLeer;
+    double dryHeight = 1e-10;  // below it u and phi are desingularised (Model/State.h)
+};
+
+class Solver {
+public:
+    // Throws InputError for a bad setting (cfl outside (0, 1], a non-positive dry height or grid,
+    // only one periodic end) or bad model parameters.
+    Solver(const Grid& grid, const ModelParameters& model, const NumericsSettings& numerics,
+           const BoundaryCondition& left, const BoundaryCondition& right);
+
+    // The initial state, one value per cell. Throws InputError for a negative h or phi outside
+    // [0, 1], naming the cell and its x.
+    void setCells(const std::vector<Conserved>& cells);
+    const std::vector<Conserved>& cells() const { return cells_; }
+    std::vector<Primitive> primitives() const;
+
+    // One time step of at most maxStep (and of the CFL step); returns the step taken.
+    double step(double maxStep);
+    // Steps until time() reaches endTime exactly.
+    void advanceTo(double endTime);
+
+    double time() const { return time_; }
+    long long steps() const { return steps_; }
+    long long retriedSteps() const { return retriedSteps_; }
+    const Grid& grid() const { return grid_; }
+    const FrictionLaw& friction() const { return friction_; }
+
+private:
+    // The fluxes through the faces of the state `u`; returns the largest signal speed.
+    double computeFluxes(const std::vector<Conserved>& u);
+    // target = the forward-Euler stage of length dt from `u` with the fluxes already computed,
+    // friction included; false if it left a height below round-off.
+    bool eulerStage(const std::vector<Conserved>& u, double dt, std::vector<Conserved>& target) const;
+
+    Grid grid_;
+    FluxModel fluxModel_;
+    FrictionLaw friction_;
+    double sinAngle_;
+    NumericsSettings numerics_;
+    BoundaryCondition left_, right_;
+
+    std::vector<Conserved> cells_, stage1_, stage2_;
+    std::vector<Primitive> withGhosts_, west_, east_;
+    std::vector<Conserved> faceFluxes_;
+    double time_ = 0;
+    long long steps_ = 0, retriedSteps_ = 0;
+};
+
+}  // namespace talus::shallow
