@@ -78,7 +78,14 @@ double Solver::computeFluxes(const std::vector<Conserved>& u) {
     return fastest;
 }
 
-bool Solver::eulerStage(const std::vector<Conserved>& u, double dt, std::vector<Conserved>& target) const {
+void Solver::applyFriction(Conserved& c, double dt) const {
+    // eq. (5): the friction -h mu cos(t) u/|u|, implicit in u (FrictionLaw::velocityAfterFriction).
+    const Primitive p = toPrimitive(c, numerics_.dryHeight);
+    c.hu = p.h > 0 ? c.h * friction_.velocityAfterFriction(p.h, p.phi, p.u, dt) : 0.0;
+}
+
+bool Solver::eulerStage(const std::vector<Conserved>& u, double dt, double frictionStep,
+                        std::vector<Conserved>& target) const {
     const double ratio = dt / grid_.spacing();
     const std::size_t n = u.size();
     target.resize(n);
@@ -97,9 +104,7 @@ bool Solver::eulerStage(const std::vector<Conserved>& u, double dt, std::vector<
             if (next.h < roundOff) return false;
             next.h = 0;
         }
-        // eq. (5): the friction -h mu cos(t) u/|u|, implicit in u (FrictionLaw::velocityAfterFriction).
-        const Primitive p = toPrimitive(next, numerics_.dryHeight);
-        next.hu = p.h > 0 ? next.h * friction_.velocityAfterFriction(p.h, p.phi, p.u, dt) : 0.0;
+        if (frictionStep > 0) applyFriction(next, frictionStep);
         target[i] = next;
     }
     return true;
@@ -110,12 +115,16 @@ double Solver::step(double maxStep) {
     double dt = fastest > 0 ? numerics_.cfl * grid_.spacing() / fastest : maxStep;
     dt = std::min(dt, maxStep);
     while (true) {
-        // Heun's method as a convex combination of forward-Euler stages (Shu & Osher 1988):
-        // U1 = E(U), U2 = E(U1), U(t + dt) = (U + U2) / 2.
-        bool positive = eulerStage(cells_, dt, stage1_);
+        // Heun's method as a convex combination of forward-Euler stages E (Shu & Osher 1988),
+        // U1 = E(U), U(t + dt) = (U + E(U1)) / 2, with the friction implicit: over dt in the first
+        // stage, and over dt/2 on the combination (the half step it carries in Heun's average).
+        // Both are fixed points exactly where friction balances gravity, and a stop in the first
+        // stage stays a stop (a friction term inside E(U1) would be halved by the average and
+        // leave the flow creeping towards rest, never at it).
+        bool positive = eulerStage(cells_, dt, dt, stage1_);
         if (positive) {
             computeFluxes(stage1_);
-            positive = eulerStage(stage1_, dt, stage2_);
+            positive = eulerStage(stage1_, dt, 0.0, stage2_);
         }
         if (positive) break;
         ++retriedSteps_;
@@ -124,9 +133,11 @@ double Solver::step(double maxStep) {
         if (dt < 1e-12 * grid_.spacing()) throw std::runtime_error("time step collapsed at t = " + str(time_));
     }
     for (std::size_t i = 0; i < cells_.size(); ++i) {
-        cells_[i].h = 0.5 * (cells_[i].h + stage2_[i].h);
-        cells_[i].hu = 0.5 * (cells_[i].hu + stage2_[i].hu);
-        cells_[i].hphi = 0.5 * (cells_[i].hphi + stage2_[i].hphi);
+        Conserved& c = cells_[i];
+        c.h = 0.5 * (c.h + stage2_[i].h);
+        c.hu = 0.5 * (c.hu + stage2_[i].hu);
+        c.hphi = 0.5 * (c.hphi + stage2_[i].hphi);
+        applyFriction(c, 0.5 * dt);
     }
     // The last step lands on the requested time exactly.
     time_ = dt == maxStep ? time_ + maxStep : time_ + dt;

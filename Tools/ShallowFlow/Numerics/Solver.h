@@ -1,7 +1,8 @@
 // The finite-volume solver of the depth-averaged bidisperse model (Theory/DepthAveraged.md eq.
 // (4)-(9)) on a uniform 1-D grid of cells: MUSCL reconstruction of h, u, phi, HLL fluxes, the
-// gravity source explicit and the basal friction implicit in each forward-Euler stage, and Shu &
-// Osher's two-stage strong-stability-preserving Runge-Kutta scheme (Heun's method) in time.
+// gravity source explicit, Shu & Osher's two-stage strong-stability-preserving Runge-Kutta scheme
+// (Heun's method) in time, and the basal friction implicit in the velocity (Solver::step says
+// where; it is first order in time, and keeps the steady uniform flow and a stop exactly).
 // Documentation/ShallowFlow.md describes the scheme and its tests.
 #pragma once
 
@@ -60,9 +61,11 @@ public:
 private:
     // The fluxes through the faces of the state `u`; returns the largest signal speed.
     double computeFluxes(const std::vector<Conserved>& u);
-    // target = the forward-Euler stage of length dt from `u` with the fluxes already computed,
-    // friction included; false if it left a height below round-off.
-    bool eulerStage(const std::vector<Conserved>& u, double dt, std::vector<Conserved>& target) const;
+    // target = the forward-Euler stage of length dt from `u` with the fluxes already computed
+    // (transport and gravity), then friction over frictionStep (none if 0); false if it left a
+    // height below round-off.
+    bool eulerStage(const std::vector<Conserved>& u, double dt, double frictionStep, std::vector<Conserved>& target) const;
+    void applyFriction(Conserved& cell, double dt) const;
 
     Grid grid_;
     FluxModel fluxModel_;
