@@ -126,7 +126,9 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         } else if (flag == "--frictionless") {
             o.model.frictionless = true;
         } else if (const auto setter = valued.find(flag); setter != valued.end()) {
-            if (i + 1 >= argc) throw InputError(flag + ": missing value");
+            // No value may start with "--" (negative numbers start with one dash): "--cells --cfl 1"
+            // lacks the number of cells rather than having "--cfl" as it.
+            if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0) throw InputError(flag + ": missing value");
             setter->second(argv[++i], flag);
         } else {
             throw InputError(flag + ": unknown option (talus-shallow --help lists them)");

@@ -37,7 +37,11 @@ void runShallowFlow(const ProgramOptions& o, std::ostream& log) {
     log << "talus-shallow: " << o.grid.cells << " cells of " << o.grid.spacing() << ", angle " << o.model.angleDegrees
         << " deg, alpha " << o.model.shapeFactor() << ", cfl " << o.numerics.cfl << ", limiter " << name(o.numerics.limiter)
         << "\n";
-    if (needsInflow) log << "  inflow h = " << inflow.h << ", u = " << inflow.u << ", phi = " << inflow.phi << "\n";
+    if (needsInflow) {
+        log.precision(12);
+        log << "  inflow h = " << inflow.h << ", u = " << inflow.u << ", phi = " << inflow.phi << "\n";
+        log.precision(6);
+    }
 
     std::ofstream profiles = openOutput(o.output + ".profiles.csv");
     std::ofstream fronts = openOutput(o.output + ".fronts.csv");
