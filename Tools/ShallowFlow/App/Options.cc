@@ -73,7 +73,8 @@ Boundaries and initial state:
 Numerics:
   --cfl C                 Courant number in (0, 1]; h >= 0 is guaranteed up to 0.5 (0.45)
   --limiter NAME          first-order, minmod or van-leer (van-leer)
-  --dry-height H          below it velocities are desingularised (1e-10)
+  --dry-height H          below it velocities are desingularised; it bounds the speed of
+                          the thin layer ahead of a front, hence the time step (0.01)
 Diagnostics:
   --front-height H        the height that marks the front (0.5)
   --shock-concentration PHI  the phi that marks the small-particle shock (0.25)

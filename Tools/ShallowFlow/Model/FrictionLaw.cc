@@ -3,7 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <numbers>
-#include <utility>
+#include <tuple>
 
 #include "Model/InputError.h"
 
@@ -20,13 +20,16 @@ FrictionLaw::FrictionLaw(const ModelParameters& p)
     large_ = constituent(p.large);
 }
 
-double FrictionLaw::mixedCoefficient(double h, double speed, double phi, double* derivative) const {
+FrictionLaw::AtHeight FrictionLaw::atHeight(double h, double phi) const {
     // k v / (1 + k v) = v / (v0 + v) with v0 = 1 / k = beta h sqrt(h cos t) / (A d): no overflow as
     // h -> 0 (where mu -> tan2 for any v > 0); F = 0 (v = 0) gives tan1.
     const double heightScale = h * std::sqrt(h * cosAngle_);
+    return {heightScale / small_.scale, heightScale / large_.scale, phi};
+}
+
+double FrictionLaw::mixedCoefficient(const AtHeight& a, double speed, double* derivative) const {
     double mu = 0, dmu = 0;
-    for (const auto& [c, weight] : {std::pair{small_, phi}, std::pair{large_, 1.0 - phi}}) {
-        const double v0 = heightScale / c.scale;
+    for (const auto& [c, v0, weight] : {std::tuple{small_, a.smallSpeed, a.phi}, std::tuple{large_, a.largeSpeed, 1.0 - a.phi}}) {
         const double sum = v0 + speed;
         const double ratio = sum > 0 ? speed / sum : 0.0;
         mu += weight * (c.tan1 + (c.tan2 - c.tan1) * ratio);
@@ -34,6 +37,10 @@ double FrictionLaw::mixedCoefficient(double h, double speed, double phi, double*
     }
     if (derivative) *derivative = dmu;
     return mu;
+}
+
+double FrictionLaw::mixedCoefficient(double h, double speed, double phi, double* derivative) const {
+    return mixedCoefficient(atHeight(h, phi), speed, derivative);
 }
 
 double FrictionLaw::coefficient(double h, double speed, double phi) const {
@@ -68,15 +75,18 @@ double FrictionLaw::velocityAfterFriction(double h, double phi, double uStar, do
     if (frictionless_) return uStar;
     const double drive = std::abs(uStar);
     const double impulse = dt * cosAngle_;
-    // Coulomb stop: the friction at rest, mu(h, 0, phi), takes all the momentum in this step.
-    if (impulse * mixedCoefficient(h, 0, phi, nullptr) >= drive) return 0.0;
+    // Coulomb stop: the friction at rest, mu(h, 0, phi) = phi tan d1S + (1 - phi) tan d1L, takes all
+    // the momentum in this step.
+    if (impulse * (phi * small_.tan1 + (1.0 - phi) * large_.tan1) >= drive) return 0.0;
     // g(v) = v + impulse mu(v) - drive is increasing and concave in v (mu is increasing and concave),
-    // so Newton from a point left of the root climbs to it monotonically; the first step from
-    // v = drive (where g >= 0) lands left of the root, and clipping at 0 keeps it there (g(0) < 0).
-    double v = drive;
+    // so Newton from a point left of the root climbs to it monotonically and quadratically. The
+    // explicit step v = drive - impulse mu(drive) is such a point (mu(v) <= mu(drive) makes g(v) <= 0)
+    // and is already close: one or two Newton steps reach round-off.
+    const AtHeight local = atHeight(h, phi);
+    double v = std::max(0.0, drive - impulse * mixedCoefficient(local, drive, nullptr));
     for (int iteration = 0; iteration < 50; ++iteration) {
         double dmu = 0;
-        const double g = v + impulse * mixedCoefficient(h, v, phi, &dmu) - drive;
+        const double g = v + impulse * mixedCoefficient(local, v, &dmu) - drive;
         const double next = std::max(0.0, v - g / (1.0 + impulse * dmu));
         const bool converged = std::abs(next - v) <= 1e-15 * drive;
         v = next;

@@ -33,6 +33,12 @@ private:
     struct Constituent {
         double tan1 = 0, tan2 = 0, scale = 0;  // scale = A d / beta
     };
+    // What depends on h and phi only: the speeds v0 of both constituents and phi.
+    struct AtHeight {
+        double smallSpeed = 0, largeSpeed = 0, phi = 0;
+    };
+    AtHeight atHeight(double h, double phi) const;
+    double mixedCoefficient(const AtHeight& local, double speed, double* derivative) const;
     double mixedCoefficient(double h, double speed, double phi, double* derivative) const;
 
     bool frictionless_;
