@@ -1,6 +1,7 @@
 #include "App/Options.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -20,6 +21,7 @@ double parseNumber(const std::string& text, const std::string& option) {
         used = 0;
     }
     if (used == 0 || used != text.size()) throw InputError(option + ": '" + text + "' is not a number");
+    if (!std::isfinite(value)) throw InputError(option + ": '" + text + "' is not a finite number");
     return value;
 }
 

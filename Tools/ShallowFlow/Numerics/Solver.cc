@@ -139,8 +139,7 @@ double Solver::step(double maxStep) {
         c.hphi = 0.5 * (c.hphi + stage2_[i].hphi);
         applyFriction(c, 0.5 * dt);
     }
-    // The last step lands on the requested time exactly.
-    time_ = dt == maxStep ? time_ + maxStep : time_ + dt;
+    time_ += dt;
     ++steps_;
     return dt;
 }
@@ -148,6 +147,7 @@ double Solver::step(double maxStep) {
 void Solver::advanceTo(double endTime) {
     while (time_ < endTime) {
         const double remaining = endTime - time_;
+        // The last step lands on the end time exactly (time_ + remaining may round off it).
         if (step(remaining) == remaining) time_ = endTime;
     }
 }
