@@ -11,7 +11,7 @@ Solver::Solver(const Grid& grid, const ModelParameters& model, const NumericsSet
                const BoundaryCondition& left, const BoundaryCondition& right)
     : grid_(grid),
       fluxModel_{model.shapeFactor(), model.basalSlip, model.cosAngle()},
-      friction_((model.validate(), model)),
+      friction_((model.validate(), model)),  // the parameters are checked before the law reads them
       sinAngle_(model.sinAngle()),
       numerics_(numerics),
       left_(left),
