@@ -2,19 +2,18 @@
 // "Closure relations for shallow granular flows from particle simulations").
 //
 // Methods. A chute inclined at --angle degrees, periodic in x (--length) and y (--width), has a
-// disordered rough base of fixed spheres of diameter --base-diameter (CalibrationBase.h). Spheres
-// of the thesis's Table 3.C.1 (MaserChutePairLaws.h: large d = 1, small d = 2^(-1/3), friction 0.5,
-// 0.25, 0.375 between) start at rest in a loose layer and fall onto the base: --species large,
-// small, or a mixture (--concentration: the small share of the volume), as many as fill the base
-// to --depth at solid fraction 0.6; with --start-time the layer first flows at --start-angle
-// (a flowing start, as h_stop is where a flow stops). Every --sample-interval FlowDecision.h decides from the kinetic
-// energy per unit mass and the mass flux: arrested (energy below --arrest-energy g d for
-// --arrest-time) or steady (both on a plateau over --window samples). A steady flow is averaged
-// for --average-time: height h (twice the mass-weighted mean height above z = 0), velocity u, its
-// depth profile, and the base's force on the flow, integrated over every step. Then the run ends
-// and writes NAME.result.csv: h, u, F = u / sqrt(g h cos theta), alpha = <u^2>/<u>^2 over the
-// depth, the basal friction mu = -Fx/Fz of the base's force and its normal part over the weight.
-// A steady flow's momentum balance makes the last 1 and mu = tan(theta): a check on each point.
+// disordered rough base of fixed spheres of diameter --base-diameter (CalibrationBase.h). Spheres of
+// the thesis's Table 3.C.1 (MaserChutePairLaws.h: large d = 1, small d = 2^(-1/3), friction 0.5, 0.25,
+// 0.375 between), --species large, small or a mixture (--concentration: the small share of the
+// volume), as many as fill the base to --depth at solid fraction 0.6 (StartLayer.h), start at rest in
+// a loose layer and fall onto the base; with --start-time they flow at --start-angle first. Every
+// --sample-interval FlowDecision.h decides from the kinetic energy per unit mass and the mass flux:
+// arrested (energy below --arrest-energy g d for --arrest-time) or steady (both on a plateau over
+// --window samples). A steady flow is averaged for --average-time: height h (twice the mass-weighted
+// mean height above z = 0), velocity u, its depth profile, and the base's force on the flow over
+// every step. Then the run ends and writes NAME.result.csv: h, u, F = u / sqrt(g h cos theta), alpha
+// = <u^2>/<u>^2 over the depth, the basal friction mu = -Fx/Fz of the base's force and its normal
+// part over the weight. A steady flow's momentum balance makes the last 1 and mu = tan(theta).
 #include <algorithm>
 #include <array>
 #include <cmath>
