@@ -2,18 +2,18 @@
 // "Closure relations for shallow granular flows from particle simulations").
 //
 // Methods. A chute inclined at --angle degrees, periodic in x (--length) and y (--width), has a
-// disordered rough base of fixed spheres of diameter 1 (Theory/Chutes.md "The rough base"). Spheres
-// of the thesis's Table 3.C.1 (MaserChutePairLaws.h: large d = 1, small d = 2^(-1/3), friction 0.5,
-// 0.25, 0.375 between) start at rest in a loose layer and fall onto the base: --species large,
-// small, or a mixture (--concentration: the small share of the volume), as many as fill the base
-// to --depth at solid fraction 0.6. Every --sample-interval FlowDecision.h decides from the kinetic
-// energy per unit mass and the mass flux: arrested (energy below --arrest-energy g d for
-// --arrest-time) or steady (both on a plateau over --window samples). A steady flow is averaged
-// for --average-time: height h (twice the mass-weighted mean height above z = 0), velocity u, its
-// depth profile, and the base's force on the flow, integrated over every step. Then the run ends
-// and writes NAME.result.csv: h, u, F = u / sqrt(g h cos theta), alpha = <u^2>/<u>^2 over the
-// depth, the basal friction mu = -Fx/Fz of the base's force and its normal part over the weight.
-// A steady flow's momentum balance makes the last 1 and mu = tan(theta): a check on each point.
+// disordered rough base of fixed spheres of diameter --base-diameter (CalibrationBase.h). Spheres of
+// the thesis's Table 3.C.1 (MaserChutePairLaws.h: large d = 1, small d = 2^(-1/3), friction 0.5, 0.25,
+// 0.375 between), --species large, small or a mixture (--concentration: the small share of the
+// volume), as many as fill the base to --depth at solid fraction 0.6 (StartLayer.h), start at rest in
+// a loose layer and fall onto the base; with --start-time they flow at --start-angle first. Every
+// --sample-interval FlowDecision.h decides from the kinetic energy per unit mass and the mass flux:
+// arrested (energy below --arrest-energy g d for --arrest-time) or steady (both on a plateau over
+// --window samples). A steady flow is averaged for --average-time: height h (twice the mass-weighted
+// mean height above z = 0), velocity u, its depth profile, and the base's force on the flow over
+// every step. Then the run ends and writes NAME.result.csv: h, u, F = u / sqrt(g h cos theta), alpha
+// = <u^2>/<u>^2 over the depth, the basal friction mu = -Fx/Fz of the base's force and its normal
+// part over the weight. A steady flow's momentum balance makes the last 1 and mu = tan(theta).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,9 +23,11 @@
 
 #include "../Chute/MaserChutePairLaws.h"
 #include "Chute/Chute.h"
+#include "CalibrationBase.h"
 #include "Chute/ChuteStatistics.h"
 #include "DepthAverage.h"
 #include "FlowDecision.h"
+#include "StartLayer.h"
 #include "Sampling/Sampling.h"
 
 using namespace talus;
@@ -40,7 +42,7 @@ constexpr double density = 6 / pi;                      // a large sphere has ma
 class CalibrationChute : public Chute {
 public:
     double angle = 24, depth = 6, concentration = 0.5, length = 10, width = 10, boxHeight = 60;
-    double sampleInterval = 1, averageTime = 100;
+    double sampleInterval = 1, averageTime = 100, baseDiameter = 1, startAngle = 0, startTime = 0;
     FlowCriteria criteria;
     int particles = 0, seed = 1, window = static_cast<int>(criteria.window);
     std::string species = "large";
@@ -54,6 +56,9 @@ public:
         run().addFlag("length", "periodic length along x", length);
         run().addFlag("width", "periodic width along y", width);
         run().addFlag("box-height", "height of the box above the base, which the start layer must fit", boxHeight);
+        run().addFlag("base-diameter", "diameter of the fixed base spheres (large diameters)", baseDiameter);
+        run().addFlag("start-angle", "inclination in degrees until --start-time (0: --angle)", startAngle);
+        run().addFlag("start-time", "time the layer flows at --start-angle before the decision starts", startTime);
         run().addFlag("seed", "seed of the base and of the start positions", seed);
         run().addFlag("sample-interval", "time between samples", sampleInterval);
         run().addFlag("window", "samples on a plateau that make the flow steady", window);
@@ -82,27 +87,19 @@ public:
         require(depth > 0 && particles >= 0, "--depth must be positive and --particles not negative");
         require(sampleInterval > 0 && averageTime > 0, "--sample-interval and --average-time must be positive");
         require(boxHeight > 0, "--box-height must be positive");
+        require(startTime >= 0 && (startAngle == 0 || (startAngle > 0 && startAngle < 90)),
+                "--start-time " + str(startTime) + ", --start-angle " + str(startAngle) +
+                    ": the start time must not be negative and the start angle must lie in (0, 90) degrees (0: --angle)");
         criteria.window = static_cast<std::size_t>(std::max(window, 0));
         decision_.reset(criteria);
-        setChuteAngle(angle);
+        setChuteAngle(startTime > 0 && startAngle > 0 ? startAngle : angle);
         setChuteGeometry({.length = length, .width = width, .height = boxHeight, .periodicEnds = true});
         addMaserChuteSpecies(*this, "table-3C1", 1, smallDiameter, 1, density * pi / 6 * std::pow(smallDiameter, 3),
-                             density, 1);
-        addBase(ChuteBase::disordered, 1, baseSpecies, static_cast<std::uint64_t>(seed));
-        // A square layer of fixed spheres 0.75 below it plugs the random base's rare holes: a sphere
-        // that fell into one would rest on the safety wall, whose force the base's force would miss.
-        const int nx = static_cast<int>(length), ny = static_cast<int>(width);
-        for (int i = 0; i < nx * ny; ++i)
-            scene().addFixedParticle(Vec3((i % nx + 0.5) * length / nx, (i / nx + 0.5) * width / ny, -0.75), 0.5, baseSpecies);
+                             density, baseDiameter);
+        addCalibrationBase(*this, baseDiameter, baseSpecies, static_cast<std::uint64_t>(seed));
 
-        // How many of each size: the small share of the volume, and the total from --depth or --particles.
         const double smallShare = species == "small" ? 1 : species == "large" ? 0 : concentration;
-        const double volumeL = pi / 6, volumeS = volumeL * std::pow(smallDiameter, 3);
-        const double meanVolume = 1 / (smallShare / volumeS + (1 - smallShare) / volumeL);  // per sphere
-        const double count = particles > 0 ? particles : std::round(0.6 * length * width * depth / meanVolume);
-        const auto small = static_cast<std::size_t>(std::round(count * meanVolume * smallShare / volumeS));
-        const auto large = static_cast<std::size_t>(count) - small;
-        const double volume = large * volumeL + small * volumeS;
+        const auto [large, small, volume] = startLayer(smallShare, smallDiameter, particles, depth, length * width);
         const double top = 1 + volume / (0.2 * length * width);
         require(top <= boxHeight, (particles > 0 ? "--particles " + std::to_string(particles) : "--depth " + str(depth)) +
                                       " does not fit the box: the loose start layer (solid fraction 0.2) reaches z = " +
@@ -124,6 +121,8 @@ public:
         const ChuteSnapshot s = last_ = measureChute(*this, length, width, smallSpecies);
         const double energyPerMass = s.kineticEnergy * length * width / flowMass_;
         series_.write({s.time, energyPerMass, s.massFlux, s.meanVelocity, s.height});
+        if (time() < startTime - 0.5 * settings().timeStep) return;  // the start: flowing at --start-angle
+        if (startTime > 0) setChuteAngle(angle);  // (the same gravity at every sample after the start)
         const FlowState state = decision_.add(time(), energyPerMass, s.massFlux);
         if (state == FlowState::arrested) {
             samples_ = {s};
@@ -156,14 +155,14 @@ private:
         const double averaged = averageFrom_ >= 0 && decision_.state() == FlowState::steady ? time() - averageFrom_ : 0;
         const double mu = averaged > 0 ? -force[0] / force[1] : NAN;
         const double weightCarried = averaged > 0 ? force[1] / averaged / (flowMass_ * std::cos(theta)) : NAN;
-        const double uChange = averaged > 0 ? (samples_.back().meanVelocity - samples_[0].meanVelocity) / velocity.mean : NAN;
+        const double uChange = averaged > 0 ? changeAlongTrend(u) / velocity.mean : NAN;
         const FlowState state = decision_.state();
         const char* name = flowStateName(state);
         writeFileOnce(*this, settings().name + ".result.csv", [&](std::ostream& out) {
-            out << "species,concentration,angle,length,width,seed,particles,h,u,uError,uChange,F,alpha,mu,weightCarried,"
+            out << "species,concentration,angle,length,width,baseDiameter,seed,particles,h,u,uError,uChange,F,alpha,mu,weightCarried,"
                    "state,decidedAt,averagedFor\n"
                 << species << ',' << (species == "mixture" ? concentration : species == "small" ? 1 : 0) << ','
-                << angle << ',' << length << ',' << width << ',' << seed << ',' << flowParticles() << ',' << height.mean
+                << angle << ',' << length << ',' << width << ',' << baseDiameter << ',' << seed << ',' << flowParticles() << ',' << height.mean
                 << ',' << velocity.mean << ',' << velocity.error << ',' << uChange << ',' << froude << ',' << profile.shapeFactor << ','
                 << mu << ',' << weightCarried << ',' << name << ',' << (state == FlowState::undecided ? time() : decision_.decidedAt())
                 << ',' << averaged << '\n';

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "Chute/ChuteStatistics.h"
 
@@ -26,5 +27,14 @@ inline DepthAverage depthAverage(const DepthProfile& profile) {
     return {momentum / mass, momentumFlux * mass / (momentum * momentum)};
 }
 
+// The change of a series sampled at equal intervals from its first to its last sample along its
+// least-squares line: slope (n - 1) with slope = sum (k - m) u_k / sum (k - m)^2, m = (n - 1)/2.
+// (The difference of the two end samples themselves carries their whole fluctuation.) 0 for n < 2.
+inline double changeAlongTrend(const std::vector<double>& u) {
+    const double n = double(u.size()), mid = (n - 1) / 2;
+    double moment = 0, spread = 0;
+    for (std::size_t k = 0; k < u.size(); ++k) moment += (double(k) - mid) * u[k], spread += (double(k) - mid) * (double(k) - mid);
+    return u.size() > 1 ? moment / spread * (n - 1) : 0;
+}
 
 }  // namespace talus

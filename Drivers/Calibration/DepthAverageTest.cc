@@ -59,3 +59,24 @@ TEST(DepthAverage, NoFlowHasNoShapeFactor) {
     EXPECT_TRUE(std::isnan(depthAverage(profileOf(10, [](double) { return 0.0; })).shapeFactor));
     EXPECT_TRUE(std::isnan(depthAverage(profileOf(0, [](double) { return 1.0; })).shapeFactor));
 }
+
+// The change along the trend over 31 samples (k = 0 ... 30, m = 15, sum (k - m)^2 = 2 (1^2 + ...
+// + 15^2) = 2480): a line u_k = 3 + 0.5 k changes by 0.5 x 30 = 15 exactly. Added to it, an
+// alternation +-1 and a bump of +5 at both ends change nothing (sum (k - m) e_k = 0: the terms of
+// k and 30 - k cancel), although the bump is all that the end samples see; one sample 1 too high
+// at the end moves the slope by (30 - 15) / 2480, the change by 30 times that.
+TEST(DepthAverage, ChangeAlongTrend) {
+    std::vector<double> line, alternating, ends;
+    for (int k = 0; k <= 30; ++k) {
+        line.push_back(3 + 0.5 * k);
+        alternating.push_back(line.back() + (k % 2 == 0 ? 1 : -1));
+        ends.push_back(line.back() + (k == 0 || k == 30 ? 5 : 0));
+    }
+    EXPECT_NEAR(changeAlongTrend(line), 15, 1e-12);
+    EXPECT_NEAR(changeAlongTrend(alternating), 15, 1e-12);
+    EXPECT_NEAR(changeAlongTrend(ends), 15, 1e-12);
+    std::vector<double> last = line;
+    last.back() += 1;
+    EXPECT_NEAR(changeAlongTrend(last), 15 + 30 * 15.0 / 2480, 1e-12);
+    EXPECT_DOUBLE_EQ(changeAlongTrend({2.0}), 0);
+}

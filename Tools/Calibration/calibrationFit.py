@@ -163,11 +163,16 @@ def bootstrap(points, d=1.0, with_gamma=True, replicates=200, seed=1, level=0.95
     return intervals, failed
 
 
-def read_points(path, species=None, max_change=0.2):
+def read_points(path, species=None, max_change=0.2, height_offset=0.0):
     """The result lines of a study (runStudy.py's results.csv, or one run's NAME.result.csv). A
     flowing point whose velocity changed by more than max_change of its mean over the averaging
     (column uChange) was still slowing down or speeding up: its state becomes "unsteady", and
-    neither the h_stop nor the flow-rule fit uses it."""
+    neither the h_stop nor the flow-rule fit uses it.
+
+    height_offset is taken off every h (Documentation/Calibration.md "Accounts", (c): the driver's
+    h, twice the mean height above z = 0, exceeds the thickness of a uniform layer of the same
+    volume at the bulk's solid fraction by about 0.74); F = u / sqrt(h cos theta) follows the new
+    h: F' = F sqrt(h / h')."""
     import csv
     with open(path) as f:
         rows = list(csv.DictReader(f))
@@ -182,7 +187,12 @@ def read_points(path, species=None, max_change=0.2):
             continue
         change = float(r.get("uChange", "nan"))
         state = "unsteady" if r["state"] == "flowing" and abs(change) > max_change else r["state"]
-        points.append({"angle": float(r["angle"]), "h": float(r["h"]), "F": float(r["F"]), "mu": float(r["mu"]),
+        h = float(r["h"]) - height_offset
+        if not h > 0:
+            raise FitError(f"--height-offset {height_offset:g}: the point at {r['angle']} degrees with h = {r['h']} "
+                           "would have no height left")
+        froude = float(r["F"]) * math.sqrt(float(r["h"]) / h)
+        points.append({"angle": float(r["angle"]), "h": h, "F": froude, "mu": float(r["mu"]),
                        "alpha": float(r["alpha"]), "state": state, "species": r["species"], "uChange": change})
     if not points:
         raise FitError(f"{path}: no points of species {species!r} (it has {', '.join(kinds)})")

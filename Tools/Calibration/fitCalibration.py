@@ -93,11 +93,14 @@ def main():
     parser.add_argument("--max-change", type=float, default=0.2,
                         help="flowing points whose velocity changed by more than this share over the averaging "
                              "are left out as unsteady (default 0.2)")
+    parser.add_argument("--height-offset", type=float, default=0.0,
+                        help="taken off every h before the fit (0.74: h as the thickness of a uniform layer of "
+                             "the bulk's solid fraction; Documentation/Calibration.md, accounts (c)); default 0")
     parser.add_argument("--bootstrap", type=int, default=200, help="resamples for the intervals (default 200)")
     parser.add_argument("--plots", help="prefix of the plots PREFIX-hstop.png, -flowrule.png, -friction.png")
     args = parser.parse_args()
     try:
-        points = cf.read_points(args.results, args.species, args.max_change)
+        points = cf.read_points(args.results, args.species, args.max_change, args.height_offset)
         species = points[0]["species"]
         d = args.diameter or (SMALL_DIAMETER if species == "small" else 1.0)
         fit = cf.fit_all(points, d, not args.no_gamma)

@@ -9,9 +9,9 @@ goes into OUT/results.csv (rewritten at every point, with the column `point`).
 
     Tools/Calibration/runStudy.py --driver build/Drivers/Calibration/CalibrationChute --out /work/studies/calibration
 
-Without grid flags the reduced default study runs: large spheres in a 10 x 10 box, angles 23 to
-27 degrees by 1, depths 1, 2, 3, 5 and 8 (25 points; estimated at 20 to 40 minutes on two free
-cores).
+Without grid flags the reduced default study runs: large spheres on a base of small spheres in a
+10 x 10 box, angles 23 to 27 degrees by 1, depths 1, 2, 3, 4 and 6 (25 points; estimated at 15
+to 30 minutes on two free cores).
 """
 import argparse
 import csv
@@ -24,17 +24,18 @@ import sys
 import time
 
 # The reduced default study: large spheres only (the fewest per unit depth) in a 10 x 10 box
-# (in 6 x 6 the flows near h_stop fluctuate too much for any plateau), five angles and five depths
-# around the large spheres' h_stop curve: Table 3.1 (d1 = 18.6, d2 = 30.06 deg, A = 3.07) gives
-# h_stop = 5.4, 3.8, 2.7, 1.9, 1.2 at 23 ... 27 deg, and the first points here came out near 1.5
-# times that (a depth D gives a flow height of about 1.2 D). A plateau of 100 samples within 5%,
-# 30 time units of averaging, at most 500 a point.
+# (in 6 x 6 the flows near h_stop fluctuate too much for any plateau) on a base of small spheres
+# (the thesis's section 3.2.4; on a base of large spheres h_stop comes out 1.5 to 2 times Table
+# 3.1's: Documentation/Calibration.md "Accounts"), five angles and five depths around the large
+# spheres' h_stop curve: Table 3.1 (d1 = 18.6, d2 = 30.06 deg, A = 3.07) gives h_stop = 5.4, 3.8,
+# 2.7, 1.9, 1.2 at 23 ... 27 deg, which the driver's h puts 0.74 higher, and a depth D gives h of
+# about D + 0.7. A plateau of 100 samples within 5%, 30 time units of averaging, at most 500 a point.
 REDUCED = {
     "species": ["large"],
     "angles": [23, 24, 25, 26, 27],
-    "depths": [1, 2, 3, 5, 8],
-    "driver_flags": ["--length", "10", "--width", "10", "--window", "100", "--tolerance", "0.05",
-                     "--average-time", "30", "--end-time", "500"],
+    "depths": [1, 2, 3, 4, 6],
+    "driver_flags": ["--base-diameter", "0.7937005259840998", "--length", "10", "--width", "10", "--window", "100",
+                     "--tolerance", "0.05", "--average-time", "30", "--end-time", "500"],
 }
 
 

@@ -102,6 +102,30 @@ try:
 except cf.FitError as error:
     check("2 steady flowing points" in str(error), f"two flowing points: refused saying {str(error)!r}")
 
+# The height offset: a study written with every h too high by 0.74 (the driver's h against the
+# thickness of a uniform layer, Calibration.md accounts (c)) and its F = u / sqrt(h cos theta)
+# computed with that h, F (h / (h + 0.74))^(1/2), read back with --height-offset 0.74, gives the
+# true h and F again (to rounding); an offset that leaves a point no height is refused naming the flag.
+import csv  # noqa: E402
+import tempfile  # noqa: E402
+with tempfile.TemporaryDirectory() as folder:
+    path = os.path.join(folder, "results.csv")
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=["species", "angle", "h", "F", "mu", "alpha", "state", "uChange"])
+        writer.writeheader()
+        for q in study:
+            writer.writerow({"species": "large", "angle": q["angle"], "h": repr(q["h"] + 0.74),
+                             "F": repr(q["F"] * math.sqrt(q["h"] / (q["h"] + 0.74))), "mu": q["mu"], "alpha": 1.2,
+                             "state": q["state"], "uChange": 0})
+    back = cf.read_points(path, "large", height_offset=0.74)
+    worst = max(max(abs(b["h"] - q["h"]), abs(b["F"] - q["F"])) for b, q in zip(back, study))
+    check(worst < 1e-12, f"height offset 0.74: h and F read back within {worst:.2g} of the study's")
+    try:
+        cf.read_points(path, "large", height_offset=50)
+        check(False, "height offset 50: refused")
+    except cf.FitError as error:
+        check("--height-offset 50" in str(error), f"height offset 50: refused saying {str(error)!r}")
+
 if failures:
     sys.exit(f"calibration fit: {len(failures)} checks failed")
 print("calibration fit: all checks passed")
