@@ -107,7 +107,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const OutputFormat format = outputFormatFromName(options.outputFormat);
-    requireOutputFormatAvailable(format);  // before reading anything
+    requireOutputFormatAvailable(format, options.pointsPath.empty());  // before reading anything
     RunInputs inputs = resolveRunInputs(options, log);
     const CoarseGrainingSetup& setup = inputs.setup;
     FrameStream frames(inputs, options);
@@ -318,7 +318,8 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     log << "talus-cg: " << framesUsed << " frames (t = " << str(firstTime) << " to " << str(lastTime) << ")"
         << (options.timeAverage ? " averaged" : smoother ? " smoothed in time to " + std::to_string(outputTimes) + " output times" : "")
         << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "
-        << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "") << "\n";
+        << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "")
+        << (format == OutputFormat::Vtk ? " and its .vti frames" : "") << "\n";
     return framesUsed;
 }
 

@@ -383,7 +383,7 @@ TEST(CylindricalFields, BadInputNamesTheFlag) {
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "y", "-x", "0", "1"}),
               "-x: cylindrical coordinates resolve the distance from the axis (-r MIN MAX) and the coordinate along the axis (the range flag of --axis)");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--output-format", "stat"}),
-              "--output-format stat: cylindrical coordinates are written as csv only");
+              "--output-format stat: cylindrical coordinates are written as csv or vtk only");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--mixing", "1"}), "--mixing: not available in cylindrical coordinates (--coordinates RZ)");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "y", "--axis-point", "0", "0", "0", "--restart", "none", "--widths", "1", "2", "3"}),
               "--widths: in cylindrical coordinates the widths across the axis (z and x for --axis y) must be equal, found 3 and 1");
