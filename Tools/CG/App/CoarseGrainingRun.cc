@@ -208,10 +208,12 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             kernel << "function " << kernelShapeName(setup.shape) << " (" << setup.coordinates.kernelDimension()
                    << "-D), width matrix B = [" << str(b[0]) << " " << str(b[1]) << " " << str(b[2]) << "; " << str(b[3]) << " "
                    << str(b[4]) << " " << str(b[5]) << "; " << str(b[6]) << " " << str(b[7]) << " " << str(b[8]) << "]";
-            comments.push_back(kernel.str());
+            const bool domainAverage = setup.coordinates.isDomainAverage();
+            comments.push_back(domainAverage ? std::string("no kernel: the domain average") : kernel.str());
             comments.push_back("coordinates " + setup.coordinates.name() +
-                               (setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
-                                                                  : std::string()) +
+                               (domainAverage ? " (sums over the particles and contacts of each frame divided by the volume of its domain box)"
+                                : setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
+                                                                          : std::string()) +
                                ", periodic " + periodicText(setup.periodic) + ", densities " + commaList(setup.speciesDensity) +
                                (options.fixedAsBoundary ? ", fixed particles a boundary" : options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
             if (setup.coordinates.isCylindrical()) {

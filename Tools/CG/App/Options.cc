@@ -259,6 +259,14 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         throw InputError(std::string(o.depthAverage ? "--depth-average" : "--mixing") +
                          " integrates over a regular grid: it cannot be used with --points");
     }
+    if (Coordinates::fromName(o.coordinates).isDomainAverage()) {
+        const bool range = o.range[0] || o.range[1] || o.range[2];
+        if (!o.counts.empty() || range || !o.pointsPath.empty() || o.depthAverage || o.mixingSpecies || o.widthScan) {
+            throw InputError(std::string(!o.counts.empty() ? "-n" : range ? "-x/-y/-z" : !o.pointsPath.empty() ? "--points"
+                                         : o.depthAverage ? "--depth-average" : o.mixingSpecies ? "--mixing" : "--width-scan") +
+                             ": --coordinates O gives one value per frame for the whole domain box: there are no points to choose");
+        }
+    }
     const bool cylindrical = Coordinates::fromName(o.coordinates).isCylindrical();
     if (!cylindrical && (o.axis || o.axisPoint || o.radiusRange)) {
         throw InputError(std::string(o.axis ? "--axis" : o.axisPoint ? "--axis-point" : "-r") +
@@ -349,7 +357,8 @@ coarse-graining function:
   --coordinates C         XYZ (default), XY, XZ, YZ, X, Y or Z: the resolved directions; the others
                           are averaged over the domain box of the .data header. RZ: cylindrical
                           coordinates about a drum axis (distance r and the coordinate along the
-                          axis, averaged over the angle); R: also averaged along the axis
+                          axis, averaged over the angle); R: also averaged along the axis; O: the
+                          domain average (one value per frame: sums over the box / its volume)
   --axis x|y|z            drum axis direction for RZ and R (default: the restart file's cylinder wall)
   --axis-point X Y Z      a point of the drum axis (default: the restart file's cylinder wall)
 

@@ -46,13 +46,14 @@ Vec3 shifted(Vec3 v, const Vec3& shift) {
 }  // namespace
 
 CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
-    : setup_(std::move(setup)), profile_(setup_.shape, setup_.coordinates.kernelDimension()) {
+    // (The domain average O has no kernel; its profile, of dimension 1, is never evaluated.)
+    : setup_(std::move(setup)), profile_(setup_.shape, std::max(1, setup_.coordinates.kernelDimension())) {
     if (setup_.coordinates.isCylindrical()) {
         cylindrical_ = std::make_unique<CylindricalCoarseGrainer>(setup_);
         layout_ = cylindrical_->layout();
         return;
     }
-    setup_.width.restrictTo(setup_.coordinates);
+    if (!setup_.coordinates.isDomainAverage()) setup_.width.restrictTo(setup_.coordinates);
     if (setup_.speciesDensity.empty()) throw InputError("--density: at least one species density is needed");
     for (double rho : setup_.speciesDensity) {
         if (!(rho > 0) || !std::isfinite(rho)) throw InputError("--density: densities must be positive, found " + str(rho));
@@ -116,7 +117,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         return;
     }
     const std::size_t n = frame.size();
-    scale_ = setup_.width.determinant() / setup_.coordinates.averagedLength(frame.box);
+    scale_ = (setup_.coordinates.isDomainAverage() ? 1.0 : setup_.width.determinant()) / setup_.coordinates.averagedLength(frame.box);
     if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
         throw InputError(lineOf(dataPath, frame.headerLine) + ": the frame at t = " + str(frame.time) + " has " +
                          std::to_string(n) + " particles, but the restart file describes " +
@@ -408,12 +409,46 @@ void CoarseGrainer::evaluateBoundaryForces(const std::vector<Vec3>& points, std:
     }
 }
 
+void CoarseGrainer::evaluateDomainAverage(double* row) const {
+    // Every source with the weight 1/V (scale_): the sums of eq. (5)-(10) with W replaced by the
+    // indicator of the box over its volume and the line integral by 1 (whole branches).
+    for (std::size_t i = 0; i < mass_.size(); ++i) {
+        const double m = mass_[i] * scale_;
+        const Vec3& v = velocity_[i];
+        row[FieldSums::density] += m;
+        row[FieldSums::volumeFraction] += volume_[i] * scale_;
+        for (int c = 0; c < 3; ++c) row[FieldSums::momentum + c] += m * v[c];
+        row[FieldSums::momentumFlux + 0] += m * v[0] * v[0];
+        row[FieldSums::momentumFlux + 1] += m * v[0] * v[1];
+        row[FieldSums::momentumFlux + 2] += m * v[0] * v[2];
+        row[FieldSums::momentumFlux + 3] += m * v[1] * v[1];
+        row[FieldSums::momentumFlux + 4] += m * v[1] * v[2];
+        row[FieldSums::momentumFlux + 5] += m * v[2] * v[2];
+        row[FieldSums::speciesDensity + species_[i]] += m;
+    }
+    if (!setup_.contactStress) return;
+    for (const auto& tensor : contactTensor_) {
+        for (int k = 0; k < 9; ++k) row[layout_.contactStressIndex() + k] += scale_ * tensor[k];
+    }
+    for (const Vec3& f : boundaryForce_) {
+        for (int k = 0; k < 3; ++k) row[layout_.interactionForceIndex() + k] += scale_ * f[k];
+    }
+}
+
 void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const {
     if (cylindrical_) {
         cylindrical_->evaluate(points, sums);
         return;
     }
     sums.assign(points.size() * layout_.count(), 0.0);
+    if (setup_.coordinates.isDomainAverage()) {
+        // One value for the whole box, the same at every point asked for.
+        const std::size_t fields = static_cast<std::size_t>(layout_.count());
+        if (points.empty()) return;
+        evaluateDomainAverage(sums.data());
+        for (std::size_t p = 1; p < points.size(); ++p) std::copy_n(sums.data(), fields, sums.data() + p * fields);
+        return;
+    }
     const bool diagonal = setup_.width.isDiagonal();
     switch (setup_.shape) {
         case KernelShape::Lucy:

@@ -17,6 +17,16 @@
 // force f to the particle's centre, where the momentum balance of the flow needs it:
 //   d(rho V)/dt + div(rho V V) = -div(sigma) + rho g + InteractionForce
 // (sigma = kinetic + contact stress, compressive positive as everywhere in talus-cg).
+//
+// The domain average (coordinates O, MercuryCG's `O`): no kernel. Each field is the sum over the
+// particles (every one in the frame that is not left out, wherever its centre) and contacts of
+// the frame divided by the volume V of the domain box of the .data header:
+//   rho = sum_i m_i / V,  p = sum_i m_i v_i / V,  K = sum_i m_i v_i v_i / V,
+//   sigma_c = sum_c w_c f_c (x) b_c / V (whole branches; for a boundary contact b = r_i - c),
+//   InteractionForce = sum over boundary contacts of w_c f_c / V.
+// It is the limit of every kernel field averaged over a periodic box (Theory/CoarseGraining.md
+// eq. (5)-(10) integrated over the box, int_box W = 1); in a box that is not periodic the mean of
+// a kernel field is smaller by the parts of the kernels that reach out of the box.
 #pragma once
 
 #include <array>
@@ -67,6 +77,8 @@ private:
     void evaluateParticles(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateContacts(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    // Coordinates O: the sums over every source of the frame divided by the box volume.
+    void evaluateDomainAverage(double* row) const;
     // Adds the contact lines of a frame: pair segments, boundary segments and boundary forces.
     void addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
                      const std::string& fstatPath, const Vec3& cellSize);
