@@ -124,8 +124,7 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
 
     in.fstatPath = options.fstatPath;
     if (in.fstatPath.empty() && exists(in.base + ".fstat")) in.fstatPath = in.base + ".fstat";
-    // The contact stress is not available in cylindrical coordinates (CylindricalCoarseGrainer.h).
-    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty() && !setup.coordinates.isCylindrical());
+    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty());
     if (setup.contactStress && in.fstatPath.empty()) {
         throw InputError("--stress on: no contact file (" + in.base + ".fstat not found; give --fstat FILE)");
     }

@@ -114,7 +114,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         throw InputError("the frame at t = " + str(frame.time) + " has " + std::to_string(frame.size()) +
                          " particles but " + std::to_string(frame.mass.size()) + " masses");
     if (cylindrical_) {
-        cylindrical_->setFrame(frame, dataPath);
+        cylindrical_->setFrame(frame, contacts, dataPath, fstatPath);
         return;
     }
     const std::size_t n = frame.size();

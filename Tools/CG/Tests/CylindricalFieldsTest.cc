@@ -389,8 +389,6 @@ TEST(CylindricalFields, BadInputNamesTheFlag) {
               "--widths: in cylindrical coordinates the widths across the axis (z and x for --axis y) must be equal, found 3 and 1");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "z", "--axis-point", "0", "0", "0", "--restart", "none", "--periodic", "x"}),
               "--coordinates RZ: the domain is periodic along x, across the drum axis z: cylindrical coordinates need a bounded cross-section (--periodic)");
-    EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "z", "--axis-point", "0", "0", "0", "--restart", "none", "--stress", "on", "--fstat", "x.fstat"}),
-              "--stress on: the contact stress is not available in cylindrical coordinates (--coordinates RZ) yet");
     // The axis and drum radius from the restart file's cylinder wall (the plane is skipped); an
     // --axis along another direction finds no wall there.
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--restart", "cylinder.restart"}, drumRestart), "no error");
