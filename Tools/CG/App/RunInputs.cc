@@ -151,7 +151,9 @@ bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
         const double time = frame.time;
         ++frameIndex_;
         if (fstat_) {
-            if (!fstat_->readFrame(contacts)) {
+            // Room for 8 lines per particle (both sides of 4 contacts: a dense packing has about
+            // 3 per particle); pages not written to cost nothing.
+            if (!fstat_->readFrame(contacts, 8 * frame.size())) {
                 throw InputError(inputs_.fstatPath + ": ends before the frame at t = " + str(time) + " of " + inputs_.dataPath +
                                  " (line " + std::to_string(headerLine) + ")");
             }

@@ -23,7 +23,7 @@ struct FilePathSettings {
 };
 
 // Prints one line per stage (seconds, share of the total, particles per second) and the program's
-// own time; removes the files it wrote.
+// own time; removes the files it wrote unless settings.directory named their folder.
 void runFilePathBenchmark(const FilePathSettings& settings, std::ostream& out, ProgressLog& progress);
 
 }  // namespace talus::cg::benchmark

@@ -25,7 +25,8 @@ const char* usage =
     "  --study full|quick|off the speed-against-error study (default full)\n"
     "  --file-path N          the whole path from .data and .fstat files to fields for about N particles\n"
     "                         on a lattice with their contacts, stage by stage (default 0: off)\n"
-    "  --directory DIR        where --file-path writes its files (default: the temporary directory)\n";
+    "  --directory DIR        where --file-path writes its files, and keeps them (default: a temporary\n"
+    "                         folder, removed afterwards)\n";
 
 std::vector<long> parseCounts(const std::string& text) {
     std::vector<long> counts;

@@ -137,7 +137,20 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
     mass_.clear();
     volume_.clear();
     species_.clear();
-    std::vector<Vec3> boxLo, boxHi, shifts;
+    // The support boxes go to scratch vectors kept from frame to frame (fresh memory costs page
+    // faults at every frame).
+    std::vector<Vec3>& boxLo = boxLo_;
+    std::vector<Vec3>& boxHi = boxHi_;
+    boxLo.clear();
+    boxHi.clear();
+    position_.reserve(n);
+    velocity_.reserve(n);
+    mass_.reserve(n);
+    volume_.reserve(n);
+    species_.reserve(n);
+    boxLo.reserve(n);
+    boxHi.reserve(n);
+    std::vector<Vec3> shifts;
     for (std::size_t p = 0; p < n; ++p) {
         const int s = frame.species[p];
         if (s >= layout_.species) {
@@ -175,7 +188,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
 
     contactStart_.clear();
     contactSegment_.clear();
-    contactTensor_.clear();
+    contactForce_.clear();
     boundaryPoint_.clear();
     boundaryForce_.clear();
     if (setup_.contactStress && contacts != nullptr) {
@@ -188,10 +201,16 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
 
 void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
                                 const std::string& fstatPath, const Vec3& cellSize) {
-    std::vector<ContactBranch> branches;
-    contactBranches(frame, contacts, setup_, dataPath, fstatPath, branches);
-    std::vector<Vec3> segmentLo, segmentHi, pointLo, pointHi, shifts;
-    for (const ContactBranch& branch : branches) {
+    // Mostly one source per line (more only for images across periodic faces).
+    contactStart_.reserve(contacts.contacts.size());
+    contactSegment_.reserve(contacts.contacts.size());
+    contactForce_.reserve(contacts.contacts.size());
+    std::vector<Vec3>& segmentLo = boxLo_;
+    std::vector<Vec3>& segmentHi = boxHi_;
+    segmentLo.clear();
+    segmentHi.clear();
+    std::vector<Vec3> pointLo, pointHi, shifts;
+    forEachContactBranch(frame, contacts, setup_, dataPath, fstatPath, [&](const ContactBranch& branch) {
         const Vec3& xm = branch.centre;
         const Vec3& b = branch.branch;
         Vec3 lo, hi;
@@ -203,11 +222,11 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         for (const Vec3& shift : shifts) {
             contactStart_.push_back(shifted(xm, shift));
             contactSegment_.push_back({-b[0], -b[1], -b[2]});
-            contactTensor_.push_back(branch.tensor);
+            contactForce_.push_back(branch.force);
             segmentLo.push_back(shifted(lo, shift));
             segmentHi.push_back(shifted(hi, shift));
         }
-        if (!branch.boundary) continue;
+        if (!branch.boundary) return;
         // The boundary's force on the flowing particle, spread from the contact point x_m - b
         // (the image of c next to x_m).
         const Vec3 point{xm[0] - b[0], xm[1] - b[1], xm[2] - b[2]};
@@ -222,7 +241,7 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
             pointLo.push_back(shifted(lo, shift));
             pointHi.push_back(shifted(hi, shift));
         }
-    }
+    });
     contactBins_.build(segmentLo, segmentHi, setup_.coordinates.resolvesAxes(), cellSize);
     boundaryBins_.build(pointLo, pointHi, setup_.coordinates.resolvesAxes(), cellSize);
 }
@@ -293,7 +312,7 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
                     profile_.lineIntegralAlongAxis(ak * (points[p][k] - contactStart_[c][k]), -ak * contactSegment_[c][k]);
                 if (line == 0) continue;
                 const double w = scale_ * line;
-                for (int j = 0; j < 9; ++j) row[j] += w * contactTensor_[c][j];
+                addContactTensor(c, w, row);
             }
         }
         return;
@@ -313,8 +332,17 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
             const double line = profile_.lineIntegral(u0, e);
             if (line == 0) continue;
             const double w = scale_ * line;
-            for (int k = 0; k < 9; ++k) row[k] += w * contactTensor_[c][k];
+            addContactTensor(c, w, row);
         }
+    }
+}
+
+void CoarseGrainer::addContactTensor(std::size_t c, double weight, double* row) const {
+    // The tensor f (x) b of the branch, b = -segment.
+    const Vec3& f = contactForce_[c];
+    const Vec3& segment = contactSegment_[c];
+    for (int r = 0; r < 3; ++r) {
+        for (int col = 0; col < 3; ++col) row[3 * r + col] += weight * (f[r] * -segment[col]);
     }
 }
 
@@ -356,9 +384,7 @@ void CoarseGrainer::evaluateDomainAverage(double* row) const {
         row[FieldSums::speciesDensity + species_[i]] += m;
     }
     if (!setup_.contactStress) return;
-    for (const auto& tensor : contactTensor_) {
-        for (int k = 0; k < 9; ++k) row[layout_.contactStressIndex() + k] += scale_ * tensor[k];
-    }
+    for (std::size_t c = 0; c < contactForce_.size(); ++c) addContactTensor(c, scale_, row + layout_.contactStressIndex());
     for (const Vec3& f : boundaryForce_) {
         for (int k = 0; k < 3; ++k) row[layout_.interactionForceIndex() + k] += scale_ * f[k];
     }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <vector>
 
 #include "IO/InputError.h"
 
@@ -13,26 +13,30 @@ namespace {
 std::string lineOf(const std::string& path, long line) { return path + " line " + std::to_string(line); }
 }  // namespace
 
-void contactBranches(const ParticleFrame& frame, const ContactFrame& contacts, const CoarseGrainingSetup& setup,
-                     const std::string& dataPath, const std::string& fstatPath, std::vector<ContactBranch>& branches) {
-    branches.clear();
+void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contacts, const CoarseGrainingSetup& setup,
+                          const std::string& dataPath, const std::string& fstatPath,
+                          const std::function<void(const ContactBranch&)>& visit) {
     const std::size_t n = frame.size();
     // A pair may be written once (Talus and MercuryDPM skip the side of a fixed particle) or
-    // once from each side (fstat.md): each line counts 1/(lines of its pair), so every contact
-    // counts once whichever convention the file follows.
-    std::unordered_map<std::uint64_t, int> linesOfPair;
-    auto key = [](long i, long j) {
-        const auto a = static_cast<std::uint64_t>(std::min(i, j)), b = static_cast<std::uint64_t>(std::max(i, j));
-        return (a << 32) | b;
-    };
-    for (const ContactLine& c : contacts.contacts) {
+    // once from each side (fstat.md): the lines of a pair are grouped (sorted by pair key; each
+    // wall line alone) and become one branch carrying the mean of their forces, so every
+    // contact counts once whichever convention the file follows, and a pair written twice is
+    // spread once (half the work and memory of a frame).
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order;  // (pair key, line index)
+    order.reserve(contacts.contacts.size());
+    for (std::size_t k = 0; k < contacts.contacts.size(); ++k) {
+        const ContactLine& c = contacts.contacts[k];
         if (c.i >= static_cast<long>(n) || c.j >= static_cast<long>(n)) {
             throw InputError(lineOf(fstatPath, c.line) + ": particle " + std::to_string(std::max(c.i, c.j)) +
                              " is not in the .data frame at t = " + str(frame.time) + " (" + std::to_string(n) +
                              " particles; files of runs that deleted particles are not supported yet)");
         }
-        if (!c.isWall()) ++linesOfPair[key(c.i, c.j)];
+        const std::uint64_t pairKey = c.isWall() ? (std::uint64_t{1} << 63) | k
+                                                 : (static_cast<std::uint64_t>(std::min(c.i, c.j)) << 32) |
+                                                       static_cast<std::uint64_t>(std::max(c.i, c.j));
+        order.emplace_back(pairKey, static_cast<std::uint32_t>(k));
     }
+    std::sort(order.begin(), order.end());
     auto minimumImage = [&](Vec3 d) {
         for (int k = 0; k < 3; ++k) {
             const double length = frame.box.length(k);
@@ -44,7 +48,9 @@ void contactBranches(const ParticleFrame& frame, const ContactFrame& contacts, c
     auto inBoundary = [&](long p) {
         return setup.excludedAreBoundary && !setup.excluded.empty() && setup.excluded[static_cast<std::size_t>(p)];
     };
-    for (const ContactLine& c : contacts.contacts) {
+    // The branch of one line (weight 1) and the particle at its centre; false for a contact within
+    // the boundary.
+    auto branchOf = [&](const ContactLine& c, ContactBranch& branch, long& flowing) {
         const Vec3& xi = frame.position[c.i];
         const double ri = frame.radius[c.i];
         // The contact point lies r_i - dn/2 from the centre of i (fstat.md): a cheap check that
@@ -67,8 +73,7 @@ void contactBranches(const ParticleFrame& frame, const ContactFrame& contacts, c
         // a contact within the boundary is not part of the flow.
         const bool iBoundary = inBoundary(c.i);
         const bool jBoundary = c.isWall() || inBoundary(c.j);
-        if (iBoundary && jBoundary) continue;
-        const double weight = c.isWall() ? 1.0 : 1.0 / linesOfPair[key(c.i, c.j)];
+        if (iBoundary && jBoundary) return false;
         // The flowing particle m (at x_m), the force f on it, and the branch b from the far end
         // of the segment to x_m (Theory/CoarseGraining.md eq. (10)): the partner's centre for a
         // pair (its image next to i: the normal points from j to i), the contact point for a
@@ -89,15 +94,33 @@ void contactBranches(const ParticleFrame& frame, const ContactFrame& contacts, c
             for (int k = 0; k < 3; ++k) f[k] = -f[k];
             b = minimumImage({xm[0] - c.point[0], xm[1] - c.point[1], xm[2] - c.point[2]});
         }
-        ContactBranch branch;
         branch.centre = xm;
         branch.branch = b;
-        for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) branch.tensor[3 * r + col] = weight * f[r] * b[col];
-            branch.force[r] = weight * f[r];
-        }
+        branch.force = f;
         branch.boundary = iBoundary || jBoundary;
-        branches.push_back(branch);
+        flowing = iBoundary ? c.j : c.i;
+        return true;
+    };
+    ContactBranch branch, other;
+    long centreParticle = 0, otherParticle = 0;
+    for (std::size_t first = 0; first < order.size();) {
+        std::size_t end = first + 1;
+        while (end < order.size() && order[end].first == order[first].first) ++end;
+        // The first line's branch; the force on its centre particle the mean over the lines (the
+        // other side's force on its own particle turned round: both sides describe the same
+        // contact, equal up to the printed digits), so the tensor f (x) b is the mean of the lines'.
+        if (branchOf(contacts.contacts[order[first].second], branch, centreParticle)) {
+            for (std::size_t k = first + 1; k < end; ++k) {
+                branchOf(contacts.contacts[order[k].second], other, otherParticle);
+                const double sign = otherParticle == centreParticle ? 1.0 : -1.0;
+                for (int c = 0; c < 3; ++c) branch.force[c] += sign * other.force[c];
+            }
+            if (end - first > 1) {
+                for (double& f : branch.force) f /= static_cast<double>(end - first);
+            }
+            visit(branch);
+        }
+        first = end;
     }
 }
 

@@ -86,11 +86,9 @@ CylindricalCoarseGrainer::LocalFrame CylindricalCoarseGrainer::localFrame(const 
 void CylindricalCoarseGrainer::setContacts(const ParticleFrame& frame, const ContactFrame& contacts, double reachAcross,
                                            double reachAlong, const std::function<void(double, const std::function<void(double)>&)>& images,
                                            const std::string& dataPath, const std::string& fstatPath) {
-    std::vector<ContactBranch> branches;
-    contactBranches(frame, contacts, setup_, dataPath, fstatPath, branches);
     std::vector<Vec3> contactLo, contactHi, boundaryLo, boundaryHi;
     const int across1 = (axis_ + 1) % 3, across2 = (axis_ + 2) % 3;
-    for (const ContactBranch& branch : branches) {
+    forEachContactBranch(frame, contacts, setup_, dataPath, fstatPath, [&](const ContactBranch& branch) {
         const Vec3& b = branch.branch;
         // Theory/CoarseGraining.md eq. (10) in cylindrical components: the line integral along
         // the branch by composite Gauss-Legendre quadrature, panels at most a quarter of a width
@@ -106,7 +104,7 @@ void CylindricalCoarseGrainer::setContacts(const ParticleFrame& frame, const Con
                     for (int q = 0; q < 3; ++q) {
                         double value = 0;
                         for (int i = 0; i < 3; ++i) {
-                            for (int j = 0; j < 3; ++j) value += local.basis[r][i] * branch.tensor[3 * i + j] * local.basis[q][j];
+                            for (int j = 0; j < 3; ++j) value += local.basis[r][i] * branch.force[i] * b[j] * local.basis[q][j];
                         }
                         tensor[3 * r + q] = weight * value;
                     }
@@ -120,7 +118,7 @@ void CylindricalCoarseGrainer::setContacts(const ParticleFrame& frame, const Con
                 });
             }
         }
-        if (!branch.boundary) continue;
+        if (!branch.boundary) return;
         // The boundary's force, from the contact point centre - b, in its local components.
         const LocalFrame local = localFrame({branch.centre[0] - b[0], branch.centre[1] - b[1], branch.centre[2] - b[2]});
         Vec3 force;
@@ -134,7 +132,7 @@ void CylindricalCoarseGrainer::setContacts(const ParticleFrame& frame, const Con
             boundaryLo.push_back({local.radius - reachAcross, 0.0, s - reachAlong});
             boundaryHi.push_back({local.radius + reachAcross, 0.0, s + reachAlong});
         });
-    }
+    });
     const Vec3 cellSize{2 * reachAcross, 1.0, std::max(2 * reachAlong, 1e-12)};
     contactBins_.build(contactLo, contactHi, setup_.coordinates.resolvesAxes(), cellSize);
     boundaryBins_.build(boundaryLo, boundaryHi, setup_.coordinates.resolvesAxes(), cellSize);

@@ -31,7 +31,7 @@
 // Contact stress (Theory/CoarseGraining.md eq. (10)) in the components (r, theta, s): the Cartesian
 // contact stress averaged over the angle in the local basis. Each branch's line integral is taken
 // by composite Gauss-Legendre quadrature (5 points per panel, panels at most maxPanelInWidths of
-// the widths long); each node carries the branch's tensor T = w f (x) b turned into the local
+// the widths long); each node carries the branch's tensor T = f (x) b turned into the local
 // basis of the node, T'_ab = e_a . T e_b, and, as the momentum flux above, contributes
 //   rr: T'rr (C0 + C2)/2 + T'tt (C0 - C2)/2     tt: T'rr (C0 - C2)/2 + T'tt (C0 + C2)/2
 //   rt: T'rt (C0 + C2)/2 - T'tr (C0 - C2)/2     tr: T'tr (C0 + C2)/2 - T'rt (C0 - C2)/2
