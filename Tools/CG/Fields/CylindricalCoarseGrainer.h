@@ -58,7 +58,7 @@ namespace talus::cg {
 class CylindricalCoarseGrainer {
 public:
     // Throws InputError naming the flag for a missing axis, a width matrix that is not isotropic
-    // across the axis, periodic directions across the axis, or --stress on.
+    // across the axis, or periodic directions across the axis.
     explicit CylindricalCoarseGrainer(const CoarseGrainingSetup& setup);
 
     const FieldSums& layout() const { return layout_; }
