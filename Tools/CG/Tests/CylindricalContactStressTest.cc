@@ -9,6 +9,8 @@
 // The configuration: 30 touching pairs with random normals and frictional forces at distances 0
 // to 3 from the axis (some straddling it), 3 of them written from both sides, and 4 particles
 // touching walls (boundary contacts: InteractionForce).
+// A second test checks statics: a ring of spheres pressed together and held by the drum wall
+// satisfies the radial balance of the cylindrical components, hoop term included.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,4 +152,67 @@ TEST(CylindricalContactStress, EqualsTheAngularMeanOfTheCartesianStressInTheLoca
         EXPECT_GT(largestForce, 0);
         std::printf("%s: contact stress within %.2g, boundary force within %.2g of the largest value\n", name, worst, worstForce);
     }
+}
+
+TEST(CylindricalContactStress, StaticRingSatisfiesTheRadialBalanceInCylindricalComponents) {
+    // Statics: 12 equal spheres on a ring of radius R0 about the z axis, each pressed by its two
+    // neighbours with force F along the chord (outwards in sum, 2 F sin(pi/12) along e_r) and
+    // held by the drum wall outside with 2 F sin(pi/12) inwards. Every particle is at rest with no
+    // net force, so the coarse-grained momentum balance reads div(sigma_c) = InteractionForce at
+    // every point (CoarseGrainer.h "Boundaries"), and for the angular means, in cylindrical
+    // components (divergence over the second index, the theta derivatives of means vanishing):
+    //   r:  d(sigma_rr)/dr + d(sigma_rs)/ds + (sigma_rr - sigma_tt)/r = f_r
+    //   s:  d(sigma_sr)/dr + d(sigma_ss)/ds + sigma_sr/r              = f_s
+    // The hoop term (sigma_rr - sigma_tt)/r is what carries the ring's load: without it the
+    // balance fails by the whole wall force.
+    const int n = 12;
+    const double r0 = 3, f = 2.0, pi = std::numbers::pi, chord = 2 * r0 * std::sin(pi / n);
+    const double radius = 0.5 * chord + 0.02, overlap = 2 * radius - chord;
+    const Vec3 centre{0, 0, 0};
+    std::vector<Vec3> x;
+    for (int k = 0; k < n; ++k) x.push_back({r0 * std::cos(2 * pi * k / n), r0 * std::sin(2 * pi * k / n), 0});
+    Contacts c;
+    c.frame = makeFrame(x, std::vector<double>(n, radius), DomainBox{{-6, -6, -3}, {6, 6, 3}});
+    for (int k = 0; k < n; ++k) {
+        for (int side : {-1, 1}) {
+            const int j = (k + side + n) % n;
+            const Vec3 d{x[k][0] - x[j][0], x[k][1] - x[j][1], x[k][2] - x[j][2]};
+            const Vec3 normal{d[0] / chord, d[1] / chord, d[2] / chord};
+            const Vec3 point{x[k][0] - (radius - overlap / 2) * normal[0], x[k][1] - (radius - overlap / 2) * normal[1], 0};
+            c.contacts.contacts.push_back(contactLine(k, j, point, normal, overlap, {f * normal[0], f * normal[1], 0}));
+        }
+        // The wall outside: normal into the wall (+e_r), force on the particle -2 F sin(pi/n) e_r.
+        const Vec3 er{x[k][0] / r0, x[k][1] / r0, 0};
+        const double wallOverlap = 0.01, hold = 2 * f * std::sin(pi / n);
+        const Vec3 point{x[k][0] + (radius - wallOverlap / 2) * er[0], x[k][1] + (radius - wallOverlap / 2) * er[1], 0};
+        c.contacts.contacts.push_back(contactLine(k, -1, point, er, wallOverlap, {-hold * er[0], -hold * er[1], 0}));
+    }
+    CoarseGrainer cylindrical = grainer("RZ", 1.0, centre);
+    cylindrical.setFrame(c.frame, &c.contacts);
+    const FieldSums layout = cylindrical.layout();
+    const double h = 1e-3;
+    double worst = 0, hoopScale = 0, forceScale = 0;
+    for (double r : {2.2, 2.6, 3.0, 3.3, 3.7}) {
+        for (double s : {-0.4, 0.0, 0.3}) {
+            std::vector<Vec3> points{{r, 0, s}, {r - h, 0, s}, {r + h, 0, s}, {r, 0, s - h}, {r, 0, s + h}};
+            std::vector<double> sums;
+            cylindrical.evaluate(points, sums);
+            auto stress = [&](int p, int k) { return sums[p * layout.count() + layout.contactStressIndex() + k]; };
+            auto force = [&](int k) { return sums[layout.interactionForceIndex() + k]; };
+            const double radial = (stress(2, 0) - stress(1, 0)) / (2 * h) + (stress(4, 2) - stress(3, 2)) / (2 * h) +
+                                  (stress(0, 0) - stress(0, 4)) / r - force(0);
+            const double axial = (stress(2, 6) - stress(1, 6)) / (2 * h) + (stress(4, 8) - stress(3, 8)) / (2 * h) + stress(0, 6) / r - force(2);
+            hoopScale = std::max(hoopScale, std::abs(stress(0, 0) - stress(0, 4)) / r);
+            forceScale = std::max(forceScale, std::abs(force(0)));
+            worst = std::max({worst, std::abs(radial), std::abs(axial)});
+        }
+    }
+    // Central differences with h = 1e-3 of fields that vary on the width 1: h^2 errors ~1e-6 of
+    // the scale; the branch quadrature's error (5e-7 of the largest value, smooth in r, s) enters
+    // its derivatives at the same order. 1e-4 of the wall force density is far above both and far
+    // below the hoop term that the balance needs.
+    EXPECT_GT(hoopScale, 0.1 * forceScale);
+    EXPECT_LT(worst, 1e-4 * forceScale) << "hoop scale " << hoopScale << ", wall force density " << forceScale;
+    std::printf("static ring: largest residual %.2g of the wall force density %.3g (hoop term up to %.3g)\n", worst / forceScale,
+                forceScale, hoopScale);
 }
