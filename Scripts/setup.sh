@@ -14,7 +14,7 @@ packages=(
   libfmt-dev
   python3 python3-numpy python3-matplotlib python3-h5py  # Tools/Plot
   python3-scipy             # Tools/Calibration (the fit)
-  python3-vtk9              # SelfTests/checkVtu.py reads the .vtu frames with VTK's readers
+  python3-vtk9              # VTK's readers: SelfTests/checkVtu.py (.vtu frames), Tools/CG/Tests/checkVtkOutput.py (.vti fields)
 )
 missing=()
 for p in "${packages[@]}"; do

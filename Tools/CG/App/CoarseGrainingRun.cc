@@ -107,7 +107,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const OutputFormat format = outputFormatFromName(options.outputFormat);
-    requireOutputFormatAvailable(format);  // before reading anything
+    requireOutputFormatAvailable(format, options.pointsPath.empty());  // before reading anything
     RunInputs inputs = resolveRunInputs(options, log);
     const CoarseGrainingSetup& setup = inputs.setup;
     FrameStream frames(inputs, options);
@@ -208,10 +208,12 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             kernel << "function " << kernelShapeName(setup.shape) << " (" << setup.coordinates.kernelDimension()
                    << "-D), width matrix B = [" << str(b[0]) << " " << str(b[1]) << " " << str(b[2]) << "; " << str(b[3]) << " "
                    << str(b[4]) << " " << str(b[5]) << "; " << str(b[6]) << " " << str(b[7]) << " " << str(b[8]) << "]";
-            comments.push_back(kernel.str());
+            const bool domainAverage = setup.coordinates.isDomainAverage();
+            comments.push_back(domainAverage ? std::string("no kernel: the domain average") : kernel.str());
             comments.push_back("coordinates " + setup.coordinates.name() +
-                               (setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
-                                                                  : std::string()) +
+                               (domainAverage ? " (sums over the particles and contacts of each frame divided by the volume of its domain box)"
+                                : setup.coordinates.kernelDimension() < 3 ? " (fields divided by the lengths of the averaged directions of the domain box)"
+                                                                          : std::string()) +
                                ", periodic " + periodicText(setup.periodic) + ", densities " + commaList(setup.speciesDensity) +
                                (options.fixedAsBoundary ? ", fixed particles a boundary" : options.excludeFixed ? ", fixed particles excluded" : ", fixed particles included"));
             if (setup.coordinates.isCylindrical()) {
@@ -318,7 +320,8 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     log << "talus-cg: " << framesUsed << " frames (t = " << str(firstTime) << " to " << str(lastTime) << ")"
         << (options.timeAverage ? " averaged" : smoother ? " smoothed in time to " + std::to_string(outputTimes) + " output times" : "")
         << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "
-        << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "") << "\n";
+        << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "")
+        << (format == OutputFormat::Vtk ? " and its .vti frames" : "") << "\n";
     return framesUsed;
 }
 

@@ -2,6 +2,7 @@
 
 #include "App/CsvWriter.h"
 #include "App/StatFieldWriter.h"
+#include "App/VtkFieldWriter.h"
 #include "Fields/DerivedFields.h"
 #include "IO/InputError.h"
 #ifdef TALUS_CG_WITH_HDF5
@@ -38,13 +39,15 @@ OutputFormat outputFormatFromName(const std::string& name) {
     if (name == "csv") return OutputFormat::Csv;
     if (name == "hdf5" || name == "h5") return OutputFormat::Hdf5;
     if (name == "stat") return OutputFormat::Stat;
-    throw InputError("--output-format: unknown format '" + name + "' (csv, hdf5 or stat)");
+    if (name == "vtk") return OutputFormat::Vtk;
+    throw InputError("--output-format: unknown format '" + name + "' (csv, hdf5, stat or vtk)");
 }
 
 std::string defaultOutputPath(OutputFormat format, const std::string& base) {
     switch (format) {
         case OutputFormat::Hdf5: return base + ".cg.h5";
         case OutputFormat::Stat: return base + ".stat";
+        case OutputFormat::Vtk: return base + ".cg.pvd";
         case OutputFormat::Csv: break;
     }
     return base + ".cg.csv";
@@ -58,7 +61,11 @@ bool hdf5Available() {
 #endif
 }
 
-void requireOutputFormatAvailable(OutputFormat format) {
+void requireOutputFormatAvailable(OutputFormat format, bool grid) {
+    if (format == OutputFormat::Vtk && !grid) {
+        throw InputError("--output-format vtk: writes VTK image data, which needs a regular grid (-n, -x/-y/-z); the points of "
+                         "--points are not one: use csv, hdf5 or stat for a point list");
+    }
     if (format == OutputFormat::Hdf5 && !hdf5Available()) {
         throw InputError("--output-format hdf5: this talus-cg was built without HDF5 (install libhdf5-dev and "
                          "configure with -DTALUS_WITH_HDF5=ON); use csv or stat");
@@ -66,9 +73,10 @@ void requireOutputFormatAvailable(OutputFormat format) {
 }
 
 std::unique_ptr<FieldWriter> makeFieldWriter(OutputFormat format, const FieldOutputSetup& setup) {
-    requireOutputFormatAvailable(format);
+    requireOutputFormatAvailable(format, setup.grid);
     switch (format) {
         case OutputFormat::Stat: return std::make_unique<StatFieldWriter>(setup);
+        case OutputFormat::Vtk: return std::make_unique<VtkFieldWriter>(setup);
         case OutputFormat::Hdf5:
 #ifdef TALUS_CG_WITH_HDF5
             return std::make_unique<Hdf5FieldWriter>(setup);

@@ -4,6 +4,7 @@
 //   csv   CsvFieldWriter   (CsvWriter.h): '#' lines, column names, one row per point
 //   hdf5  Hdf5FieldWriter  (Hdf5FieldWriter.h): datasets per frame plus an XDMF file for ParaView
 //   stat  StatFieldWriter  (StatFieldWriter.h): MercuryDPM's .stat layout
+//   vtk   VtkFieldWriter   (VtkFieldWriter.h): a .pvd series of XML ImageData (.vti) files
 //
 // Every writer gets the additive sums of FieldSums.h and derives what it writes from them.
 #pragma once
@@ -21,11 +22,11 @@
 
 namespace talus::cg {
 
-enum class OutputFormat { Csv, Hdf5, Stat };
+enum class OutputFormat { Csv, Hdf5, Stat, Vtk };
 
-// "csv", "hdf5" (or "h5"), "stat"; throws InputError naming --output-format otherwise.
+// "csv", "hdf5" (or "h5"), "stat", "vtk"; throws InputError naming --output-format otherwise.
 OutputFormat outputFormatFromName(const std::string& name);
-// The default file name for NAME: NAME.cg.csv, NAME.cg.h5, NAME.stat.
+// The default file name for NAME: NAME.cg.csv, NAME.cg.h5, NAME.stat, NAME.cg.pvd.
 std::string defaultOutputPath(OutputFormat format, const std::string& base);
 
 // What every writer needs to know about the points and the run.
@@ -53,10 +54,11 @@ public:
     virtual void close() = 0;
 };
 
-// Throws InputError for hdf5 in a build without HDF5 (before any file is read).
-void requireOutputFormatAvailable(OutputFormat format);
+// Throws InputError for hdf5 in a build without HDF5, and for vtk (image data) without a grid
+// (before any file is read).
+void requireOutputFormatAvailable(OutputFormat format, bool grid);
 
-// Throws InputError for hdf5 in a build without HDF5.
+// Throws InputError as requireOutputFormatAvailable.
 std::unique_ptr<FieldWriter> makeFieldWriter(OutputFormat format, const FieldOutputSetup& setup);
 
 // Whether this build writes HDF5 (CMake option TALUS_WITH_HDF5 and HDF5 found).

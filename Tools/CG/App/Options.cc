@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "App/FieldWriter.h"
 #include "Fields/Coordinates.h"
 #include "IO/InputError.h"
 #include "IO/TextFile.h"
@@ -212,9 +213,7 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.mixingPath = args.text(given);
         } else if (option == "--output-format") {
             o.outputFormat = args.text(given);
-            if (o.outputFormat != "csv" && o.outputFormat != "hdf5" && o.outputFormat != "h5" && o.outputFormat != "stat") {
-                throw InputError(given + ": unknown format '" + o.outputFormat + "' (csv, hdf5 or stat)");
-            }
+            outputFormatFromName(o.outputFormat);  // throws for an unknown name
         } else if (option == "--width-scan") {
             o.widthScan = true;
         } else if (option == "--scan-x" || option == "--scan-y" || option == "--scan-z") {
@@ -260,6 +259,14 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         throw InputError(std::string(o.depthAverage ? "--depth-average" : "--mixing") +
                          " integrates over a regular grid: it cannot be used with --points");
     }
+    if (Coordinates::fromName(o.coordinates).isDomainAverage()) {
+        const bool range = o.range[0] || o.range[1] || o.range[2];
+        if (!o.counts.empty() || range || !o.pointsPath.empty() || o.depthAverage || o.mixingSpecies || o.widthScan) {
+            throw InputError(std::string(!o.counts.empty() ? "-n" : range ? "-x/-y/-z" : !o.pointsPath.empty() ? "--points"
+                                         : o.depthAverage ? "--depth-average" : o.mixingSpecies ? "--mixing" : "--width-scan") +
+                             ": --coordinates O gives one value per frame for the whole domain box: there are no points to choose");
+        }
+    }
     const bool cylindrical = Coordinates::fromName(o.coordinates).isCylindrical();
     if (!cylindrical && (o.axis || o.axisPoint || o.radiusRange)) {
         throw InputError(std::string(o.axis ? "--axis" : o.axisPoint ? "--axis-point" : "-r") +
@@ -276,8 +283,8 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             throw InputError(std::string(o.depthAverage ? "--depth-average" : o.mixingSpecies ? "--mixing" : "--width-scan") +
                              ": not available in cylindrical coordinates (--coordinates " + o.coordinates + ")");
         }
-        if (o.outputFormat != "csv") {
-            throw InputError("--output-format " + o.outputFormat + ": cylindrical coordinates are written as csv only");
+        if (o.outputFormat != "csv" && o.outputFormat != "vtk") {
+            throw InputError("--output-format " + o.outputFormat + ": cylindrical coordinates are written as csv or vtk only");
         }
     }
     if (o.timeSmoothing && o.timeAverage) throw InputError("--time-smoothing and --time-average exclude each other: give one");
@@ -350,7 +357,8 @@ coarse-graining function:
   --coordinates C         XYZ (default), XY, XZ, YZ, X, Y or Z: the resolved directions; the others
                           are averaged over the domain box of the .data header. RZ: cylindrical
                           coordinates about a drum axis (distance r and the coordinate along the
-                          axis, averaged over the angle); R: also averaged along the axis
+                          axis, averaged over the angle); R: also averaged along the axis; O: the
+                          domain average (one value per frame: sums over the box / its volume)
   --axis x|y|z            drum axis direction for RZ and R (default: the restart file's cylinder wall)
   --axis-point X Y Z      a point of the drum axis (default: the restart file's cylinder wall)
 
@@ -402,8 +410,9 @@ width scan (Documentation/CoarseGraining.md "Choosing the widths"):
 
 output:
   -o, --output FILE       output file (default NAME.cg.csv, NAME.cg.h5, NAME.stat, NAME.widthscan.csv)
-  --output-format F       csv (default), hdf5 (HDF5 and an XDMF .xmf file for ParaView) or stat
-                          (MercuryDPM's .stat layout, Documentation/FileFormats/stat.md)
+  --output-format F       csv (default), hdf5 (HDF5 and an XDMF .xmf file for ParaView), stat
+                          (MercuryDPM's .stat layout, Documentation/FileFormats/stat.md) or vtk
+                          (a .pvd series of VTK image data .vti files, one per frame; grids only)
   --progress-interval S   wall seconds between progress lines on stderr (default 5)
   --help                  this text
 )";

@@ -124,8 +124,7 @@ RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, boo
 
     in.fstatPath = options.fstatPath;
     if (in.fstatPath.empty() && exists(in.base + ".fstat")) in.fstatPath = in.base + ".fstat";
-    // The contact stress is not available in cylindrical coordinates (CylindricalCoarseGrainer.h).
-    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty() && !setup.coordinates.isCylindrical());
+    setup.contactStress = options.stress.value_or(wantStress && !in.fstatPath.empty());
     if (setup.contactStress && in.fstatPath.empty()) {
         throw InputError("--stress on: no contact file (" + in.base + ".fstat not found; give --fstat FILE)");
     }
@@ -152,7 +151,9 @@ bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
         const double time = frame.time;
         ++frameIndex_;
         if (fstat_) {
-            if (!fstat_->readFrame(contacts)) {
+            // Room for 8 lines per particle (both sides of 4 contacts: a dense packing has about
+            // 3 per particle); pages not written to cost nothing.
+            if (!fstat_->readFrame(contacts, 8 * frame.size())) {
                 throw InputError(inputs_.fstatPath + ": ends before the frame at t = " + str(time) + " of " + inputs_.dataPath +
                                  " (line " + std::to_string(headerLine) + ")");
             }

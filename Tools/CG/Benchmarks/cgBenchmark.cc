@@ -8,6 +8,7 @@
 #include <string>
 
 #include "Benchmarks/AccuracyStudy.h"
+#include "Benchmarks/FilePathBenchmark.h"
 #include "Benchmarks/SpeedBenchmark.h"
 
 using namespace talus::cg::benchmark;
@@ -21,7 +22,11 @@ const char* usage =
     "  --width W              Lucy width of the speed benchmark (default 1; particle radius 0.5)\n"
     "  --species 1|2          species in the random frames (default 2)\n"
     "  --repeats R            repetitions per particle count, the fastest is reported (default 3)\n"
-    "  --study full|quick|off the speed-against-error study (default full)\n";
+    "  --study full|quick|off the speed-against-error study (default full)\n"
+    "  --file-path N          the whole path from .data and .fstat files to fields for about N particles\n"
+    "                         on a lattice with their contacts, stage by stage (default 0: off)\n"
+    "  --directory DIR        where --file-path writes its files, and keeps them (default: a temporary\n"
+    "                         folder, removed afterwards)\n";
 
 std::vector<long> parseCounts(const std::string& text) {
     std::vector<long> counts;
@@ -38,6 +43,7 @@ std::vector<long> parseCounts(const std::string& text) {
 struct Settings {
     SpeedSettings speed;
     AccuracySettings accuracy;
+    FilePathSettings filePath;
     bool study = true;
 };
 
@@ -65,6 +71,11 @@ Settings parseArguments(int argc, char** argv) {
         } else if (option == "--repeats") {
             s.speed.repeats = std::stoi(value);
             if (s.speed.repeats < 1) throw std::invalid_argument("--repeats: must be at least 1");
+        } else if (option == "--file-path") {
+            s.filePath.particles = std::stol(value);
+            if (s.filePath.particles < 0) throw std::invalid_argument("--file-path: must be 0 or more");
+        } else if (option == "--directory") {
+            s.filePath.directory = value;
         } else if (option == "--study") {
             if (value == "quick") {
                 // The smoke test: a few thousandths of a second, every code path of the study.
@@ -89,6 +100,11 @@ int main(int argc, char** argv) {
         const Settings settings = parseArguments(argc, argv);
         ProgressLog progress;
         if (!settings.speed.particleCounts.empty()) runSpeedBenchmark(settings.speed, std::cout, progress);
+        if (settings.filePath.particles > 0) {
+            FilePathSettings filePath = settings.filePath;
+            filePath.repeats = settings.speed.repeats;
+            runFilePathBenchmark(filePath, std::cout, progress);
+        }
         if (settings.study) runAccuracyStudy(settings.accuracy, std::cout, progress);
         std::cerr << "talus-cg-benchmark: done\n";
         return 0;

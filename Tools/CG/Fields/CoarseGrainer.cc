@@ -6,6 +6,7 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "Fields/ContactBranches.h"
 #include "IO/InputError.h"
 
 namespace talus::cg {
@@ -46,13 +47,14 @@ Vec3 shifted(Vec3 v, const Vec3& shift) {
 }  // namespace
 
 CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
-    : setup_(std::move(setup)), profile_(setup_.shape, setup_.coordinates.kernelDimension()) {
+    // (The domain average O has no kernel; its profile, of dimension 1, is never evaluated.)
+    : setup_(std::move(setup)), profile_(setup_.shape, std::max(1, setup_.coordinates.kernelDimension())) {
     if (setup_.coordinates.isCylindrical()) {
         cylindrical_ = std::make_unique<CylindricalCoarseGrainer>(setup_);
         layout_ = cylindrical_->layout();
         return;
     }
-    setup_.width.restrictTo(setup_.coordinates);
+    if (!setup_.coordinates.isDomainAverage()) setup_.width.restrictTo(setup_.coordinates);
     if (setup_.speciesDensity.empty()) throw InputError("--density: at least one species density is needed");
     for (double rho : setup_.speciesDensity) {
         if (!(rho > 0) || !std::isfinite(rho)) throw InputError("--density: densities must be positive, found " + str(rho));
@@ -112,11 +114,11 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
         throw InputError("the frame at t = " + str(frame.time) + " has " + std::to_string(frame.size()) +
                          " particles but " + std::to_string(frame.mass.size()) + " masses");
     if (cylindrical_) {
-        cylindrical_->setFrame(frame, dataPath);
+        cylindrical_->setFrame(frame, contacts, dataPath, fstatPath);
         return;
     }
     const std::size_t n = frame.size();
-    scale_ = setup_.width.determinant() / setup_.coordinates.averagedLength(frame.box);
+    scale_ = (setup_.coordinates.isDomainAverage() ? 1.0 : setup_.width.determinant()) / setup_.coordinates.averagedLength(frame.box);
     if (!setup_.excluded.empty() && setup_.excluded.size() != n) {
         throw InputError(lineOf(dataPath, frame.headerLine) + ": the frame at t = " + str(frame.time) + " has " +
                          std::to_string(n) + " particles, but the restart file describes " +
@@ -135,7 +137,20 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
     mass_.clear();
     volume_.clear();
     species_.clear();
-    std::vector<Vec3> boxLo, boxHi, shifts;
+    // The support boxes go to scratch vectors kept from frame to frame (fresh memory costs page
+    // faults at every frame).
+    std::vector<Vec3>& boxLo = boxLo_;
+    std::vector<Vec3>& boxHi = boxHi_;
+    boxLo.clear();
+    boxHi.clear();
+    position_.reserve(n);
+    velocity_.reserve(n);
+    mass_.reserve(n);
+    volume_.reserve(n);
+    species_.reserve(n);
+    boxLo.reserve(n);
+    boxHi.reserve(n);
+    std::vector<Vec3> shifts;
     for (std::size_t p = 0; p < n; ++p) {
         const int s = frame.species[p];
         if (s >= layout_.species) {
@@ -173,7 +188,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
 
     contactStart_.clear();
     contactSegment_.clear();
-    contactTensor_.clear();
+    contactForce_.clear();
     boundaryPoint_.clear();
     boundaryForce_.clear();
     if (setup_.contactStress && contacts != nullptr) {
@@ -186,84 +201,18 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
 
 void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
                                 const std::string& fstatPath, const Vec3& cellSize) {
-    const std::size_t n = frame.size();
-    // A pair may be written once (Talus and MercuryDPM skip the side of a fixed particle) or
-    // once from each side (fstat.md): each line counts 1/(lines of its pair), so every contact
-    // counts once whichever convention the file follows.
-    std::unordered_map<std::uint64_t, int> linesOfPair;
-    auto key = [](long i, long j) {
-        const auto a = static_cast<std::uint64_t>(std::min(i, j)), b = static_cast<std::uint64_t>(std::max(i, j));
-        return (a << 32) | b;
-    };
-    for (const ContactLine& c : contacts.contacts) {
-        if (c.i >= static_cast<long>(n) || c.j >= static_cast<long>(n)) {
-            throw InputError(lineOf(fstatPath, c.line) + ": particle " + std::to_string(std::max(c.i, c.j)) +
-                             " is not in the .data frame at t = " + str(frame.time) + " (" + std::to_string(n) +
-                             " particles; files of runs that deleted particles are not supported yet)");
-        }
-        if (!c.isWall()) ++linesOfPair[key(c.i, c.j)];
-    }
-    auto minimumImage = [&](Vec3 d) {
-        for (int k = 0; k < 3; ++k) {
-            const double length = frame.box.length(k);
-            if (length > 0) d[k] -= length * std::round(d[k] / length);
-        }
-        return d;
-    };
-    // Whether particle p is part of the boundary (--fixed boundary and fixed).
-    auto inBoundary = [&](long p) {
-        return setup_.excludedAreBoundary && !setup_.excluded.empty() && setup_.excluded[static_cast<std::size_t>(p)];
-    };
-    std::vector<Vec3> segmentLo, segmentHi, pointLo, pointHi, shifts;
-    for (const ContactLine& c : contacts.contacts) {
-        const Vec3& xi = frame.position[c.i];
-        const double ri = frame.radius[c.i];
-        // The contact point lies r_i - dn/2 from the centre of i (fstat.md): a cheap check that
-        // the two files describe the same particles.
-        const Vec3 toCentre = minimumImage({xi[0] - c.point[0], xi[1] - c.point[1], xi[2] - c.point[2]});
-        const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
-        const double expected = ri - 0.5 * c.overlap;
-        const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
-        // (A superquadric's contact point lies within its bounding radius r, give or take the overlap.)
-        const bool shaped = frame.isShaped(c.i);
-        if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
-                   : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
-            throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
-                             " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
-                             " (frame t = " + str(frame.time) + "), but " +
-                             (shaped ? "its bounding radius is " + str(ri) : "r - dn/2 = " + str(expected)) +
-                             ": the .fstat and .data files do not describe the same particles");
-        }
-        // Which side flows: a wall, or a fixed particle under --fixed boundary, is the boundary;
-        // a contact within the boundary is not part of the flow.
-        const bool iBoundary = inBoundary(c.i);
-        const bool jBoundary = c.isWall() || inBoundary(c.j);
-        if (iBoundary && jBoundary) continue;
-        const double weight = c.isWall() ? 1.0 : 1.0 / linesOfPair[key(c.i, c.j)];
-        // The flowing particle m (at x_m), the force f on it, and the branch b from the far end
-        // of the segment to x_m (Theory/CoarseGraining.md eq. (10)): the partner's centre for a
-        // pair (its image next to i: the normal points from j to i), the contact point for a
-        // boundary contact.
-        Vec3 xm = xi, f = c.force, b;
-        if (!jBoundary && !iBoundary) {
-            // A superquadric's centre is not r - dn along the normal from the contact: the line
-            // of centres itself.
-            const Vec3& xj = frame.position[c.j];
-            const double length = ri + frame.radius[c.j] - c.overlap;
-            if (shaped || frame.isShaped(c.j)) b = minimumImage({xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]});
-            else for (int k = 0; k < 3; ++k) b[k] = length * c.normal[k];
-        } else if (!iBoundary) {
-            b = toCentre;
-        } else {
-            // The line describes the fixed side i: the flowing particle is j, pushed by -f.
-            xm = frame.position[c.j];
-            for (int k = 0; k < 3; ++k) f[k] = -f[k];
-            b = minimumImage({xm[0] - c.point[0], xm[1] - c.point[1], xm[2] - c.point[2]});
-        }
-        std::array<double, 9> tensor;
-        for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) tensor[3 * r + col] = weight * f[r] * b[col];
-        }
+    // Mostly one source per line (more only for images across periodic faces).
+    contactStart_.reserve(contacts.contacts.size());
+    contactSegment_.reserve(contacts.contacts.size());
+    contactForce_.reserve(contacts.contacts.size());
+    std::vector<Vec3>& segmentLo = boxLo_;
+    std::vector<Vec3>& segmentHi = boxHi_;
+    segmentLo.clear();
+    segmentHi.clear();
+    std::vector<Vec3> pointLo, pointHi, shifts;
+    forEachContactBranch(frame, contacts, setup_, dataPath, fstatPath, [&](const ContactBranch& branch) {
+        const Vec3& xm = branch.centre;
+        const Vec3& b = branch.branch;
         Vec3 lo, hi;
         for (int k = 0; k < 3; ++k) {
             lo[k] = std::min(xm[k], xm[k] - b[k]) - halfExtent_[k];
@@ -273,11 +222,11 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         for (const Vec3& shift : shifts) {
             contactStart_.push_back(shifted(xm, shift));
             contactSegment_.push_back({-b[0], -b[1], -b[2]});
-            contactTensor_.push_back(tensor);
+            contactForce_.push_back(branch.force);
             segmentLo.push_back(shifted(lo, shift));
             segmentHi.push_back(shifted(hi, shift));
         }
-        if (!iBoundary && !jBoundary) continue;
+        if (!branch.boundary) return;
         // The boundary's force on the flowing particle, spread from the contact point x_m - b
         // (the image of c next to x_m).
         const Vec3 point{xm[0] - b[0], xm[1] - b[1], xm[2] - b[2]};
@@ -288,11 +237,11 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         imageShifts(lo, hi, frame.box, shifts);
         for (const Vec3& shift : shifts) {
             boundaryPoint_.push_back(shifted(point, shift));
-            boundaryForce_.push_back({weight * f[0], weight * f[1], weight * f[2]});
+            boundaryForce_.push_back(branch.force);
             pointLo.push_back(shifted(lo, shift));
             pointHi.push_back(shifted(hi, shift));
         }
-    }
+    });
     contactBins_.build(segmentLo, segmentHi, setup_.coordinates.resolvesAxes(), cellSize);
     boundaryBins_.build(pointLo, pointHi, setup_.coordinates.resolvesAxes(), cellSize);
 }
@@ -363,7 +312,7 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
                     profile_.lineIntegralAlongAxis(ak * (points[p][k] - contactStart_[c][k]), -ak * contactSegment_[c][k]);
                 if (line == 0) continue;
                 const double w = scale_ * line;
-                for (int j = 0; j < 9; ++j) row[j] += w * contactTensor_[c][j];
+                addContactTensor(c, w, row);
             }
         }
         return;
@@ -383,8 +332,17 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
             const double line = profile_.lineIntegral(u0, e);
             if (line == 0) continue;
             const double w = scale_ * line;
-            for (int k = 0; k < 9; ++k) row[k] += w * contactTensor_[c][k];
+            addContactTensor(c, w, row);
         }
+    }
+}
+
+void CoarseGrainer::addContactTensor(std::size_t c, double weight, double* row) const {
+    // The tensor f (x) b of the branch, b = -segment.
+    const Vec3& f = contactForce_[c];
+    const Vec3& segment = contactSegment_[c];
+    for (int r = 0; r < 3; ++r) {
+        for (int col = 0; col < 3; ++col) row[3 * r + col] += weight * (f[r] * -segment[col]);
     }
 }
 
@@ -408,12 +366,44 @@ void CoarseGrainer::evaluateBoundaryForces(const std::vector<Vec3>& points, std:
     }
 }
 
+void CoarseGrainer::evaluateDomainAverage(double* row) const {
+    // Every source with the weight 1/V (scale_): the sums of eq. (5)-(10) with W replaced by the
+    // indicator of the box over its volume and the line integral by 1 (whole branches).
+    for (std::size_t i = 0; i < mass_.size(); ++i) {
+        const double m = mass_[i] * scale_;
+        const Vec3& v = velocity_[i];
+        row[FieldSums::density] += m;
+        row[FieldSums::volumeFraction] += volume_[i] * scale_;
+        for (int c = 0; c < 3; ++c) row[FieldSums::momentum + c] += m * v[c];
+        row[FieldSums::momentumFlux + 0] += m * v[0] * v[0];
+        row[FieldSums::momentumFlux + 1] += m * v[0] * v[1];
+        row[FieldSums::momentumFlux + 2] += m * v[0] * v[2];
+        row[FieldSums::momentumFlux + 3] += m * v[1] * v[1];
+        row[FieldSums::momentumFlux + 4] += m * v[1] * v[2];
+        row[FieldSums::momentumFlux + 5] += m * v[2] * v[2];
+        row[FieldSums::speciesDensity + species_[i]] += m;
+    }
+    if (!setup_.contactStress) return;
+    for (std::size_t c = 0; c < contactForce_.size(); ++c) addContactTensor(c, scale_, row + layout_.contactStressIndex());
+    for (const Vec3& f : boundaryForce_) {
+        for (int k = 0; k < 3; ++k) row[layout_.interactionForceIndex() + k] += scale_ * f[k];
+    }
+}
+
 void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const {
     if (cylindrical_) {
         cylindrical_->evaluate(points, sums);
         return;
     }
     sums.assign(points.size() * layout_.count(), 0.0);
+    if (setup_.coordinates.isDomainAverage()) {
+        // One value for the whole box, the same at every point asked for.
+        const std::size_t fields = static_cast<std::size_t>(layout_.count());
+        if (points.empty()) return;
+        evaluateDomainAverage(sums.data());
+        for (std::size_t p = 1; p < points.size(); ++p) std::copy_n(sums.data(), fields, sums.data() + p * fields);
+        return;
+    }
     const bool diagonal = setup_.width.isDiagonal();
     switch (setup_.shape) {
         case KernelShape::Lucy:

@@ -17,6 +17,16 @@
 // force f to the particle's centre, where the momentum balance of the flow needs it:
 //   d(rho V)/dt + div(rho V V) = -div(sigma) + rho g + InteractionForce
 // (sigma = kinetic + contact stress, compressive positive as everywhere in talus-cg).
+//
+// The domain average (coordinates O, MercuryCG's `O`): no kernel. Each field is the sum over the
+// particles (every one in the frame that is not left out, wherever its centre) and contacts of
+// the frame divided by the volume V of the domain box of the .data header:
+//   rho = sum_i m_i / V,  p = sum_i m_i v_i / V,  K = sum_i m_i v_i v_i / V,
+//   sigma_c = sum_c w_c f_c (x) b_c / V (whole branches; for a boundary contact b = r_i - c),
+//   InteractionForce = sum over boundary contacts of w_c f_c / V.
+// It is the limit of every kernel field averaged over a periodic box (Theory/CoarseGraining.md
+// eq. (5)-(10) integrated over the box, int_box W = 1); in a box that is not periodic the mean of
+// a kernel field is smaller by the parts of the kernels that reach out of the box.
 #pragma once
 
 #include <array>
@@ -59,7 +69,7 @@ public:
     void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
 
     std::size_t particleSourceCount() const { return cylindrical_ ? cylindrical_->sourceCount() : mass_.size(); }
-    std::size_t contactSourceCount() const { return contactTensor_.size(); }
+    std::size_t contactSourceCount() const { return contactForce_.size(); }
     std::size_t boundaryContactCount() const { return boundaryForce_.size(); }
 
 private:
@@ -67,6 +77,10 @@ private:
     void evaluateParticles(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateContacts(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    // row[0..8] += weight * (the tensor of contact source c).
+    void addContactTensor(std::size_t c, double weight, double* row) const;
+    // Coordinates O: the sums over every source of the frame divided by the box volume.
+    void evaluateDomainAverage(double* row) const;
     // Adds the contact lines of a frame: pair segments, boundary segments and boundary forces.
     void addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
                      const std::string& fstatPath, const Vec3& cellSize);
@@ -90,17 +104,21 @@ private:
     std::vector<int> species_;
     SupportBins particleBins_;
 
-    // Contact segments: from start_ along segment_ (x_j - x_i, or c - x_i for boundary contacts), carrying
-    // the tensor w f (x) b (row-major).
+    // Contact segments: from start_ along segment_ = -b (x_j - x_i, or c - x_i for boundary
+    // contacts), carrying the force f, whose tensor f (x) b is formed when summed (a third of
+    // the memory of the tensor: frames of 10^5 particles have 6 10^5 contact lines).
     std::vector<Vec3> contactStart_;
     std::vector<Vec3> contactSegment_;
-    std::vector<std::array<double, 9>> contactTensor_;
+    std::vector<Vec3> contactForce_;
     SupportBins contactBins_;
 
     // Boundary contacts (images included): the contact point and the force on the flowing particle.
     std::vector<Vec3> boundaryPoint_;
     std::vector<Vec3> boundaryForce_;
     SupportBins boundaryBins_;
+
+    // Scratch: the support boxes of the sources while their bins are built.
+    std::vector<Vec3> boxLo_, boxHi_;
 };
 
 }  // namespace talus::cg

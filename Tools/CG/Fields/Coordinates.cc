@@ -18,10 +18,11 @@ Coordinates Coordinates::fromName(const std::string& name) {
         return c;
     }
     c.resolved_ = {false, false, false};
+    if (upper == "O") return c;  // the domain average: nothing resolved
     for (char l : upper) {
         const int axis = l == 'X' ? 0 : l == 'Y' ? 1 : l == 'Z' ? 2 : -1;
         if (axis < 0 || c.resolved_[axis]) {
-            throw InputError("--coordinates: '" + name + "' is not one of XYZ, XY, XZ, YZ, X, Y, Z, RZ, R");
+            throw InputError("--coordinates: '" + name + "' is not one of XYZ, XY, XZ, YZ, X, Y, Z, RZ, R, O");
         }
         c.resolved_[axis] = true;
     }
@@ -35,7 +36,7 @@ std::string Coordinates::name() const {
     for (int k = 0; k < 3; ++k) {
         if (resolved_[k]) n += static_cast<char>('X' + k);
     }
-    return n;
+    return n.empty() ? "O" : n;
 }
 
 int Coordinates::dimension() const { return int(resolved_[0]) + int(resolved_[1]) + int(resolved_[2]); }

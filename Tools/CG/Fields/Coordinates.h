@@ -10,6 +10,10 @@
 // averages along the axis (divided by the box length along it). Their points keep r in slot 0 and s
 // (the lab coordinate along the axis) in slot 2 of a Vec3; the fields are angular averages of the
 // 3-D (RZ) or cross-section 2-D (R) kernel (Fields/CylindricalCoarseGrainer.h).
+//
+// `O` (MercuryCG's domain average) resolves nothing and has no kernel: one value per frame, each
+// field the sum over the particles (and contacts) of the frame divided by the volume of the
+// domain box (Fields/CoarseGrainer.h "The domain average").
 #pragma once
 
 #include <array>
@@ -22,27 +26,28 @@ namespace talus::cg {
 
 class Coordinates {
 public:
-    // "XYZ", "XY", "XZ", "YZ", "X", "Y", "Z" (any case, letters in any order), or "RZ", "R"
-    // (cylindrical: the axis is set by setAxis); throws InputError.
+    // "XYZ", "XY", "XZ", "YZ", "X", "Y", "Z" (any case, letters in any order), "RZ", "R"
+    // (cylindrical: the axis is set by setAxis), or "O" (the domain average); throws InputError.
     static Coordinates fromName(const std::string& name);
 
     std::string name() const;
     bool resolves(int axis) const { return resolved_[axis]; }
     const std::array<bool, 3>& resolvesAxes() const { return resolved_; }
-    // Resolved coordinates: 3 for XYZ, 2 for XZ and RZ, 1 for Z and R.
+    // Resolved coordinates: 3 for XYZ, 2 for XZ and RZ, 1 for Z and R, 0 for O.
     int dimension() const;
     // Dimension of the coarse-graining function: dimension() for Cartesian coordinates; 3 for RZ
-    // (the 3-D kernel averaged over the angle), 2 for R (the kernel in the cross-section).
+    // (the 3-D kernel averaged over the angle), 2 for R (the kernel in the cross-section); 0 for O.
     int kernelDimension() const;
     // The resolved slots in increasing order (0 = x, 1 = y, 2 = z; cylindrical: 0 = r, 2 = s).
     std::vector<int> kernelAxes() const;
     // The column name of slot k: "x", "y", "z"; cylindrical: "r" and the axis letter for s.
     std::string coordinateName(int slot) const;
     // Product of the box lengths of the averaged directions (1 for XYZ and RZ; the length along
-    // the axis for R).
+    // the axis for R; the box's volume for O).
     double averagedLength(const DomainBox& box) const;
 
     bool isCylindrical() const { return cylindrical_; }
+    bool isDomainAverage() const { return dimension() == 0; }
     // The drum axis: direction 0, 1, 2 (x, y, z; -1 until set) through `point`.
     void setAxis(int axis, const Vec3& point);
     int axis() const { return axis_; }

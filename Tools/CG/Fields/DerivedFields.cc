@@ -11,6 +11,8 @@ const char* const tensorSuffix[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "
 // Cylindrical components (Fields/CylindricalCoarseGrainer.h): radial, azimuthal, axial.
 const char* const cylindricalVectorSuffix[3] = {"R", "Theta", "Axial"};
 const char* const cylindricalSymmetricSuffix[6] = {"RR", "RTheta", "RAxial", "ThetaTheta", "ThetaAxial", "AxialAxial"};
+const char* const cylindricalTensorSuffix[9] = {"RR",     "RTheta", "RAxial",     "ThetaR",    "ThetaTheta",
+                                                "ThetaAxial", "AxialR", "AxialTheta", "AxialAxial"};
 constexpr int symmetricRow[6] = {0, 0, 0, 1, 1, 2};
 constexpr int symmetricCol[6] = {0, 1, 2, 1, 2, 2};
 }  // namespace
@@ -25,14 +27,74 @@ std::vector<OutputColumn> derivedColumns(const FieldSums& layout) {
     for (int c = 0; c < 3; ++c) columns.push_back({std::string("Velocity") + vector[c], "L/T"});
     for (int c = 0; c < 6; ++c) columns.push_back({std::string("KineticStress") + symmetric[c], "M/(L T^2)"});
     if (layout.contactStress) {
-        for (auto s : tensorSuffix) columns.push_back({std::string("ContactStress") + s, "M/(L T^2)"});
-        for (auto s : tensorSuffix) columns.push_back({std::string("Stress") + s, "M/(L T^2)"});
-        for (auto s : vectorSuffix) columns.push_back({std::string("InteractionForce") + s, "M/(L^2 T^2)"});
+        const char* const* tensor = layout.cylindrical ? cylindricalTensorSuffix : tensorSuffix;
+        for (int c = 0; c < 9; ++c) columns.push_back({std::string("ContactStress") + tensor[c], "M/(L T^2)"});
+        for (int c = 0; c < 9; ++c) columns.push_back({std::string("Stress") + tensor[c], "M/(L T^2)"});
+        for (int c = 0; c < 3; ++c) columns.push_back({std::string("InteractionForce") + vector[c], "M/(L^2 T^2)"});
     }
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Density_s" + std::to_string(s), "M/L^3"});
     for (int s = 0; s < layout.species; ++s) columns.push_back({"Concentration_s" + std::to_string(s), "1"});
     if (layout.cylindrical) columns.push_back({"AngularVelocity", "1/T"});
     return columns;
+}
+
+std::vector<FieldArray> fieldArrays(const FieldSums& layout) {
+    const std::vector<OutputColumn> columns = derivedColumns(layout);
+    const char* const* vector = layout.cylindrical ? cylindricalVectorSuffix : vectorSuffix;
+    const char* const* symmetric = layout.cylindrical ? cylindricalSymmetricSuffix : symmetricSuffix;
+    const char* const* tensor = layout.cylindrical ? cylindricalTensorSuffix : tensorSuffix;
+    auto startsGroup = [&](std::size_t at, const std::string& prefix, const char* firstSuffix) {
+        return columns[at].name == prefix + firstSuffix;
+    };
+    std::vector<FieldArray> arrays;
+    for (std::size_t at = 0; at < columns.size();) {
+        FieldArray array;
+        const int first = static_cast<int>(at);
+        bool grouped = false;
+        for (const char* prefix : {"Momentum", "Velocity", "InteractionForce"}) {
+            if (!grouped && startsGroup(at, prefix, vector[0])) {
+                array.name = prefix;
+                for (int c = 0; c < 3; ++c) {
+                    array.columns.push_back(first + c);
+                    array.componentNames.push_back(vector[c]);
+                }
+                at += 3;
+                grouped = true;
+            }
+        }
+        if (!grouped && startsGroup(at, "KineticStress", symmetric[0])) {
+            // Component (r, q) of the symmetric tensor is CSV column symmetricIndex(min, max).
+            array.name = "KineticStress";
+            for (int r = 0; r < 3; ++r) {
+                for (int q = 0; q < 3; ++q) {
+                    for (int c = 0; c < 6; ++c) {
+                        if (symmetricRow[c] == std::min(r, q) && symmetricCol[c] == std::max(r, q)) array.columns.push_back(first + c);
+                    }
+                    array.componentNames.push_back(tensor[3 * r + q]);
+                }
+            }
+            at += 6;
+            grouped = true;
+        }
+        for (const char* prefix : {"ContactStress", "Stress"}) {
+            if (!grouped && startsGroup(at, prefix, tensor[0])) {
+                array.name = prefix;
+                for (int c = 0; c < 9; ++c) {
+                    array.columns.push_back(first + c);
+                    array.componentNames.push_back(tensor[c]);
+                }
+                at += 9;
+                grouped = true;
+            }
+        }
+        if (!grouped) {
+            array.name = columns[at].name;
+            array.columns.push_back(first);
+            ++at;
+        }
+        arrays.push_back(std::move(array));
+    }
+    return arrays;
 }
 
 void appendDerivedFields(const FieldSums& layout, const double* sums, std::vector<double>& values) {

@@ -32,6 +32,16 @@ struct OutputColumn {
 // Column names and units of the derived fields (without coordinates and time).
 std::vector<OutputColumn> derivedColumns(const FieldSums& layout);
 
+// The columns grouped into the arrays of a VTK file (App/VtkFieldWriter.h): a scalar column
+// alone, a vector's 3 columns, a tensor's 9 in row-major order. The symmetric KineticStress is
+// filled out to 9 components from its 6 columns (XY serves XY and YX, ...).
+struct FieldArray {
+    std::string name;                         // Density, Momentum, KineticStress, Density_s0, ...
+    std::vector<int> columns;                 // per component, the index into derivedColumns()
+    std::vector<std::string> componentNames;  // X Y Z, XX XY ... ZZ, R Theta Axial; empty for scalars
+};
+std::vector<FieldArray> fieldArrays(const FieldSums& layout);
+
 // Appends the derived fields of one point (its sums row) to `values`.
 void appendDerivedFields(const FieldSums& layout, const double* sums, std::vector<double>& values);
 

@@ -19,7 +19,7 @@ bool isHeader(std::string_view line) {
 
 FstatFileReader::FstatFileReader(const std::string& path) : file_(path) {}
 
-bool FstatFileReader::readFrame(ContactFrame& frame) {
+bool FstatFileReader::readFrame(ContactFrame& frame, std::size_t expectedLines) {
     do {
         if (!file_.nextLine(line_)) return false;
         splitFields(line_, fields_);
@@ -53,6 +53,7 @@ bool FstatFileReader::readFrame(ContactFrame& frame) {
                        " starting with '#'");
     }
     frame.contacts.clear();
+    frame.contacts.reserve(expectedLines);
     while (file_.nextLine(line_)) {
         splitFields(line_, fields_);
         if (fields_.empty()) continue;

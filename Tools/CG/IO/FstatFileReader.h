@@ -34,8 +34,10 @@ class FstatFileReader {
 public:
     explicit FstatFileReader(const std::string& path);
 
-    // Reads the next frame; false at the end of the file.
-    bool readFrame(ContactFrame& frame);
+    // Reads the next frame; false at the end of the file. `expectedLines`: room made for that many
+    // contact lines before reading (growing a vector of 10^5 lines by doubling touches twice the
+    // memory, and fresh memory costs page faults); 0 for none.
+    bool readFrame(ContactFrame& frame, std::size_t expectedLines = 0);
     TextFile& file() { return file_; }
 
 private:

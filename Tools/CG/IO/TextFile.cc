@@ -76,13 +76,13 @@ bool toInteger(std::string_view token, long& value) {
     return true;
 }
 
-double parseReal(std::string_view token, const TextFile& file, const std::string& what) {
+double parseReal(std::string_view token, const TextFile& file, std::string_view what) {
     double value = 0;
     if (const std::string problem = formats::readReal(token, what, value); !problem.empty()) file.fail(problem);
     return value;
 }
 
-long parseInteger(std::string_view token, const TextFile& file, const std::string& what) {
+long parseInteger(std::string_view token, const TextFile& file, std::string_view what) {
     std::int64_t value = 0;
     const std::string problem = formats::readInteger(token, what, value, std::numeric_limits<long>::min(),
                                                      std::numeric_limits<long>::max());
@@ -90,7 +90,7 @@ long parseInteger(std::string_view token, const TextFile& file, const std::strin
     return static_cast<long>(value);
 }
 
-long parseCount(std::string_view token, const TextFile& file, const std::string& what) {
+long parseCount(std::string_view token, const TextFile& file, std::string_view what) {
     std::uint64_t value = 0;
     const std::string problem =
         formats::readCount(token, what, value, static_cast<std::uint64_t>(std::numeric_limits<long>::max()));

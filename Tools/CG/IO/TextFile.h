@@ -43,13 +43,14 @@ private:
 // Splits a line at blanks (spaces, tabs) into `fields` (views into `line`).
 void splitFields(std::string_view line, std::vector<std::string_view>& fields);
 
-// Strict conversions (Formats/Numbers.h, the same as the kernel's): the whole token must be a
+// Strict conversions (Formats/Numbers.h, the same as the kernel's; `what` a view, so that the
+// readers name a column without building a string per number): the whole token must be a
 // finite number (no nan, inf or overflow), an integer a whole one ("1.7" and "1e30" are not);
 // otherwise file.fail names `what`.
-double parseReal(std::string_view token, const TextFile& file, const std::string& what);
-long parseInteger(std::string_view token, const TextFile& file, const std::string& what);
+double parseReal(std::string_view token, const TextFile& file, std::string_view what);
+long parseInteger(std::string_view token, const TextFile& file, std::string_view what);
 // An integer that counts something: not negative.
-long parseCount(std::string_view token, const TextFile& file, const std::string& what);
+long parseCount(std::string_view token, const TextFile& file, std::string_view what);
 // The same for program options and other strings: nullopt-like failure as a bool.
 bool toReal(std::string_view token, double& value);
 bool toInteger(std::string_view token, long& value);

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "IO/FstatFileReader.h"
 #include "IO/InputError.h"
 #include "IO/ParticleFrame.h"
 
@@ -83,6 +84,19 @@ inline ParticleFrame makeFrame(const std::vector<Vec3>& x, const std::vector<dou
     f.velocity = v.empty() ? std::vector<Vec3>(x.size(), Vec3{0, 0, 0}) : v;
     f.species = species.empty() ? std::vector<int>(x.size(), 0) : species;
     return f;
+}
+
+// A .fstat line given by hand: particle i, partner j (-(w+1) for wall w), contact point, normal
+// (pairs: from j to i; walls: into the wall), overlap and the force on i.
+inline ContactLine contactLine(long i, long j, Vec3 point, Vec3 normal, double overlap, Vec3 force) {
+    ContactLine c;
+    c.i = i;
+    c.j = j;
+    c.point = point;
+    c.normal = normal;
+    c.overlap = overlap;
+    c.force = force;
+    return c;
 }
 
 inline double sphereVolume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }

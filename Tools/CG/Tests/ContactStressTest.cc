@@ -99,17 +99,6 @@ Profile depthProfile(KernelShape shape, const ParticleFrame& frame, const Contac
     return p;
 }
 
-ContactLine pairLine(long i, long j, Vec3 point, Vec3 normal, double overlap, Vec3 force) {
-    ContactLine c;
-    c.i = i;
-    c.j = j;
-    c.point = point;
-    c.normal = normal;
-    c.overlap = overlap;
-    c.force = force;
-    return c;
-}
-
 }  // namespace
 
 TEST(ContactStress, PairTransmitsItsForceBetweenTheCentres) {
@@ -119,9 +108,9 @@ TEST(ContactStress, PairTransmitsItsForceBetweenTheCentres) {
     const double f = 3.0, area = 4 * 2.5;
     // Force on particle 1 from 0 is +f z (repulsive); normal from partner to particle.
     ContactFrame once, twice;
-    once.contacts.push_back(pairLine(1, 0, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0.4, 0, f}));
+    once.contacts.push_back(contactLine(1, 0, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0.4, 0, f}));
     twice = once;
-    twice.contacts.push_back(pairLine(0, 1, {1, 1, 2.45}, {0, 0, -1}, 0.1, {-0.4, 0, -f}));
+    twice.contacts.push_back(contactLine(0, 1, {1, 1, 2.45}, {0, 0, -1}, 0.1, {-0.4, 0, -f}));
     const GaussLegendre gl(20);
     for (KernelShape shape : {KernelShape::Lucy, KernelShape::Gauss, KernelShape::Heaviside}) {
         const double width = shape == KernelShape::Gauss ? 0.05 : 0.15;
@@ -149,7 +138,7 @@ TEST(ContactStress, WallContactTransmitsItsForceBetweenCentreAndContactPoint) {
     const ParticleFrame frame = makeFrame({{1, 1, 0.45}}, {0.5}, box);
     ContactFrame contacts;
     const double fn = 2.0, area = 4;
-    contacts.contacts.push_back(pairLine(0, -1, {1, 1, -0.025}, {0, 0, -1}, 0.05, {0, 0, fn}));
+    contacts.contacts.push_back(contactLine(0, -1, {1, 1, -0.025}, {0, 0, -1}, 0.05, {0, 0, fn}));
     const Profile p = depthProfile(KernelShape::Lucy, frame, contacts, 0.1, {0.2, 0.7});
     EXPECT_NEAR(p.stressZZ[0], fn / area, 1e-13);
     EXPECT_EQ(p.stressZZ[1], 0.0);
@@ -159,7 +148,7 @@ TEST(ContactStress, MismatchedFilesAreRejected) {
     const DomainBox box{{0, 0, 0}, {4, 2.5, 6}};
     const ParticleFrame frame = makeFrame({{1, 1, 2}, {1, 1, 2.9}}, {0.5, 0.5}, box);
     ContactFrame contacts;
-    contacts.contacts.push_back(pairLine(1, 0, {1, 1, 2.2}, {0, 0, 1}, 0.1, {0, 0, 1}));
+    contacts.contacts.push_back(contactLine(1, 0, {1, 1, 2.2}, {0, 0, 1}, 0.1, {0, 0, 1}));
     contacts.contacts.back().line = 12;
     CoarseGrainingSetup setup;
     setup.contactStress = true;
@@ -170,7 +159,7 @@ TEST(ContactStress, MismatchedFilesAreRejected) {
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("a.fstat line 12: the contact point is"), std::string::npos) << error.what();
     }
-    contacts.contacts.back() = pairLine(1, 7, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0, 0, 1});
+    contacts.contacts.back() = contactLine(1, 7, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0, 0, 1});
     contacts.contacts.back().line = 13;
     EXPECT_THROW(grainer.setFrame(frame, &contacts, "a.data", "a.fstat"), InputError);
 }

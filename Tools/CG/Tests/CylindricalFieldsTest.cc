@@ -383,14 +383,12 @@ TEST(CylindricalFields, BadInputNamesTheFlag) {
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "y", "-x", "0", "1"}),
               "-x: cylindrical coordinates resolve the distance from the axis (-r MIN MAX) and the coordinate along the axis (the range flag of --axis)");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--output-format", "stat"}),
-              "--output-format stat: cylindrical coordinates are written as csv only");
+              "--output-format stat: cylindrical coordinates are written as csv or vtk only");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--mixing", "1"}), "--mixing: not available in cylindrical coordinates (--coordinates RZ)");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "y", "--axis-point", "0", "0", "0", "--restart", "none", "--widths", "1", "2", "3"}),
               "--widths: in cylindrical coordinates the widths across the axis (z and x for --axis y) must be equal, found 3 and 1");
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "z", "--axis-point", "0", "0", "0", "--restart", "none", "--periodic", "x"}),
               "--coordinates RZ: the domain is periodic along x, across the drum axis z: cylindrical coordinates need a bounded cross-section (--periodic)");
-    EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--axis", "z", "--axis-point", "0", "0", "0", "--restart", "none", "--stress", "on", "--fstat", "x.fstat"}),
-              "--stress on: the contact stress is not available in cylindrical coordinates (--coordinates RZ) yet");
     // The axis and drum radius from the restart file's cylinder wall (the plane is skipped); an
     // --axis along another direction finds no wall there.
     EXPECT_EQ(errorOf({"run", "--coordinates", "RZ", "--restart", "cylinder.restart"}, drumRestart), "no error");

@@ -116,13 +116,14 @@ TEST(OutputFormats, StatFileHoldsTheSumsInMercuryColumns) {
 
 TEST(OutputFormats, UnknownFormatIsNamed) {
     try {
-        outputFormatFromName("vtk");
+        outputFormatFromName("vtu");
         FAIL() << "no error";
     } catch (const InputError& error) {
-        EXPECT_STREQ(error.what(), "--output-format: unknown format 'vtk' (csv, hdf5 or stat)");
+        EXPECT_STREQ(error.what(), "--output-format: unknown format 'vtu' (csv, hdf5, stat or vtk)");
     }
     EXPECT_EQ(defaultOutputPath(OutputFormat::Hdf5, "run"), "run.cg.h5");
     EXPECT_EQ(defaultOutputPath(OutputFormat::Stat, "run"), "run.stat");
+    EXPECT_EQ(defaultOutputPath(OutputFormat::Vtk, "run"), "run.cg.pvd");
 }
 
 #ifdef TALUS_CG_WITH_HDF5

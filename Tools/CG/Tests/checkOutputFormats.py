@@ -25,19 +25,13 @@ import xml.etree.ElementTree as ElementTree
 import h5py
 import numpy as np
 
+from cgCsv import read_csv, relative_difference
+
 TOLERANCE = 1e-11
 
 
 def fail(message):
     sys.exit(f"checkOutputFormats.py: {message}")
-
-
-def read_csv(path):
-    with open(path) as f:
-        lines = [line for line in f if not line.startswith('#')]
-    names = lines[0].strip().split(',')
-    data = np.loadtxt(lines[1:], delimiter=',', ndmin=2)
-    return names, data
 
 
 def frames_of(names, data):
@@ -49,8 +43,7 @@ def frames_of(names, data):
 
 
 def agree(what, expected, found):
-    scale = max(np.max(np.abs(expected)), 1e-300)
-    error = np.max(np.abs(np.asarray(found) - expected)) / scale
+    error = relative_difference(expected, found)
     if not error <= TOLERANCE:
         fail(f"{what}: differs from the CSV by {error:.3g} of its largest value")
     return error

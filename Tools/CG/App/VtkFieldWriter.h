@@ -1,0 +1,50 @@
+// VTK output of talus-cg for ParaView and VTK (Documentation/CoarseGraining.md "Output formats"):
+// the fields of a regular grid as XML ImageData, one `.vti` file per frame (or one for a time
+// average) and a `.pvd` collection that lists them with their times.
+//
+//   NAME.cg.pvd              <VTKFile type="Collection">: one DataSet per frame, timestep = t
+//   NAME.cg_000000.vti, ...  <VTKFile type="ImageData">: WholeExtent 0..nx-1, 0..ny-1, 0..nz-1
+//                            (0 0 on averaged axes), Origin = the first cell centre, Spacing =
+//                            the cell size; PointData arrays of Float64 in appended raw binary
+//                            (the doubles' bits, UInt64 byte counts), x fastest; FieldData
+//                            TimeValue (ParaView's frame time)
+//
+// Every field the CSV file writes is an array (DerivedFields.h fieldArrays): scalars with 1
+// component, vectors (Momentum, Velocity, InteractionForce) with 3, tensors with 9 in row-major
+// order XX XY XZ YX ... ZZ (KineticStress, symmetric, filled out from its 6 CSV columns;
+// ContactStress and Stress as they are). In cylindrical coordinates the image axes are (r, -, s)
+// and the components (R, Theta, Axial), named in each array's ComponentName attributes.
+//
+// Image data needs a regular grid: a point list (--points) is refused with a message naming
+// --output-format.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "App/FieldWriter.h"
+#include "Fields/DerivedFields.h"
+
+namespace talus::cg {
+
+class VtkFieldWriter : public FieldWriter {
+public:
+    // Checks that the points are a grid and that setup.path is a .pvd name (throws InputError
+    // naming --output-format or -o); the first file is written by writeFrame.
+    explicit VtkFieldWriter(const FieldOutputSetup& setup);
+
+    void writeFrame(double firstTime, double time, const std::vector<double>& sums) override;
+    // Writes the .pvd collection of the frames written.
+    void close() override;
+
+    // The image file of frame `index` beside the .pvd file: out.pvd -> out_000000.vti.
+    static std::string framePath(const std::string& pvdPath, std::size_t index);
+
+private:
+    FieldOutputSetup setup_;
+    std::vector<OutputColumn> columns_;
+    std::vector<FieldArray> arrays_;
+    std::vector<double> times_;
+};
+
+}  // namespace talus::cg
