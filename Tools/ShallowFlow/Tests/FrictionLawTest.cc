@@ -37,7 +37,7 @@ TEST(FrictionLaw, SteadySpeedMatchesTheClosedForm) {
             EXPECT_NEAR(law.coefficient(h, speed, phi), tanDegrees(p.angleDegrees), 1e-14);
         }
     }
-    // The seed's inflow (h 15, phi 0.5) with the mixture's diameters (dS = 2^(-1/3)): u = 3.8408.
+    // The thesis's inflow (h 15, phi 0.5) with the mixture's diameters (dS = 2^(-1/3)): u = 3.8408.
     EXPECT_NEAR(law.steadySpeed(15, 0.5), 3.8408193, 1e-6);
 }
 

@@ -30,7 +30,7 @@ void expectUniform(const Solver& solver, const Primitive& expected, double relat
     EXPECT_LE(worstPhi, relative * expected.phi);
 }
 
-// The seed's inflow state (h 15, phi 0.5, table 3.1) at its steady speed, with the inflow and
+// The thesis's inflow state (h 15, phi 0.5, table 3.1) at its steady speed, with the inflow and
 // outflow boundaries of the long chute: every face sees the same two states, so the fluxes
 // cancel to the bit and only gravity and friction act; the implicit friction step's fixed point
 // is the speed where mu = tan(t). Tolerance: a few ulp of u per step from the Newton solve,
