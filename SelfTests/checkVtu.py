@@ -25,6 +25,8 @@ import numpy
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+import vtkFiles
+
 VTK_VERTEX = 1
 
 
@@ -45,31 +47,11 @@ def data_frames(path):
 
 
 def pvd_entries(path):
-    parser = vtk.vtkXMLDataParser()
-    parser.SetFileName(path)
-    if not parser.Parse():
-        fail(f"{path}: VTK cannot parse it")
-    root = parser.GetRootElement()
-    if root.GetName() != "VTKFile" or root.GetAttribute("type") != "Collection":
-        fail(f"{path}: not a VTK Collection file")
-    collection = root.FindNestedElementWithName("Collection")
-    entries = []
-    for k in range(collection.GetNumberOfNestedElements()):
-        d = collection.GetNestedElement(k)
-        entries.append((float(d.GetAttribute("timestep")), d.GetAttribute("file")))
-    return entries
+    return vtkFiles.pvd_entries(path, fail)
 
 
 def read_vtu(path):
-    problems = []
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    for event in ("ErrorEvent", "WarningEvent"):
-        reader.AddObserver(event, lambda obj, ev: problems.append(ev))
-    reader.SetFileName(path)
-    reader.Update()
-    if problems or reader.GetErrorCode() != 0:
-        fail(f"{path}: VTK's reader reports {problems or reader.GetErrorCode()}")
-    return reader.GetOutput()
+    return vtkFiles.read_without_complaint(vtk.vtkXMLUnstructuredGridReader(), path, fail)
 
 
 def rotation_of_quaternion(w, x, y, z):

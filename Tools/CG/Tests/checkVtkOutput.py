@@ -36,6 +36,8 @@ except ImportError as error:
     print(f"checkVtkOutput: skipped: VTK's Python module is not installed ({error}); "
           "install python3-vtk9 (Scripts/setup.sh) to run this test")
     sys.exit(0)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "SelfTests"))
+import vtkFiles  # noqa: E402 (after the check that VTK is there)
 
 TOLERANCE = 1e-11
 VECTORS = ('Momentum', 'Velocity', 'InteractionForce')
@@ -47,28 +49,11 @@ def fail(message):
 
 
 def pvd_entries(path):
-    parser = vtk.vtkXMLDataParser()
-    parser.SetFileName(path)
-    if not parser.Parse():
-        fail(f"{path}: VTK cannot parse it")
-    root = parser.GetRootElement()
-    if root.GetName() != "VTKFile" or root.GetAttribute("type") != "Collection":
-        fail(f"{path}: not a VTK Collection file")
-    collection = root.FindNestedElementWithName("Collection")
-    return [(float(collection.GetNestedElement(k).GetAttribute("timestep")), collection.GetNestedElement(k).GetAttribute("file"))
-            for k in range(collection.GetNumberOfNestedElements())]
+    return vtkFiles.pvd_entries(path, fail)
 
 
 def read_vti(path):
-    problems = []
-    reader = vtk.vtkXMLImageDataReader()
-    for event in ("ErrorEvent", "WarningEvent"):
-        reader.AddObserver(event, lambda obj, ev: problems.append(ev))
-    reader.SetFileName(path)
-    reader.Update()
-    if problems or reader.GetErrorCode() != 0:
-        fail(f"{path}: VTK's reader reports {problems or reader.GetErrorCode()}")
-    return reader.GetOutput()
+    return vtkFiles.read_without_complaint(vtk.vtkXMLImageDataReader(), path, fail)
 
 
 def agree(what, expected, found):
