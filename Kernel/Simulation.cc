@@ -275,7 +275,7 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     bool rebuild;
     std::unique_ptr<AnyContactForceLoop> begun;  // on ranks: the interior pairs done while the ghosts travelled
     if (ranks_->isSplit()) {
-        rebuild = ranks_->updateNeighbourhood(state_, work.positions.changedThisStep, carried,
+        rebuild = ranks_->updateNeighbourhood(state_, work.positions.changedThisStep, drifted, carried,
                                               [this] { reorderParticles(/*withPreviousForces*/ false); }, &work,
                                               records || drifted ? nullptr : &begun);
     } else {
@@ -286,8 +286,8 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     }
     // The forces of the last step become previousForce by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity (done by
-    // the drift pass if there was one).
-    if (!drifted && !begun) {
+    // the drift pass if there was one, unless a rebuild on ranks put the last forces back).
+    if (!(drifted && !(rebuild && ranks_->isSplit())) && !begun) {
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }

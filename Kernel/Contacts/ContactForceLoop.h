@@ -146,10 +146,12 @@ public:
     void makeSweepPoints(PairList& list, std::size_t last) {
         if (!pointsStarted_) {
             pointsStarted_ = true;
-            const bool madeWithDrift = list.sweepPointsGrowth && list.sweepPointScratch.size() == p_.size();
-            if (madeWithDrift) growth_ = *list.sweepPointsGrowth, pointsMade_ = p_.size();
-            list.sweepPointsGrowth.reset();
-            frame_ = list.sweepInFlowFrame && !madeWithDrift ? sweepFrameVelocity(p_) : Vec3::Zero();
+            const std::optional<PairList::PointsByDrift>& drifted = list.sweepPointsByDrift;
+            if (drifted && list.sweepPointScratch.size() == p_.size() && drifted->slots <= p_.size())
+                growth_ = drifted->growth, pointsMade_ = drifted->slots, frame_ = drifted->frame;
+            else
+                frame_ = list.sweepInFlowFrame ? sweepFrameVelocity(p_) : Vec3::Zero();
+            list.sweepPointsByDrift.reset();
         }
         if (last <= pointsMade_) return;
         growth_ = largerGrowth(growth_, sweepPointsForStep(p_, pointsMade_, last, dt_, frame_, list.sweepPointScratch));

@@ -142,10 +142,17 @@ public:
         return valid && referencePosition.size() == particles.size();
     }
     double maxSpeed = 0;
-    // Set when this step's sweepPointScratch was made by the drift (Particles/DriftPass.h) with
-    // this largest growth: the force loop takes the points as they are (and clears it).
-    // Cleared when the particles change slots.
-    std::optional<double> sweepPointsGrowth;
+    // Set when the drift (Particles/DriftPass.h) made this step's sweepPointScratch for the slots
+    // [0, slots) (on ranks the owned ones: the ghosts' states arrive later) with the frame
+    // velocity u and this largest growth: the force loop takes those points as they are, makes the
+    // rest with the same u (PairSweep.h: one u for all points keeps the sweep's bound), and clears
+    // it. Cleared when the particles change slots.
+    struct PointsByDrift {
+        double growth = 0;
+        std::size_t slots = 0;
+        Vec3 frame = Vec3::Zero();
+    };
+    std::optional<PointsByDrift> sweepPointsByDrift;
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them.

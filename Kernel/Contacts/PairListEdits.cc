@@ -152,7 +152,7 @@ void PairList::clear() {
     oneWayPairs.clear();
     oneWayHistory.assign(0);
     referencePosition.clear();
-    sweepPointsGrowth.reset();
+    sweepPointsByDrift.reset();
     valid = false;
 }
 
@@ -164,7 +164,7 @@ void PairList::followPermutation(const std::vector<std::size_t>& order) {
     for (ParticlePair& pair : oneWayPairs) pair = {newSlot[pair.i], newSlot[pair.j]};
     for (WallCandidate& candidate : wallPairs) candidate.particle = newSlot[candidate.particle];
     referencePosition.clear();
-    sweepPointsGrowth.reset();
+    sweepPointsByDrift.reset();
     valid = false;
 }
 
@@ -207,7 +207,7 @@ void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
         return true;
     });
     referencePosition.clear();
-    sweepPointsGrowth.reset();
+    sweepPointsByDrift.reset();
     valid = false;
 }
 

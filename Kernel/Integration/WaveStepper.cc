@@ -351,7 +351,7 @@ void WaveStepper::advance(StepHost& host, bool recordContacts) {
         for (int t = 0; t < levels; ++t) list.near.moved += levelGrowth[static_cast<std::size_t>(t)];
     else
         list.near.made = false;  // (its bound of the displacements did not follow the wave)
-    list.sweepPointsGrowth.reset();
+    list.sweepPointsByDrift.reset();
     if (early.maxOverlapFraction > summary.maxOverlapFraction) {
         summary.maxOverlapFraction = early.maxOverlapFraction;
         summary.worstA = early.worstA, summary.worstB = early.worstB, summary.worstIsWall = early.worstIsWall;

@@ -23,7 +23,7 @@ void WaveUndo::restore(SimulationState& s, StepWorkspace& work) {
     std::swap(list.history, history_), std::swap(list.wallHistory, wallHistory_);
     s.time = time_, s.step = step_, list.maxSpeed = maxSpeed_;
     list.near.made = false;
-    list.sweepPointsGrowth.reset();
+    list.sweepPointsByDrift.reset();
     work.lastDisplacement = lastDisplacement_, work.driftFrame = driftFrame_, work.positions = positions_;
 }
 

@@ -294,11 +294,11 @@ void forEachMovingField(Store& p, Forces& forces, F&& f) {
 // arrives with one copy. A slot beyond the owned ones (a particle removed since the ghosts were
 // made, which forces a list build on every rank: the update is then not applied) sends zeros,
 // so that every message has the size its receiver expects.
-void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine) {
+void DomainSplit::startGhostUpdate(const ParticleStore& p, const std::vector<Vec3>& lastForces, const Agreement& mine) {
     if (sendTo_.empty() && receiveFrom_.empty()) return;
     const Stopwatch watch(seconds.ghosts);
     std::size_t bytesPerParticle = 0;
-    forEachMovingField(p, p.force, [&](const auto& array) { bytesPerParticle += sizeof(array[0]); });
+    forEachMovingField(p, lastForces, [&](const auto& array) { bytesPerParticle += sizeof(array[0]); });
     outgoing_.resize(sendTo_.size());
     for (std::size_t k = 0; k < sendTo_.size(); ++k) {
         const std::vector<std::uint32_t>& slots = sendSlots_[k];
@@ -306,7 +306,7 @@ void DomainSplit::startGhostUpdate(const ParticleStore& p, const Agreement& mine
         char* out = outgoing_[k].data();
         std::memcpy(out, mine.data(), sizeof(Agreement));
         out += sizeof(Agreement);
-        forEachMovingField(p, p.force, [&](const auto& array) {
+        forEachMovingField(p, lastForces, [&](const auto& array) {
             constexpr std::size_t size = sizeof(array[0]);
             for (std::uint32_t i : slots) {
                 if (i < p.owned()) std::memcpy(out, &array[i], size);

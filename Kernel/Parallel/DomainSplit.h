@@ -74,10 +74,11 @@ public:
     // makes `agreement` the maximum over all ranks and no allreduce is needed
     // (agreesThroughGhosts); otherwise the caller agrees between start and finish.
     using Agreement = std::array<double, 4>;
-    void startGhostUpdate(const ParticleStore& particles, const Agreement& mine);
+    // lastForces: where the last forces are, of the particles sent and for the ghosts (the
+    // particles' force array, or the step's previousForce where the step has started its forces
+    // already: RankContext).
+    void startGhostUpdate(const ParticleStore& particles, const std::vector<Vec3>& lastForces, const Agreement& mine);
     void finishGhostUpdate(Agreement& agreement);
-    // lastForces: where the ghosts' last forces go (the particles' force array, or the step's
-    // previousForce where the step has started its forces already: RankContext).
     void applyGhostUpdate(ParticleStore& particles, std::vector<Vec3>& lastForces);
     bool agreesThroughGhosts() const { return partnersAreAll_; }
     // Whether a particle of this species at x, owned here, is one that no other rank needs as a

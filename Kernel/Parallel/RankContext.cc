@@ -12,6 +12,7 @@
 #include "IO/OutputFiles.h"
 #include "Integration/StepWorkspace.h"
 #include "Parallel/DomainSplit.h"
+#include "Particles/DriftPass.h"
 #include "Particles/VelocityVerlet.h"
 #include "SimulationState.h"
 
@@ -75,7 +76,8 @@ void RankContext::splitScene(SimulationState& s, bool boundariesRunOnRanks, cons
 // writes no output. A rebuild drops the ghosts, rebalances if asked, migrates particles with
 // their histories, reorders, and makes the ghosts anew; otherwise the ghosts are brought up to
 // date.
-bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
+bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged, const DriftPassResult* drifted,
+                                      std::vector<CarriedHistory>& carried,
                                       const std::function<void()>& reorder, StepWorkspace* work,
                                       std::unique_ptr<AnyContactForceLoop>* begun) {
     ParticleStore& p = s.particles;
@@ -83,6 +85,7 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     const double dt = s.settings.timeStep;
     std::string failure = std::move(overlapsToAgree_);  // the earlier of two diagnoses
     overlapsToAgree_.clear();
+    require(!drifted || work, "updateNeighbourhood: a drift pass without its workspace");
     bool rebuild = false;
     try {
         // Particles that boundaries added or moved have their pairs relisted if no other rank
@@ -92,7 +95,7 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
                 !split_->nobodyElseNeeds(list.referencePosition[slot], p.species[slot], s.domain))
                 list.valid = false;
         list.relist(p, s.domain, s.walls);
-        rebuild = list.needsRebuild(p, s.domain, s.time, dt);
+        rebuild = drifted ? list.needsRebuild(drifted->moves, p, s.time, dt) : list.needsRebuild(p, s.domain, s.time, dt);
     } catch (const Error& e) {
         if (failure.empty()) failure = e.what();
     }
@@ -106,7 +109,7 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     // The ghosts' states travel while the ranks agree, with this rank's numbers: when every
     // other rank is a partner they are the agreement (no allreduce); else an allreduce runs while
     // the messages travel. One wait for both; the states are applied unless the step rebuilds.
-    split_->startGhostUpdate(p, agreed);
+    split_->startGhostUpdate(p, drifted ? work->previousForce : p.force, agreed);
     // The interior pairs meanwhile, unless this rank already knows that the list goes (or that
     // the run stops, or that its near list was unmade: moved particles). Only in periodic
     // domains: without periodic faces the list has no interior pairs apart (PairList::interiorPairs).
@@ -121,7 +124,8 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     split_->finishGhostUpdate(agreed);
     const bool keep = agreed[0] == 0 && agreed[2] == 0;
     if (overlap && !keep) undoInteriorPairs(s, *work, *begun);
-    if (keep) split_->applyGhostUpdate(p, overlap ? work->previousForce : p.force);
+    if (keep) split_->applyGhostUpdate(p, overlap || drifted ? work->previousForce : p.force);
+    if (drifted && !keep) p.force.swap(work->previousForce);
     if (agreed[3] > 0) list.near.made = false;
     if (agreed[2] > 0)
         throw CollectiveError(failure.empty() ? "stopped: rank " + std::to_string(int(agreed[2]) - 1) + " found a blow-up"

@@ -25,6 +25,7 @@ class ContactHistoryLog;
 class DomainSplit;
 class OutputFiles;
 struct CarriedHistory;
+struct DriftPassResult;
 struct SimulationState;
 struct StepWorkspace;
 
@@ -88,7 +89,13 @@ public:
     // for the rest of the step; if another rank rebuilds the list after all, all of that is
     // undone (begun empty), and the step computes its forces after the build as without begun.
     // Spheres only, in a periodic domain, without sums in id order, and with --overlap-ghosts on.
-    bool updateNeighbourhood(SimulationState& s, bool& positionsChanged, std::vector<CarriedHistory>& carried,
+    // drifted (a step whose drift pass, Particles/DriftPass.h, measured the owned particles' moves
+    // and started their forces, the last ones in work.previousForce): the moves are taken from it,
+    // the ghosts' last forces go into work.previousForce, and a rebuild first puts the last forces
+    // back into the particles (they travel with migrating particles; the step starts its forces
+    // after the build).
+    bool updateNeighbourhood(SimulationState& s, bool& positionsChanged, const DriftPassResult* drifted,
+                             std::vector<CarriedHistory>& carried,
                              const std::function<void()>& reorder, StepWorkspace* work = nullptr,
                              std::unique_ptr<AnyContactForceLoop>* begun = nullptr);
     // Steps that computed interior pairs while their ghosts travelled, and those of them undone

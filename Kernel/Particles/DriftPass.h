@@ -14,8 +14,8 @@
 // particles the arrays are far beyond the caches and each pass streams them from memory
 // (Documentation/CacheCliff.md: about a fifth of the developed flow's step). The pass is for the
 // scenes whose steps do nothing else between the drift and the forces: spheres only, no
-// prescribed motions, no boundaries, one rank, nothing noted for relisting
-// (Simulation::integrate). Its results are those of the separate passes, except the sweep's frame
+// prescribed motions, no boundaries, nothing noted for relisting; on ranks over the owned slots
+// (Integration/DriftPassStepper.cc). Its results are those of the separate passes, except the sweep's frame
 // velocity u, which it is given, the mean velocity it measured the step before (any velocity
 // common to all keeps the sweep's bound, and the pairs that get forces do not depend on it:
 // PairSweep.h).
@@ -58,7 +58,8 @@ std::uint64_t positionSum(const ParticleStore& p, std::size_t n);
 void startFirstHalf(ParticleStore& p, std::vector<Vec3>& previousForce, std::vector<SweepPoint>& points);
 
 // reference: the positions at the list's build, or null (no build to compare with: no
-// displacement). The particles are all owned (no ghosts).
+// displacement). The particles are all owned (no ghosts): on ranks, the range form below over the
+// owned slots (Integration/DriftPassStepper.cc).
 DriftPassResult kickDriftAndStartForces(ParticleStore& p, std::vector<Vec3>& previousForce, const Domain& domain,
                                         const std::vector<Vec3>* reference, const Vec3& gravity,
                                         const Vec3& frameVelocity, double dt, std::vector<SweepPoint>& points);
