@@ -37,6 +37,21 @@ def hstop_per_angle(points):
     return estimates
 
 
+def set_aside_thin_flows(points):
+    """The points with each flowing layer that is thinner than the thickest arrested layer at its
+    angle marked "thin-flowing" (copies; the others as they are). Such a layer is about one
+    particle deep and rolls over the base's bumps as single spheres (Documentation/Calibration.md,
+    "The v2 study"): not the flowing state of a bulk layer above h_stop. Taken as the thinnest
+    flowing layer, it would put the bracket of h_stop below its arrested side; neither the
+    h_stop nor the flow-rule fit uses it."""
+    thickest = {}
+    for p in points:
+        if p["state"] == "arrested":
+            thickest[p["angle"]] = max(thickest.get(p["angle"], -math.inf), p["h"])
+    return [dict(p, state="thin-flowing") if p["state"] == "flowing" and p["h"] < thickest.get(p["angle"], -math.inf)
+            else p for p in points]
+
+
 def fit_hstop(points, d=1.0):
     """delta1, delta2 (degrees) and A from the arrested/flowing boundary: least squares in
     log h_stop over the angles that have both kinds of point, with delta1 below the smallest and
@@ -124,7 +139,9 @@ def refine_jointly(h, rule, d, with_gamma):
 def fit_all(points, d=1.0, with_gamma=True):
     """The h_stop curve and the flow rule, each on its own and then jointly (refine_jointly), and
     the friction law's residuals at the flowing points (against their measured basal friction mu
-    and against tan theta)."""
+    and against tan theta). Flowing layers thinner than an arrested one at their angle are left
+    out (set_aside_thin_flows)."""
+    points = set_aside_thin_flows(points)
     h = fit_hstop(points, d)
     rule = fit_flow_rule(points, h, d, with_gamma)
     h, rule = refine_jointly(h, rule, d, with_gamma)

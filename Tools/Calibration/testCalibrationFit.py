@@ -102,6 +102,22 @@ try:
 except cf.FitError as error:
     check("2 steady flowing points" in str(error), f"two flowing points: refused saying {str(error)!r}")
 
+# A layer of one particle that flows below thicker arrested layers (a monolayer rolling over
+# the base): set aside, the fit is that of the study without it; taken as the thinnest flowing
+# layer, it would have put the 22-degree bracket of h_stop below its arrested side.
+hstop22 = cf.hstop_model(22, large["delta1"], large["delta2"], large["A"])
+monolayer = {"angle": 22, "h": 0.5 * min(p["h"] for p in study if p["angle"] == 22 and p["state"] == "arrested") + 0.01,
+             "F": 0.9, "mu": math.tan(math.radians(22)), "state": "flowing"}
+check(monolayer["h"] < hstop22, f"the monolayer ({monolayer['h']:.2f}) lies below h_stop(22) = {hstop22:.2f}")
+marked = cf.set_aside_thin_flows(study + [monolayer])
+check(marked[-1]["state"] == "thin-flowing" and [p["state"] for p in marked[:-1]] == [p["state"] for p in study],
+      "the monolayer alone is set aside")
+with_it, without = cf.fit_all(study + [monolayer]), cf.fit_all(study)
+check(all(with_it[k] == without[k] for k in cf.PARAMETERS), "the fit with the monolayer is the fit without it")
+raw = dict((a, (h, e)) for a, h, e in cf.hstop_per_angle(study + [monolayer]))
+check(raw[22][0] - raw[22][1] < monolayer["h"] + 1e-12 and raw[22][0] < hstop22,
+      "unmarked, the monolayer would have been the 22-degree bracket's flowing side")
+
 # The height offset: a study written with every h too high by 0.74 (the driver's h against the
 # thickness of a uniform layer, Calibration.md accounts (c)) and its F = u / sqrt(h cos theta)
 # computed with that h, F (h / (h + 0.74))^(1/2), read back with --height-offset 0.74, gives the
