@@ -1,5 +1,7 @@
 #include "App/CsvWriter.h"
 
+#include <charconv>
+
 #include "IO/InputError.h"
 
 namespace talus::cg {
@@ -31,16 +33,22 @@ CsvWriter::~CsvWriter() {
     if (file_ != nullptr) std::fclose(file_);
 }
 
+// Each number as printf's %.12g writes it (std::to_chars with a precision is specified to give
+// the same characters), a row at a time: fprintf per number was a third of the cost of a
+// sampled profile written at every sample during a run.
 void CsvWriter::writeRow(double time, const Vec3& point, const std::vector<double>& values) {
-    bool first = true;
+    row_.clear();
     auto put = [&](double v) {
-        std::fprintf(file_, first ? "%.12g" : ",%.12g", v);
-        first = false;
+        char number[32];
+        const std::to_chars_result end = std::to_chars(number, number + sizeof number, v, std::chars_format::general, 12);
+        if (!row_.empty()) row_ += ',';
+        row_.append(number, end.ptr);
     };
     if (withTime_) put(time);
     for (int k : axes_) put(point[k]);
     for (double v : values) put(v);
-    std::fputc('\n', file_);
+    row_ += '\n';
+    std::fwrite(row_.data(), 1, row_.size(), file_);
 }
 
 void CsvWriter::close() {

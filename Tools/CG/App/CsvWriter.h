@@ -34,6 +34,7 @@ public:
 private:
     std::string path_;
     std::FILE* file_ = nullptr;
+    std::string row_;  // (the row being written)
     std::vector<int> axes_;
     bool withTime_;
 };

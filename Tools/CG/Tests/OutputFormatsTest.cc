@@ -5,10 +5,13 @@
 // h5py and an XML parser, is checkOutputFormats.py (ctest CG.Program.OutputFormats*).
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 
+#include "App/CsvWriter.h"
 #include "App/FieldWriter.h"
 #include "App/StatFieldWriter.h"
 #include "CGTestHelpers.h"
@@ -112,6 +115,44 @@ TEST(OutputFormats, StatFileHoldsTheSumsInMercuryColumns) {
         for (int c = 0; c < 3; ++c) EXPECT_EQ(v[3 + 85 + c], 0.0);  // nor boundary forces
     }
     EXPECT_FALSE(std::getline(in, line) && !line.empty());
+}
+
+// The CSV writer writes each number as printf's %.12g would (it formats them with std::to_chars):
+// random doubles of every exponent, both signs, zeros, subnormals, infinities and NaNs, each row
+// compared character by character with the row that fprintf makes.
+TEST(OutputFormats, CsvNumbersAreThoseOfPrintf) {
+    const std::string path = ::testing::TempDir() + "csvNumbers.csv";
+    std::mt19937_64 random(7);
+    std::vector<std::vector<double>> rows;
+    for (int r = 0; r < 400; ++r) {
+        std::vector<double> row;
+        for (int k = 0; k < 8; ++k) {
+            std::uint64_t bits = random();
+            if (r % 4 == 0) bits &= ~(std::uint64_t{0x7f0} << 52);  // (exponents near 1 and subnormals)
+            double v;
+            std::memcpy(&v, &bits, sizeof v);
+            row.push_back(v);
+        }
+        rows.push_back(row);
+    }
+    const double infinity = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    rows.push_back({0.0, -0.0, infinity, -infinity, nan, -nan, std::numeric_limits<double>::denorm_min(), 1e300});
+    rows.push_back({0.1, 1.0 / 3, 123456789012.5, 1234567890123.0, 5e-324, 2.5e-5, 100000, 1e15});
+    {
+        CsvWriter csv(path, std::vector<int>{2}, true, {}, {});
+        for (const std::vector<double>& row : rows) csv.writeRow(0.5, Vec3{0, 0, -0.25}, row);
+        csv.close();
+    }
+    std::ifstream in(path);
+    std::string line;
+    for (int k = 0; k < 2; ++k) std::getline(in, line);  // (units and names)
+    for (const std::vector<double>& row : rows) {
+        char expected[1024];
+        int used = std::snprintf(expected, sizeof expected, "%.12g,%.12g", 0.5, -0.25);
+        for (double v : row) used += std::snprintf(expected + used, sizeof expected - used, ",%.12g", v);
+        ASSERT_TRUE(std::getline(in, line));
+        EXPECT_EQ(line, std::string(expected));
+    }
 }
 
 TEST(OutputFormats, UnknownFormatIsNamed) {
