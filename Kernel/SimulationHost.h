@@ -16,7 +16,7 @@ public:
     const SimulationState& state() const override { return s_.state_; }
     StepWorkspace& workspace() override { return *s_.work_; }
     bool onRanks() const override { return s_.ranks_->isSplit(); }
-    bool hasBoundaries() const override {
+    bool boundariesActAfterDrift() const override {
         for (const auto& b : s_.scene_->boundaries())
             if (b->actsAfterDrift()) return true;
         return false;

@@ -18,7 +18,7 @@ std::string_view DriftPassStepper::whyNot(const StepHost& host) const {
     if (host.onRanks() && s.settings.stepper.overlapGhosts)
         return "the interior pairs are computed while the ghosts travel (--overlap-ghosts on)";
     if (!s.motions.empty()) return "prescribed motions move particles or walls";
-    if (host.hasBoundaries()) return "boundaries act between the drift and the forces";
+    if (host.boundariesActAfterDrift()) return "boundaries act between the drift and the forces";
     if (s.domain.oneWay.active) return "a one-way periodic box (a maser)";
     if (!s.pairList.noted().empty()) return "particles added or moved are to be relisted";
     return {};

@@ -22,7 +22,7 @@ public:
     virtual StepWorkspace& workspace() = 0;
     virtual bool onRanks() const = 0;
     // Whether a boundary (Boundaries/Boundary.h) acts between the drift and the forces; they act.
-    virtual bool hasBoundaries() const = 0;
+    virtual bool boundariesActAfterDrift() const = 0;
     virtual void afterDrift() = 0;
     // The forces at the positions now (the neighbour list updated first; recordContacts: into the
     // workspace's records). drifted: what the step's drift pass measured (it has also made the

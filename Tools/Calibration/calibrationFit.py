@@ -22,15 +22,23 @@ def hstop_model(theta_deg, delta1, delta2, a_d):
     return a_d * (math.tan(math.radians(delta2)) - t) / (t - math.tan(math.radians(delta1)))
 
 
+def flows(point):
+    """Whether a point brackets h_stop from above: steady, or unsteady and speeding up."""
+    return point["state"] == "flowing" or (point["state"] == "unsteady" and point.get("uChange", 0) > 0)
+
+
 def hstop_per_angle(points):
     """For each angle with both an arrested and a flowing point: h_stop halfway between the
     thickest arrested layer and the thinnest flowing one, and half their distance as its
-    uncertainty. Returns a sorted list of (angle, h_stop, half gap)."""
+    uncertainty. Returns a sorted list of (angle, h_stop, half gap). An unsteady point that
+    sped up over its averaging flows (a slow flow just above h_stop whose velocity still
+    wanders: it had not stopped when its run ended, and was not slowing down); one that slowed
+    down may have been on its way to a stop, and brackets nothing. The flow rule uses neither."""
     angles = sorted({p["angle"] for p in points})
     estimates = []
     for angle in angles:
         arrested = [p["h"] for p in points if p["angle"] == angle and p["state"] == "arrested"]
-        flowing = [p["h"] for p in points if p["angle"] == angle and p["state"] == "flowing"]
+        flowing = [p["h"] for p in points if p["angle"] == angle and flows(p)]
         if arrested and flowing:
             low, high = max(arrested), min(flowing)
             estimates.append((angle, 0.5 * (low + high), 0.5 * abs(high - low)))
@@ -38,7 +46,7 @@ def hstop_per_angle(points):
 
 
 def set_aside_thin_flows(points):
-    """The points with each flowing layer that is thinner than the thickest arrested layer at its
+    """The points with each flowing layer (steady or not) that is thinner than the thickest arrested layer at its
     angle marked "thin-flowing" (copies; the others as they are). Such a layer is about one
     particle deep and rolls over the base's bumps as single spheres (Documentation/Calibration.md,
     "The v2 study"): not the flowing state of a bulk layer above h_stop. Taken as the thinnest
@@ -48,8 +56,9 @@ def set_aside_thin_flows(points):
     for p in points:
         if p["state"] == "arrested":
             thickest[p["angle"]] = max(thickest.get(p["angle"], -math.inf), p["h"])
-    return [dict(p, state="thin-flowing") if p["state"] == "flowing" and p["h"] < thickest.get(p["angle"], -math.inf)
-            else p for p in points]
+    return [dict(p, state="thin-flowing")
+            if p["state"] in ("flowing", "unsteady") and p["h"] < thickest.get(p["angle"], -math.inf) else p
+            for p in points]
 
 
 def fit_hstop(points, d=1.0):
@@ -130,6 +139,10 @@ def refine_jointly(h, rule, d, with_gamma):
     lower, upper = [0.01, high + 1e-6, 1e-6, 0, -np.inf], [low - 1e-6, 89.9, np.inf, np.inf, np.inf]
     if not with_gamma:
         start, lower, upper = start[:4], lower[:4], upper[:4]
+    # (The separate fits may end outside the joint bounds, e.g. a negative beta from a resample
+    # with few flowing points: start inside them.)
+    start = [min(max(v, lo + 1e-6 * max(1.0, abs(lo))), hi - 1e-6 * max(1.0, abs(hi))) if np.isfinite(hi) else max(v, lo)
+             for v, lo, hi in zip(start, lower, upper)]
     x = least_squares(residual, start, bounds=(lower, upper)).x
     delta1, delta2, a_d, beta = x[:4]
     h = {"delta1": delta1, "delta2": delta2, "A": a_d / d, "estimates": estimates}

@@ -110,8 +110,9 @@ def main():
     kinds = ("flowing", "arrested", "unsteady", "undecided", "thin-flowing")
     counts = {s: sum(p["state"] == s for p in cf.set_aside_thin_flows(points)) for s in kinds}
     print(f"{len(points)} points of {species} (d = {d:.4g}): {counts['flowing']} flowing, {counts['arrested']} arrested, "
-          f"{counts['unsteady']} unsteady and {counts['undecided']} undecided (left out), {counts['thin-flowing']} "
-          "flowing below an arrested layer at their angle (left out)")
+          f"{counts['unsteady']} unsteady (left out of the flow rule; those speeding up bracket h_stop), "
+          f"{counts['undecided']} undecided (left out), {counts['thin-flowing']} flowing below an arrested layer at "
+          "their angle (left out)")
     print("h_stop per angle: " + ", ".join(f"{a:g}: {h:.2f} +- {e:.2f}" for a, h, e in fit["hstop"]["estimates"]))
     seed = TABLE_3_1.get(species, {})
     print(f"{'parameter':<10}{'fit':>10}{'95% interval':>22}{'Table 3.1':>12}")

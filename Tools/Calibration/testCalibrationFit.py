@@ -118,6 +118,18 @@ raw = dict((a, (h, e)) for a, h, e in cf.hstop_per_angle(study + [monolayer]))
 check(raw[22][0] - raw[22][1] < monolayer["h"] + 1e-12 and raw[22][0] < hstop22,
       "unmarked, the monolayer would have been the 22-degree bracket's flowing side")
 
+# An unsteady point that sped up (a slow flow whose velocity still rose when its run ended)
+# brackets h_stop from above like a steady one; one that slowed down brackets nothing; the flow
+# rule leaves both out.
+slow = dict(monolayer, h=hstop22 * 1.02, F=0.05, state="unsteady", uChange=0.4)
+estimate = dict((a, (h, e)) for a, h, e in cf.hstop_per_angle(study + [slow]))[22]
+check(estimate[0] + estimate[1] == slow["h"], "an unsteady flow speeding up just above h_stop is the 22-degree "
+                                              "bracket's flowing side")
+stopping = dict(slow, uChange=-0.9)
+check(cf.hstop_per_angle(study + [stopping]) == cf.hstop_per_angle(study), "one slowing down brackets nothing")
+check(len(cf.fit_flow_rule(study + [slow], without["hstop"])["F"]) == len(cf.fit_flow_rule(study, without["hstop"])["F"]),
+      "the flow rule leaves the unsteady point out")
+
 # The height offset: a study written with every h too high by 0.74 (the driver's h against the
 # thickness of a uniform layer, Calibration.md accounts (c)) and its F = u / sqrt(h cos theta)
 # computed with that h, F (h / (h + 0.74))^(1/2), read back with --height-offset 0.74, gives the

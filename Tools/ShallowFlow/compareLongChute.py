@@ -1,0 +1,219 @@
+#!/usr/bin/python3
+"""The long chute of particles against the depth-averaged model (Documentation/ShallowFlow.md,
+"Against the particles"), from saved files alone: no particle is simulated again.
+
+    compareLongChute.py RUN --talus-cg BIN --talus-shallow BIN --times 100,200,300 -o PREFIX
+
+RUN names a MaserFedChute run (RUN.data with its frames, RUN.restart, RUN.series). The particle
+run works in units of the mean diameter; the comparison in the thesis's units, the large
+diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - maser length)/dL
+(the maser box ends at x' = 0), h' = h/dL, t' = (t - activation)/sqrt(dL), u' = u/sqrt(dL).
+
+1. The inflow: talus-cg depth averages (coordinates XZ, base excluded) of the maser box over
+   the frames after the maser's activation give h_in, u_in and phi_in (the small spheres' share of
+   the solids), averaged over the box's interior and the frames.
+2. The model: talus-shallow with that inflow, the friction law's parameters as given after "--"
+   (default: its own, table 3.1), at the frames' times t'.
+3. The particles: the depth averages along the chute at the frames nearest to --times (kernel
+   widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
+   takes them), h and phi against x'.
+4. Per time, for both: the front (the last x' where h reaches 0.5), the shock (the last x' where
+   phi reaches 0.25), the head's height (the largest h) and length (front - shock: the part of the
+   flow that holds large particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
+   profiles, PREFIX-fronts.png the positions against time.
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+FRONT_HEIGHT, SHOCK_CONCENTRATION = 0.5, 0.25  # talus-shallow's defaults (--front-height, --shock-concentration)
+
+
+def fail(message):
+    sys.exit(f"compareLongChute: {message}")
+
+
+def activation_time(run):
+    """The maser's activation (run.activatedAt in the restart file; -1: not activated)."""
+    with open(run + ".restart") as f:
+        for line in f:
+            words = line.split()
+            if len(words) == 2 and words[0] == "run.activatedAt":
+                t = float(words[1])
+                if t < 0:
+                    fail(f"{run}.restart: the maser has not been activated yet (run.activatedAt {words[1]})")
+                return t
+    fail(f"{run}.restart: no run.activatedAt line (not a MaserFedChute restart file?)")
+
+
+def frame_times(run):
+    """The times of the frames in RUN.data (MercuryDPM format: a header line 'N t xmin ...' each)."""
+    times = []
+    with open(run + ".data") as f:
+        while True:
+            header = f.readline()
+            if not header:
+                return times
+            words = header.split()
+            try:
+                count, time = int(words[0]), float(words[1])
+            except (IndexError, ValueError):
+                fail(f"{run}.data: frame header expected after {len(times)} frames, got {header[:60]!r}")
+            times.append(time)
+            for _ in range(count):
+                if not f.readline():
+                    fail(f"{run}.data: the frame at t = {time} is incomplete")
+
+
+def depth_averages(args, t, x_range, points, folder, t_last=None):
+    """talus-cg's depth averages of the frame at t (or of every frame from t to t_last, rows one
+    block per frame): x, the height, the velocity along x, phi."""
+    out = os.path.join(folder, f"depth-{t:.6f}.csv")
+    command = [args.talus_cg, args.run, "--coordinates", "XZ", "--widths", str(args.widths[0]), "1", str(args.widths[1]),
+               "-x", str(x_range[0]), str(x_range[1]), "-z", str(args.z_range[0]), str(args.z_range[1]),
+               "-n", str(points), str(args.z_points), "--depth-average", "--fixed", "exclude", "--periodic", "y",
+               "--stress", "off", "--time-min", repr(t - 1e-6), "--time-max", repr((t if t_last is None else t_last) + 1e-6),
+               "-o", out]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        fail("talus-cg failed: " + " ".join(command) + "\n" + done.stderr)
+    rows = np.genfromtxt(out, delimiter=",", names=True, comments="#")
+    small = [n for n in rows.dtype.names if n.startswith("DepthAveragedConcentration_s")]
+    phi = sum(rows[f"DepthAveragedConcentration_s{s}"] for s in args.small_species if f"DepthAveragedConcentration_s{s}" in small)
+    return rows["x"], rows["Height"], rows["DepthAveragedVelocityX"], phi
+
+
+def last_crossing(x, value, level):
+    """The last x where value reaches level, linear between points (nan if nowhere)."""
+    above = np.nonzero(value >= level)[0]
+    if len(above) == 0:
+        return math.nan
+    k = above[-1]
+    if k + 1 >= len(x):
+        return x[k]
+    return x[k] + (value[k] - level) / (value[k] - value[k + 1]) * (x[k + 1] - x[k])
+
+
+def measures(x, h, phi):
+    front, shock = last_crossing(x, h, FRONT_HEIGHT), last_crossing(x, phi, SHOCK_CONCENTRATION)
+    return {"front": front, "shock": shock, "head_height": float(np.max(h)), "head_length": front - shock}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("run", help="the particle run's name (RUN.data, RUN.restart)")
+    parser.add_argument("--talus-cg", required=True)
+    parser.add_argument("--talus-shallow", required=True)
+    parser.add_argument("--times", required=True, help="times after the activation, thesis units (frames nearest)")
+    parser.add_argument("--large-diameter", type=float, default=2 * 2 ** (1 / 3) / (1 + 2 ** (1 / 3)),
+                        help="dL in the run's units (default 1.1150: size ratio 2^(1/3) at mean diameter 1)")
+    parser.add_argument("--maser-length", type=float, required=True, help="the maser box's length, run units")
+    parser.add_argument("--chute-length", type=float, required=True, help="the open chute's length, run units")
+    parser.add_argument("--small-species", default="1,4", help="species of the small spheres (default 1,4: chute, maser)")
+    parser.add_argument("--widths", type=float, nargs=2, default=[5.0, 0.5], metavar=("WX", "WZ"),
+                        help="Lucy widths along x and z, run units (default 5 0.5)")
+    parser.add_argument("--z-range", type=float, nargs=2, default=[-1.0, 45.0])
+    parser.add_argument("--z-points", type=int, default=184)
+    parser.add_argument("-o", "--output", default="longChute", help="output prefix (PREFIX.csv, PREFIX-*.png)")
+    parser.add_argument("shallow", nargs="*", help="after --: flags for talus-shallow (e.g. the friction laws)")
+    args = parser.parse_args()
+    args.small_species = [int(s) for s in args.small_species.split(",")]
+    dl, tu = args.large_diameter, math.sqrt(args.large_diameter)
+    wanted = [float(t) for t in args.times.split(",")]
+    activated = activation_time(args.run)
+    frames = frame_times(args.run)
+    after = [t for t in frames if t > activated + 1e-9]
+    if not after:
+        fail(f"{args.run}.data: no frame after the activation at t = {activated}")
+    chosen = sorted({min(after, key=lambda t: abs((t - activated) / tu - w)) for w in wanted})
+    print(f"activation at t = {activated:g} (run units); frames at t' = " +
+          ", ".join(f"{(t - activated) / tu:.2f}" for t in chosen))
+
+    with tempfile.TemporaryDirectory() as folder:
+        # 1. The inflow, from the maser box's interior over every frame after the activation.
+        w = args.widths[0]
+        x, h, u, phi = depth_averages(args, after[0], (0, args.maser_length), max(4, int(args.maser_length)), folder,
+                                      after[-1])
+        inside = (x > w) & (x < args.maser_length - w)
+        h_in, u_in, phi_in = h[inside].mean(), u[inside].mean(), phi[inside].mean()
+        print(f"inflow from the maser ({len(after)} frames): h = {h_in / dl:.4g} dL, u = {u_in / tu:.4g}, phi = {phi_in:.4g}")
+
+        # 2. The model at the frames' times.
+        times = [(t - activated) / tu for t in chosen]
+        prefix = os.path.join(folder, "model")
+        command = [args.talus_shallow, "--length", f"{args.chute_length / dl:.6f}",
+                   "--cells", str(int(round(args.chute_length / dl))), "--end-time", repr(max(times)),
+                   "--output-times", ",".join(repr(t) for t in times), "--inflow-height", repr(h_in / dl),
+                   "--inflow-velocity", repr(u_in / tu), "--inflow-concentration", repr(phi_in),
+                   "--output", prefix] + args.shallow
+        done = subprocess.run(command, capture_output=True, text=True)
+        if done.returncode != 0:
+            fail("talus-shallow failed: " + " ".join(command) + "\n" + done.stderr)
+        model = np.genfromtxt(prefix + ".profiles.csv", delimiter=",", names=True)
+
+        # 3-4. The particles along the chute, and the measures of both.
+        results, profiles = [], []
+        for t, t_thesis in zip(chosen, times):
+            x, h, u, phi = depth_averages(args, t, (0, args.maser_length + args.chute_length),
+                                          int(round(args.maser_length + args.chute_length)), folder)
+            xs, hs, phis = (x - args.maser_length) / dl, h / dl, phi
+            m = model[np.isclose(model["t"], t_thesis, rtol=0, atol=1e-6)]
+            dpm, cont = measures(xs, hs, phis), measures(m["x"], m["h"], m["phi"])
+            results.append({"t": t_thesis, **{f"{k}_particles": v for k, v in dpm.items()},
+                            **{f"{k}_model": v for k, v in cont.items()}})
+            profiles.append((t_thesis, xs, hs, hs * phis, m["x"], m["h"], m["hphi"]))
+
+    with open(args.output + ".csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(results[0].keys()))
+        writer.writeheader()
+        for r in results:
+            writer.writerow({k: f"{v:.6g}" for k, v in r.items()})
+    print(f"{'t':>7} {'front':>17} {'shock':>17} {'head height':>17} {'head length':>17}   (particles / model)")
+    for r in results:
+        print(f"{r['t']:7.1f} " + " ".join(f"{r[k + '_particles']:8.1f}/{r[k + '_model']:<8.1f}"
+                                           for k in ("front", "shock", "head_height", "head_length")))
+    plot(args.output, profiles, results, h_in / dl)
+
+
+def plot(prefix, profiles, results, h_in):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(len(profiles), 1, figsize=(10, 2.4 * len(profiles)), squeeze=False)
+    top = 1.15 * max(max(p[2].max(), p[5].max()) for p in profiles)
+    right = max(max(p[1][p[2] > 0.05].max(initial=0), p[4][p[5] > 0.05].max(initial=0)) for p in profiles) * 1.05 + 20
+    for axis, (t, xs, hs, hphis, xm, hm, hphim) in zip(axes[:, 0], profiles):
+        axis.fill_between(xs, 0, hphis, color="tab:green", alpha=0.35, label="particles: h phi (small)")
+        axis.plot(xs, hs, color="tab:red", label="particles: h")
+        axis.plot(xm, hm, "k", label="model: h")
+        axis.plot(xm, hphim, "k--", label="model: h phi")
+        axis.axhline(h_in, color="0.6", lw=0.8)
+        axis.set_xlim(-20, right)
+        axis.set_ylim(0, top)
+        axis.set_ylabel("h / dL")
+        axis.set_title(f"t = {t:.1f}", loc="left", fontsize=9)
+    axes[0, 0].legend(loc="upper right", fontsize=7, ncol=2)
+    axes[-1, 0].set_xlabel("x / dL")
+    figure.tight_layout()
+    figure.savefig(prefix + "-profiles.png", dpi=120)
+    figure, axis = plt.subplots(figsize=(6, 4))
+    t = [r["t"] for r in results]
+    for key, colour in (("front", "tab:red"), ("shock", "tab:green")):
+        axis.plot(t, [r[key + "_particles"] for r in results], "o", color=colour, label=f"{key}: particles")
+        axis.plot(t, [r[key + "_model"] for r in results], "-", color=colour, label=f"{key}: model")
+    axis.set_xlabel("t")
+    axis.set_ylabel("x / dL")
+    axis.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(prefix + "-fronts.png", dpi=120)
+    print(f"wrote {prefix}.csv, {prefix}-profiles.png, {prefix}-fronts.png")
+
+
+if __name__ == "__main__":
+    main()
