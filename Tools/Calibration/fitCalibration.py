@@ -29,17 +29,18 @@ def save(fig, ax, xlabel, ylabel, path):
     return path
 
 
-def plot(points, fit, d, prefix):
+def plot(points, fit, d, prefix, table=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
     d1, d2, a_d, beta, gamma = fit["delta1"], fit["delta2"], fit["A"] * d, fit["beta"], fit["gamma"]
     paths = []
+    points = cf.set_aside_thin_flows(points)
 
     fig, ax = plt.subplots(figsize=(5, 4))
     for state, marker, colour in (("arrested", "x", "tab:blue"), ("flowing", "o", "tab:red"), ("unsteady", "^", "orange"),
-                                  ("undecided", "s", "grey")):
+                                  ("undecided", "s", "grey"), ("thin-flowing", "v", "grey")):
         chosen = [p for p in points if p["state"] == state]
         if chosen:
             ax.scatter([p["angle"] for p in chosen], [p["h"] for p in chosen], marker=marker, color=colour, label=state,
@@ -49,6 +50,10 @@ def plot(points, fit, d, prefix):
                 label="h_stop per angle")
     theta = np.linspace(d1 + 0.05 * (d2 - d1), d2, 200)
     ax.plot(theta, cf.hstop_model(theta, d1, d2, a_d), "k-", label="fit")
+    if table:
+        t1, t2, t_ad = table["delta1"], table["delta2"], table["A"] * d
+        theta = np.linspace(t1 + 0.05 * (t2 - t1), t2, 200)
+        ax.plot(theta, cf.hstop_model(theta, t1, t2, t_ad), "k--", lw=0.8, label="Table 3.1")
     ax.set_ylim(0, 1.2 * max(p["h"] for p in points))
     paths.append(save(fig, ax, "angle (degrees)", "h (large diameters)", prefix + "-hstop.png"))
 
@@ -129,7 +134,7 @@ def main():
     print(f"friction law: rms of mu(h, F) - tan(theta) {mu_rms:.4f}; measured basal friction - tan(theta): "
           f"mean {base.mean():+.4f}, largest {abs(base).max():.4f}")
     if args.plots:
-        print("plots: " + ", ".join(plot(points, fit, d, args.plots)))
+        print("plots: " + ", ".join(plot(points, fit, d, args.plots, seed if "delta1" in seed else None)))
 
 
 if __name__ == "__main__":

@@ -77,7 +77,8 @@ def depth_averages(args, t, x_range, points, folder, t_last=None):
     out = os.path.join(folder, f"depth-{t:.6f}.csv")
     command = [args.talus_cg, args.run, "--coordinates", "XZ", "--widths", str(args.widths[0]), "1", str(args.widths[1]),
                "-x", str(x_range[0]), str(x_range[1]), "-z", str(args.z_range[0]), str(args.z_range[1]),
-               "-n", str(points), str(args.z_points), "--depth-average", "--fixed", "exclude", "--periodic", "y",
+               "-n", str(points), str(args.z_points), "--depth-average", "--fixed", "exclude",
+               "--fixed-species", args.base_species, "--periodic", "y",
                "--stress", "off", "--time-min", repr(t - 1e-6), "--time-max", repr((t if t_last is None else t_last) + 1e-6),
                "-o", out]
     done = subprocess.run(command, capture_output=True, text=True)
@@ -116,6 +117,7 @@ def main():
     parser.add_argument("--maser-length", type=float, required=True, help="the maser box's length, run units")
     parser.add_argument("--chute-length", type=float, required=True, help="the open chute's length, run units")
     parser.add_argument("--small-species", default="1,4", help="species of the small spheres (default 1,4: chute, maser)")
+    parser.add_argument("--base-species", default="2,5", help="species of the fixed base (default 2,5: chute, maser)")
     parser.add_argument("--widths", type=float, nargs=2, default=[5.0, 0.5], metavar=("WX", "WZ"),
                         help="Lucy widths along x and z, run units (default 5 0.5)")
     parser.add_argument("--z-range", type=float, nargs=2, default=[-1.0, 45.0])

@@ -195,6 +195,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             layout = grainer.layout();
             // The first frame's sources before any output is opened: its input errors leave no
             // file.
+            if (!options.fixedSpecies.empty()) grainer.setExcluded(fixedBySpecies(frame, options.fixedSpecies));
             grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
             if (options.mixingSpecies && layout.species < 2) {
                 throw InputError("--mixing: needs a mixture of at least 2 species, the run has " + std::to_string(layout.species));
@@ -273,8 +274,10 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             firstTime = time;
         }
 
-        if (framesUsed > 0)
+        if (framesUsed > 0) {
+            if (!options.fixedSpecies.empty()) grainer.setExcluded(fixedBySpecies(frame, options.fixedSpecies));
             grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
+        }
         grainer.evaluate(points, sums);
         if (options.timeAverage) {
             for (std::size_t k = 0; k < sums.size(); ++k) average[k] += sums[k];

@@ -172,6 +172,14 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
             o.densities = densities;
         } else if (option == "--fixed") {
             parseFixedParticles(given, args.text(given), o);
+        } else if (option == "--fixed-species") {
+            o.fixedSpecies.clear();
+            for (const std::string& item : splitList(args.text(given))) {
+                long value = -1;
+                if (!toInteger(item, value) || value < 0 || value > 1000)
+                    throw InputError(given + ": '" + item + "' is not a species index (0, 1, ...)");
+                o.fixedSpecies.push_back(static_cast<int>(value));
+            }
         } else if (option == "--time-min") {
             o.timeMin = args.real(given);
         } else if (option == "--time-max") {
@@ -250,6 +258,8 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
         }
     }
     if (o.help) return o;
+    if (!o.fixedSpecies.empty() && !o.excludeFixed)
+        throw InputError("--fixed-species names the fixed particles; say what to do with them: --fixed exclude or boundary");
     if (o.name.empty() && o.dataPath.empty()) throw InputError("no input: give a run NAME (reads NAME.data) or --data FILE (see --help)");
     if (int(o.width.has_value()) + int(o.widths.has_value()) + int(o.widthMatrix.has_value()) > 1) {
         throw InputError("--width, --widths and --width-matrix exclude each other: give one");
@@ -347,6 +357,9 @@ input:
                           flowing particles act as a boundary, as walls always do: stress only from
                           the flowing particle's centre to the contact point, the force as the
                           InteractionForce density at the contact point
+  --fixed-species K,..    the fixed particles are those of these species, in every frame (instead
+                          of the restart file's flags, which fit only frames of its particle count:
+                          runs that add or delete particles, e.g. a maser-fed chute's base 2,5)
 
 coarse-graining function:
   --function NAME         Lucy (default), Gauss or Heaviside

@@ -46,6 +46,7 @@ struct ProgramOptions {
     std::optional<std::vector<double>> densities; // --density d0,d1,...
     bool excludeFixed = false;                    // --fixed include|exclude|boundary (exclude, boundary)
     bool fixedAsBoundary = false;                 // --fixed boundary (CoarseGrainingSetup::excludedAreBoundary)
+    std::vector<int> fixedSpecies;                // --fixed-species K,..: the fixed particles by species, frame by frame
 
     double timeMin = -1e300, timeMax = 1e300;     // --time-min, --time-max
     bool timeAverage = false;                     // --time-average

@@ -16,9 +16,12 @@ bool exists(const std::string& path) {
     return !path.empty() && std::filesystem::is_regular_file(path, error);
 }
 
-// --fixed exclude|boundary: the fixed particles of the restart file.
+// --fixed exclude|boundary: the fixed particles of the restart file, or with --fixed-species
+// those of the species named, marked in each frame.
 void applyFixedParticles(const ProgramOptions& options, RunInputs& in) {
     if (!options.excludeFixed) return;
+    in.setup.excludedAreBoundary = options.fixedAsBoundary;
+    if (!options.fixedSpecies.empty()) return;  // (frame by frame: fixedBySpecies)
     if (!in.restart) {
         throw InputError(std::string("--fixed ") + (options.fixedAsBoundary ? "boundary" : "exclude") +
                          ": needs a restart file to know which particles are fixed (--restart FILE)");
@@ -28,6 +31,13 @@ void applyFixedParticles(const ProgramOptions& options, RunInputs& in) {
 }
 
 }  // namespace
+
+std::vector<bool> fixedBySpecies(const ParticleFrame& frame, const std::vector<int>& species) {
+    std::vector<bool> fixed(frame.size(), false);
+    for (std::size_t i = 0; i < frame.size(); ++i)
+        fixed[i] = std::find(species.begin(), species.end(), frame.species[i]) != species.end();
+    return fixed;
+}
 
 void resolveDrumAxis(const ProgramOptions& options, RunInputs& in, std::ostream& log) {
     Coordinates& coordinates = in.setup.coordinates;

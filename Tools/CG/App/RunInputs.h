@@ -41,6 +41,9 @@ std::string commaList(const std::vector<double>& values);
 // `wantStress`: the contact stress is evaluated when a .fstat file is found (or --stress on).
 RunInputs resolveRunInputs(const ProgramOptions& options, std::ostream& log, bool wantStress = true);
 
+// --fixed-species: one flag per particle of the frame, set for the species named.
+std::vector<bool> fixedBySpecies(const ParticleFrame& frame, const std::vector<int>& species);
+
 // Without densities from --density or a restart file every species gets 6/pi: cut the default
 // list to the species the first frame shows (throws when a species index is beyond 15).
 void fitSpeciesToFrame(const ProgramOptions& options, RunInputs& inputs, const ParticleFrame& frame);
