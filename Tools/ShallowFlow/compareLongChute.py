@@ -18,7 +18,7 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
 4. Per time, for both: the front (the last x' where h reaches 0.5), the shock (the last x' where
-   phi reaches 0.25), the head's height (the largest h) and length (front - shock: the part of the
+   phi reaches 0.25 among those where h is at least 1), the head's height (the largest h) and length (front - shock: the part of the
    flow that holds large particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
    profiles, PREFIX-fronts.png the positions against time.
 """
@@ -84,10 +84,19 @@ def depth_averages(args, t, x_range, points, folder, t_last=None):
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         fail("talus-cg failed: " + " ".join(command) + "\n" + done.stderr)
-    rows = np.genfromtxt(out, delimiter=",", names=True, comments="#")
-    small = [n for n in rows.dtype.names if n.startswith("DepthAveragedConcentration_s")]
-    phi = sum(rows[f"DepthAveragedConcentration_s{s}"] for s in args.small_species if f"DepthAveragedConcentration_s{s}" in small)
+    rows = read_csv(out)
+    phi = sum(rows[f"DepthAveragedConcentration_s{s}"] for s in args.small_species
+              if f"DepthAveragedConcentration_s{s}" in rows)
     return rows["x"], rows["Height"], rows["DepthAveragedVelocityX"], phi
+
+
+def read_csv(path):
+    """A CSV file with '#' comment lines before its names line: a dict of columns."""
+    with open(path) as f:
+        lines = [line for line in f if not line.startswith("#")]
+    names = lines[0].strip().split(",")
+    values = np.array([[float(v) for v in line.split(",")] for line in lines[1:] if line.strip()])
+    return {n: values[:, k] for k, n in enumerate(names)}
 
 
 def last_crossing(x, value, level):
@@ -102,7 +111,10 @@ def last_crossing(x, value, level):
 
 
 def measures(x, h, phi):
-    front, shock = last_crossing(x, h, FRONT_HEIGHT), last_crossing(x, phi, SHOCK_CONCENTRATION)
+    """Front, shock, head height and length. The shock is sought where h is at least one large
+    diameter: near the particles' front a few grains make phi anything from 0 to 1."""
+    front = last_crossing(x, h, FRONT_HEIGHT)
+    shock = last_crossing(x, np.where(h >= 1.0, phi, 0.0), SHOCK_CONCENTRATION)
     return {"front": front, "shock": shock, "head_height": float(np.max(h)), "head_length": front - shock}
 
 
@@ -157,7 +169,7 @@ def main():
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:
             fail("talus-shallow failed: " + " ".join(command) + "\n" + done.stderr)
-        model = np.genfromtxt(prefix + ".profiles.csv", delimiter=",", names=True)
+        model = read_csv(prefix + ".profiles.csv")
 
         # 3-4. The particles along the chute, and the measures of both.
         results, profiles = [], []
@@ -165,7 +177,8 @@ def main():
             x, h, u, phi = depth_averages(args, t, (0, args.maser_length + args.chute_length),
                                           int(round(args.maser_length + args.chute_length)), folder)
             xs, hs, phis = (x - args.maser_length) / dl, h / dl, phi
-            m = model[np.isclose(model["t"], t_thesis, rtol=0, atol=1e-6)]
+            nearest = model["t"][np.argmin(np.abs(model["t"] - t_thesis))]  # (the time as the model printed it)
+            m = {k: v[model["t"] == nearest] for k, v in model.items()}
             dpm, cont = measures(xs, hs, phis), measures(m["x"], m["h"], m["phi"])
             results.append({"t": t_thesis, **{f"{k}_particles": v for k, v in dpm.items()},
                             **{f"{k}_model": v for k, v in cont.items()}})

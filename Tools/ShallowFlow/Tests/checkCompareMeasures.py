@@ -1,0 +1,29 @@
+#!/usr/bin/python3
+"""The measures of compareLongChute.py (Documentation/ShallowFlow.md, "Against the particles") on a
+profile whose answers follow by hand: h = 10 - x/10 (the front, h = 0.5, at x = 95), phi = 1 up to
+x = 30 falling linearly to 0 at x = 31 (phi = 0.25 at x = 30.75), and a few grains beyond the
+front at x = 120 (h = 0.3, phi = 1), which must be neither the front nor the shock. Prints
+"compare measures ok"."""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import compareLongChute as c  # noqa: E402
+
+x = np.linspace(0, 200, 2001)
+h = np.maximum(0.0, 10 - x / 10)
+phi = np.clip(31 - x, 0.0, 1.0)
+grains = np.abs(x - 120) < 0.5
+h[grains], phi[grains] = 0.3, 1.0
+m = c.measures(x, h, phi)
+expected = {"front": 95.0, "shock": 30.75, "head_height": 10.0, "head_length": 95.0 - 30.75}
+bad = [f"{k} {m[k]} != {v}" for k, v in expected.items() if not math.isclose(m[k], v, abs_tol=1e-9)]
+nowhere = c.last_crossing(x, h, 20.0)
+if not math.isnan(nowhere):
+    bad.append(f"a level reached nowhere gave {nowhere}")
+if bad:
+    sys.exit("compare measures: " + "; ".join(bad))
+print("compare measures ok")
