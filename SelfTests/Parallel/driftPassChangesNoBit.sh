@@ -12,17 +12,14 @@ set -euo pipefail
 mpirun=("$1" --oversubscribe)
 benchmark=$2
 data=$3
+. "$(dirname "$0")/onAndOff.sh"
 for ranks in 2 4; do
-  for pass in on off; do
-    "${mpirun[@]}" -np $ranks "$benchmark" --data "$data" --end-time 0.15 --files on --vtu off \
-      --name pass$pass$ranks --drift-pass $pass > pass$pass$ranks.log
-  done
+  runOnAndOff $ranks drift-pass pass
   grep -q "stepper drift pass" passon$ranks.log || { echo "$ranks ranks: the drift pass was not used:"; grep stepper passon$ranks.log; exit 1; }
   grep -q "stepper plain velocity Verlet" passoff$ranks.log || { echo "--drift-pass off did not turn it off"; exit 1; }
   builds=$(grep -o "neighbour list built [0-9]* times" passon$ranks.log | grep -o "[0-9]*")
   [ "$builds" -ge 3 ] || { echo "$ranks ranks: the list was built $builds times; the test needs builds during the run"; exit 1; }
-  for f in data fstat ene; do cmp passon$ranks.$f passoff$ranks.$f; done
-  cmp <(sed 2d passon$ranks.restart) <(sed 2d passoff$ranks.restart)  # (line 2 is the run's name)
+  sameFilesOnAndOff $ranks pass
   echo "$ranks ranks: list built $builds times, bitwise the same files as without the drift pass"
 done
 echo "drift pass on ranks changes no bit"

@@ -19,16 +19,13 @@ mpirun=("$1" --oversubscribe)
 benchmark=$2
 data=$3
 packing=$4
+. "$(dirname "$0")/onAndOff.sh"
 for ranks in 2 4; do
-  for overlap in on off; do
-    "${mpirun[@]}" -np $ranks "$benchmark" --data "$data" --end-time 0.15 --files on --vtu off \
-      --name overlap$overlap$ranks --overlap-ghosts $overlap > overlap$overlap$ranks.log
-  done
+  runOnAndOff $ranks overlap-ghosts overlap
   grep -q "overlapped [1-9][0-9]*  undone [1-9]" overlapon$ranks.log ||
     { echo "$ranks ranks: no step computed interior pairs early and undid them:"; grep benchmark: overlapon$ranks.log; exit 1; }
   grep -q "overlapped 0  undone 0" overlapoff$ranks.log || { echo "--overlap-ghosts off did not turn it off"; exit 1; }
-  for f in data fstat ene; do cmp overlapon$ranks.$f overlapoff$ranks.$f; done
-  cmp <(sed 2d overlapon$ranks.restart) <(sed 2d overlapoff$ranks.restart)  # (line 2 is the run's name)
+  sameFilesOnAndOff $ranks overlap
   echo "$ranks ranks: $(grep -o "overlapped [0-9]*  undone [0-9]*" overlapon$ranks.log) (steps of all ranks), bitwise the same files as without the overlap"
 done
 for overlap in on off; do
