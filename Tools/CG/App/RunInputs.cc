@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include "IO/InputError.h"
@@ -157,7 +158,9 @@ FrameStream::FrameStream(const RunInputs& inputs, const ProgramOptions& options)
 bool FrameStream::next(ParticleFrame& frame, ContactFrame& contacts) {
     while (true) {
         const long headerLine = data_.file().lineNumber() + 1;
-        if (!data_.readFrame(frame)) return false;
+        // (Without contacts, the frames before the window are skipped unparsed; a .fstat file
+        // is read frame for frame with the .data file.)
+        if (!data_.readFrame(frame, fstat_ ? -std::numeric_limits<double>::infinity() : timeMin_)) return false;
         const double time = frame.time;
         ++frameIndex_;
         if (fstat_) {

@@ -40,9 +40,13 @@ bool DataFileReader::readHeader(ParticleFrame& frame, long& count) {
     return true;
 }
 
-bool DataFileReader::readFrame(ParticleFrame& frame) {
+bool DataFileReader::readFrame(ParticleFrame& frame, double skipBefore) {
     long count = 0;
-    if (!readHeader(frame, count)) return false;
+    while (true) {
+        if (!readHeader(frame, count)) return false;
+        if (frame.time >= skipBefore) break;
+        skipLines(count, frame.time, frame.headerLine);
+    }
     frame.clear();
     // A particle line has 14 numbers (column::columns): at least 28 bytes. A corrupt count
     // reserves no more than the file can hold.
@@ -86,19 +90,22 @@ bool DataFileReader::readFrame(ParticleFrame& frame) {
     return true;
 }
 
+void DataFileReader::skipLines(long count, double time, long headerLine) {
+    for (long p = 0; p < count; ++p) {
+        if (!file_.nextLine(line_)) {
+            file_.failAtLine(file_.lineNumber() + 1,
+                             "file ends after " + std::to_string(p) + " of the " + std::to_string(count) +
+                                 " particle lines of the frame at t = " + str(time) + " (header line " +
+                                 std::to_string(headerLine) + "): truncated file?");
+        }
+    }
+}
+
 bool DataFileReader::skipFrame(double& time) {
     ParticleFrame header;
     long count = 0;
     if (!readHeader(header, count)) return false;
-    for (long p = 0; p < count; ++p) {
-        if (!file_.nextLine(line_)) {
-            file_.failAtLine(file_.lineNumber() + 1,
-                             "file ends after " + std::to_string(p) + " of the " +
-                                 std::to_string(count) + " particle lines of the frame at t = " +
-                                 str(header.time) + " (header line " +
-                                 std::to_string(header.headerLine) + "): truncated file?");
-        }
-    }
+    skipLines(count, header.time, header.headerLine);
     time = header.time;
     return true;
 }

@@ -3,6 +3,7 @@
 // Talus and MercuryDPM write the same 3-D layout; the 2-D layout is refused with a clear error.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,7 +19,8 @@ public:
 
     // Reads the next frame into `frame`; false at the end of the file (after a whole frame).
     // Truncated frames, wrong column counts and bad numbers throw InputError naming file and line.
-    bool readFrame(ParticleFrame& frame);
+    // Frames before skipBefore are skipped as skipFrame does (their lines counted, not parsed).
+    bool readFrame(ParticleFrame& frame, double skipBefore = -std::numeric_limits<double>::infinity());
     // Skips the next frame cheaply (header checked, particle lines counted, not parsed);
     // returns its time, or false at the end of the file.
     bool skipFrame(double& time);
@@ -27,6 +29,7 @@ public:
 
 private:
     bool readHeader(ParticleFrame& frame, long& count);
+    void skipLines(long count, double time, long headerLine);
 
     TextFile file_;
     std::string line_;

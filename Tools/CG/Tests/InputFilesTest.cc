@@ -141,6 +141,30 @@ TEST(MercuryFiles, DepthProfileIntegratesToMassPerArea) {
     std::printf("[ mercury ] depth profile integral %.12g, mass per area %.12g\n", integral, mass / 200);
 }
 
+// Frames before a time window are skipped unparsed (their lines counted): a frame whose particle
+// line is not a number is read in full when asked for, and passed over when it lies before the
+// window; a truncated frame is still found while skipping.
+TEST(MercuryFiles, FramesBeforeTheWindowAreSkippedUnparsed) {
+    write("skip.data", "1 0 0 0 0 1 1 1\n0.5 0.5 x 0 0 0 0.5 0 0 0 0 0 0 0\n"
+                       "1 1 0 0 0 1 1 1\n0.25 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    EXPECT_EQ(errorOf([] { readAllDataFrames("skip.data"); }), "skip.data line 2: bad number 'x' for the position");
+    DataFileReader reader("skip.data");
+    ParticleFrame frame;
+    ASSERT_TRUE(reader.readFrame(frame, 0.5));
+    EXPECT_EQ(frame.time, 1.0);
+    ASSERT_EQ(frame.size(), 1u);
+    EXPECT_EQ(frame.position[0][0], 0.25);
+    EXPECT_FALSE(reader.readFrame(frame, 0.5));
+    write("skipShort.data", "2 0 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
+    EXPECT_EQ(errorOf([] {
+                  DataFileReader short_("skipShort.data");
+                  ParticleFrame f;
+                  short_.readFrame(f, 0.5);
+              }),
+              "skipShort.data line 3: file ends after 1 of the 2 particle lines of the frame at t = 0 (header line 1): "
+              "truncated file?");
+}
+
 TEST(BadFiles, ErrorsNameFileAndLine) {
     write("short.data", "2 0.5 0 0 0 1 1 1\n0.5 0.5 0.5 0 0 0 0.5 0 0 0 0 0 0 0\n");
     EXPECT_EQ(errorOf([] { readAllDataFrames("short.data"); }),
