@@ -56,7 +56,9 @@ public:
     std::size_t size() const { return states_.size(); }
     ContactHistory::State state(std::size_t k) const { return states_[k]; }
     const ContactHistory::State* states() const { return states_.data(); }
-    ContactHistory get(std::size_t k) const {
+    // (Inlined always: the shaped pairs' path calls get and set per pair and step, and out of
+    // line the two took 5.5% of a settled ellipsoid packing's cycles; Performance/History.md.)
+    [[gnu::always_inline]] ContactHistory get(std::size_t k) const {
         ContactHistory h{forces_[k].spring, forces_[k].lastNormalForce, states_[k]};
         if (withWarmStarts_) [[unlikely]]
             h.warmPoint = warmPoints_[k], h.warmMultiplier = warmMultipliers_[k];
@@ -64,7 +66,7 @@ public:
             h.rollingSpring = rollingSprings_[k];
         return h;
     }
-    void set(std::size_t k, const ContactHistory& h) {
+    [[gnu::always_inline]] void set(std::size_t k, const ContactHistory& h) {
         forces_[k] = {h.spring, h.lastNormalForce};
         states_[k] = h.state;
         if (withWarmStarts_) [[unlikely]]
