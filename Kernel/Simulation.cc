@@ -287,7 +287,8 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     // The forces of the last step become previousForce by a swap (no copy: at 10^6 particles a
     // step is bound by memory bandwidth), and the old array is overwritten with gravity (done by
     // the drift pass if there was one, unless a rebuild on ranks put the last forces back).
-    if (!(drifted && !(rebuild && ranks_->isSplit())) && !begun) {
+    const bool forcesStarted = begun || (drifted && !(rebuild && ranks_->isSplit()));
+    if (!forcesStarted) {
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }

@@ -26,8 +26,9 @@ std::string_view DriftPassStepper::whyNot(const StepHost& host) const {
 
 namespace {
 
-// The ghosts' forces as startForcesWithGravity starts them (no force of theirs is used: each
-// rank sums its own particles'; this keeps the sums of the ghost slots from growing).
+// The ghosts' forces as startForcesWithGravity starts them in the pass-by-pass step (no force of
+// a ghost is used: each rank sums its own particles'; started alike, the ghost slots hold the same
+// numbers with and without the pass).
 void startGhostForces(ParticleStore& p, const Vec3& gravity) {
     for (std::size_t i = p.owned(); i < p.size(); ++i) {
         p.force[i] = p.fixed[i] ? Vec3::Zero() : Vec3(p.mass[i] * gravity);

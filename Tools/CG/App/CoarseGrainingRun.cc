@@ -117,6 +117,12 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     ContactFrame contacts;
     std::vector<Vec3> points;
     std::vector<double> sums, average;
+    // The frame's sources into the grainer, its fixed particles first when --fixed-species names
+    // them (frame by frame: the frames may differ in size).
+    auto setFrame = [&] {
+        if (!options.fixedSpecies.empty()) grainer.setExcluded(fixedBySpecies(frame, options.fixedSpecies));
+        grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
+    };
     std::unique_ptr<FieldWriter> fieldWriter;
     std::unique_ptr<CsvWriter> depthWriter;
     FieldSums layout = grainer.layout();
@@ -195,8 +201,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             layout = grainer.layout();
             // The first frame's sources before any output is opened: its input errors leave no
             // file.
-            if (!options.fixedSpecies.empty()) grainer.setExcluded(fixedBySpecies(frame, options.fixedSpecies));
-            grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
+            setFrame();
             if (options.mixingSpecies && layout.species < 2) {
                 throw InputError("--mixing: needs a mixture of at least 2 species, the run has " + std::to_string(layout.species));
             }
@@ -274,10 +279,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
             firstTime = time;
         }
 
-        if (framesUsed > 0) {
-            if (!options.fixedSpecies.empty()) grainer.setExcluded(fixedBySpecies(frame, options.fixedSpecies));
-            grainer.setFrame(frame, frames.withContacts() ? &contacts : nullptr, inputs.dataPath, inputs.fstatPath);
-        }
+        if (framesUsed > 0) setFrame();
         grainer.evaluate(points, sums);
         if (options.timeAverage) {
             for (std::size_t k = 0; k < sums.size(); ++k) average[k] += sums[k];

@@ -260,6 +260,9 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
     if (o.help) return o;
     if (!o.fixedSpecies.empty() && !o.excludeFixed)
         throw InputError("--fixed-species names the fixed particles; say what to do with them: --fixed exclude or boundary");
+    if (!o.fixedSpecies.empty() && o.widthScan)
+        throw InputError("--fixed-species: not available with --width-scan, which takes the fixed particles from the "
+                         "restart file (--fixed exclude without --fixed-species)");
     if (o.name.empty() && o.dataPath.empty()) throw InputError("no input: give a run NAME (reads NAME.data) or --data FILE (see --help)");
     if (int(o.width.has_value()) + int(o.widths.has_value()) + int(o.widthMatrix.has_value()) > 1) {
         throw InputError("--width, --widths and --width-matrix exclude each other: give one");

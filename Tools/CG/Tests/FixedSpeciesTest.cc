@@ -60,6 +60,9 @@ TEST(FixedSpecies, OptionsAreCheckedAndNamed) {
               "--fixed-species: 'x' is not a species index (0, 1, ...)");
     EXPECT_EQ(errorOf([] { optionsOf({"run", "--fixed", "exclude", "--fixed-species", "-1"}); }),
               "--fixed-species: '-1' is not a species index (0, 1, ...)");
+    EXPECT_EQ(errorOf([] { optionsOf({"run", "--fixed", "exclude", "--fixed-species", "2", "--width-scan"}); }),
+              "--fixed-species: not available with --width-scan, which takes the fixed particles from the restart file "
+              "(--fixed exclude without --fixed-species)");
 }
 
 // Two frames of different sizes (2 and then 3 flowing spheres of mass 1, with 2 fixed ones of
