@@ -8,28 +8,11 @@
 
 #include "Fields/ContactBranches.h"
 #include "IO/InputError.h"
+#include "Kernels/RadialShapes.h"
 
 namespace talus::cg {
 
 namespace {
-
-// The radial shapes of KernelProfile.h as small functors, so that the particle loop is compiled
-// once per shape (no switch per particle). They return f(q^2) without the normalisation.
-struct LucyShape {
-    static constexpr double cutoffSquared = 1.0;
-    double operator()(double q2) const {
-        const double q = std::sqrt(q2);
-        return 1 + q2 * (-6 + q * (8 - 3 * q));
-    }
-};
-struct GaussShape {
-    static constexpr double cutoffSquared = 9.0;
-    double operator()(double q2) const { return std::exp(-0.5 * q2); }
-};
-struct HeavisideShape {
-    static constexpr double cutoffSquared = 1.0;
-    double operator()(double) const { return 1.0; }
-};
 
 std::string lineOf(const std::string& path, long line) { return path + " line " + std::to_string(line); }
 
@@ -184,7 +167,8 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
     }
     Vec3 cellSize;
     for (int k = 0; k < 3; ++k) cellSize[k] = std::max(2 * halfExtent_[k], 1e-12);
-    particleBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
+    const bool binned = !alongOneAxis();
+    if (binned) particleBins_.build(boxLo, boxHi, setup_.coordinates.resolvesAxes(), cellSize);
 
     contactStart_.clear();
     contactSegment_.clear();
@@ -193,7 +177,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
     boundaryForce_.clear();
     if (setup_.contactStress && contacts != nullptr) {
         addContacts(frame, *contacts, dataPath, fstatPath, cellSize);
-    } else {
+    } else if (binned) {
         contactBins_.build({}, {}, setup_.coordinates.resolvesAxes(), cellSize);
         boundaryBins_.build({}, {}, setup_.coordinates.resolvesAxes(), cellSize);
     }
@@ -242,6 +226,7 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
             pointHi.push_back(shifted(hi, shift));
         }
     });
+    if (alongOneAxis()) return;
     contactBins_.build(segmentLo, segmentHi, setup_.coordinates.resolvesAxes(), cellSize);
     boundaryBins_.build(pointLo, pointHi, setup_.coordinates.resolvesAxes(), cellSize);
 }
@@ -299,24 +284,6 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
     const int fields = layout_.count();
     const int first = layout_.contactStressIndex();
     const auto& a = setup_.width.a();
-    if (profile_.dimension() == 1 && setup_.width.isDiagonal()) {
-        // One resolved axis k (a depth profile): u = a_kk (r_k - x_k - s segment_k), a number.
-        const int k = setup_.coordinates.kernelAxes()[0];
-        const double ak = a[4 * k];
-        for (std::size_t p = 0; p < points.size(); ++p) {
-            double* row = sums.data() + p * fields + first;
-            const auto range = contactBins_.sourcesNear(points[p]);
-            for (const std::uint32_t* it = range.begin; it != range.end; ++it) {
-                const std::uint32_t c = *it;
-                const double line =
-                    profile_.lineIntegralAlongAxis(ak * (points[p][k] - contactStart_[c][k]), -ak * contactSegment_[c][k]);
-                if (line == 0) continue;
-                const double w = scale_ * line;
-                addContactTensor(c, w, row);
-            }
-        }
-        return;
-    }
     for (std::size_t p = 0; p < points.size(); ++p) {
         double* row = sums.data() + p * fields + first;
         const auto range = contactBins_.sourcesNear(points[p]);
@@ -402,6 +369,10 @@ void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double
         if (points.empty()) return;
         evaluateDomainAverage(sums.data());
         for (std::size_t p = 1; p < points.size(); ++p) std::copy_n(sums.data(), fields, sums.data() + p * fields);
+        return;
+    }
+    if (alongOneAxis()) {
+        evaluateAlongOneAxis(points, sums);
         return;
     }
     const bool diagonal = setup_.width.isDiagonal();

@@ -4,7 +4,8 @@
 //
 // Set up once with the kernel (shape, width matrix, coordinates); then per frame setFrame()
 // builds the sources (particles with their periodic images, contact segments) and their cell
-// lists, and evaluate() fills one row of sums per point. Cylindrical coordinates (RZ, R) are
+// lists (none for a profile along one axis, Fields/AlongOneAxis.cc), and evaluate() fills one row
+// of sums per point. Cylindrical coordinates (RZ, R) are
 // handed to CylindricalCoarseGrainer, which averages over the angle around the drum axis.
 //
 // Boundaries (Weinhart, Thornton, Luding and Bokhove 2012, "From discrete particles to continuum
@@ -45,6 +46,8 @@
 
 namespace talus::cg {
 
+struct PointsAlongAxis;
+
 class CoarseGrainer {
 public:
     explicit CoarseGrainer(CoarseGrainingSetup setup);
@@ -77,6 +80,13 @@ private:
     void evaluateParticles(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateContacts(const std::vector<Vec3>& points, std::vector<double>& sums) const;
     void evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    // A profile along one axis (X, Y or Z with a diagonal width; Fields/AlongOneAxis.cc): every
+    // source adds itself to the points its support covers, with no cell lists.
+    bool alongOneAxis() const;
+    void evaluateAlongOneAxis(const std::vector<Vec3>& points, std::vector<double>& sums) const;
+    template <class Profile>
+    void scatterParticlesAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
+                                   std::vector<double>& sums) const;
     // row[0..8] += weight * (the tensor of contact source c).
     void addContactTensor(std::size_t c, double weight, double* row) const;
     // Coordinates O: the sums over every source of the frame divided by the box volume.

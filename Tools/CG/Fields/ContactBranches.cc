@@ -34,9 +34,10 @@ void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contac
         const std::uint64_t pairKey = c.isWall() ? (std::uint64_t{1} << 63) | k
                                                  : (static_cast<std::uint64_t>(std::min(c.i, c.j)) << 32) |
                                                        static_cast<std::uint64_t>(std::max(c.i, c.j));
-        order.emplace_back(pairKey, static_cast<std::uint32_t>(k));
+        // (Lines that are each a contact of their own keep their order, each its own group.)
+        order.emplace_back(contacts.eachContactOnce ? std::uint64_t{k} : pairKey, static_cast<std::uint32_t>(k));
     }
-    std::sort(order.begin(), order.end());
+    if (!contacts.eachContactOnce) std::sort(order.begin(), order.end());
     auto minimumImage = [&](Vec3 d) {
         for (int k = 0; k < 3; ++k) {
             const double length = frame.box.length(k);

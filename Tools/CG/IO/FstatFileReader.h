@@ -28,6 +28,9 @@ struct ContactFrame {
     double time = 0;
     long headerLine = 0;
     std::vector<ContactLine> contacts;
+    // Each contact is one line (a run's own contacts, InRun/InRunFrame.h), so no pair needs its
+    // lines grouped; a file may write a pair from both sides (fstat.md).
+    bool eachContactOnce = false;
 };
 
 class FstatFileReader {

@@ -33,6 +33,7 @@ void fillInRunFrame(const SimulationState& state, const ContactRecordList* recor
     }
     contacts.time = state.time;
     contacts.contacts.clear();
+    contacts.eachContactOnce = true;  // (the kernel records a pair once: Contacts/ContactReport.h)
     if (!records) return;
     contacts.contacts.reserve(records->size());
     for (const ContactRecord& r : *records) {
