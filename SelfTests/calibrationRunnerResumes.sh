@@ -41,4 +41,13 @@ grep -q "large-a25-d1.5 continues from its restart file" second.log || { echo "F
 grep -q "large-a25-d1.5 finished" second.log || { echo "FAIL: the continued point did not finish"; exit 1; }
 lines=$(wc -l < study/results.csv)
 [ "$lines" -eq 4 ] || { echo "FAIL: results.csv has $lines lines, not a header and 3 points"; cat study/results.csv; exit 1; }
-echo "runner resumed: the finished point was skipped, the killed one continued from its restart file, 3 results collected"
+echo "runner: the finished point was skipped, the killed one continued from its restart file, 3 results collected"
+# A study moved to another folder (another machine) continues from its collected results: with
+# --done the three points count as finished and none runs.
+rm -rf moved
+/usr/bin/python3 "$runner" --driver "$driver" --out moved $grid --done study/results.csv -- $flags > third.log 2>&1
+cat third.log
+grep -q "study: 3 finished points taken from study/results.csv" third.log || { echo "FAIL: --done took not 3 points"; exit 1; }
+grep -q "0 to run" third.log || { echo "FAIL: a point of --done ran again"; exit 1; }
+cmp -s study/results.csv moved/results.csv || { echo "FAIL: the moved study's results.csv differs"; diff study/results.csv moved/results.csv; exit 1; }
+echo "moved study: its collected results count as finished"

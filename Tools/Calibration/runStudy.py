@@ -5,7 +5,9 @@ run per point of a grid of species, angles and depths, as independent jobs (--jo
 Each point runs in its own folder OUT/points/NAME. A point whose NAME.result.csv exists is
 skipped; a point with a NAME.restart (a killed run) continues from it (--restart). So a study that
 was killed resumes where it stopped when the same command runs again. Every finished point's line
-goes into OUT/results.csv (rewritten at every point, with the column `point`).
+goes into OUT/results.csv (rewritten at every point, with the column `point`). With --done FILE
+the points that have a line in FILE (an earlier results.csv, say of a study begun on another
+machine) count as finished: their lines go into their folders and they are not run again.
 
     Tools/Calibration/runStudy.py --driver build/Drivers/Calibration/CalibrationChute --out /work/studies/calibration
 
@@ -80,6 +82,40 @@ def collect(out, names):
     return len(rows)
 
 
+def adopt_done(path, out, names):
+    """The lines of an earlier results.csv whose point is in this grid become those points' result
+    files (where they have none yet), so that the points are skipped. Returns how many."""
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            rows = list(reader)
+            fields = reader.fieldnames or []
+    except OSError as e:
+        sys.exit(f"runStudy: --done {path}: {e.strerror}")
+    if "point" not in fields:
+        sys.exit(f"runStudy: --done {path}: no column 'point' (a results.csv of runStudy.py is expected)")
+    columns = [c for c in fields if c != "point"]
+    adopted = 0
+    for line, row in enumerate(rows, start=2):
+        name = row["point"]
+        if name not in names:
+            continue
+        if any(row.get(c) is None for c in columns):
+            sys.exit(f"runStudy: --done {path} line {line}: point {name} has fewer columns than the header")
+        folder = os.path.join(out, "points", name)
+        result = os.path.join(folder, name + ".result.csv")
+        if os.path.exists(result):
+            continue
+        os.makedirs(folder, exist_ok=True)
+        with open(result + ".part", "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=columns)
+            writer.writeheader()
+            writer.writerow({c: row[c] for c in columns})
+        os.replace(result + ".part", result)
+        adopted += 1
+    return adopted
+
+
 def minutes(seconds):
     return f"{seconds / 60:.1f} min"
 
@@ -94,6 +130,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=2, help="points run at once (default 2)")
     parser.add_argument("--restart-interval", type=float, default=20,
                         help="simulated time between restart files of a point (default 20)")
+    parser.add_argument("--done", help="an earlier results.csv: its points of this grid count as finished")
     parser.add_argument("driver_flags", nargs="*", help="after --: flags for every point's run")
     args = parser.parse_args()
 
@@ -115,6 +152,8 @@ def main():
     points = list(itertools.product(species, angles, depths))
     names = [point_name(*p) for p in points]
     os.makedirs(os.path.join(args.out, "points"), exist_ok=True)
+    if args.done is not None:
+        print(f"study: {adopt_done(args.done, args.out, names)} finished points taken from {args.done}", flush=True)
     todo = []
     for (s, a, d), name in zip(points, names):
         folder = os.path.join(args.out, "points", name)
