@@ -107,7 +107,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const OutputFormat format = outputFormatFromName(options.outputFormat);
-    requireOutputFormatAvailable(format, options.pointsPath.empty());  // before reading anything
+    requireOutputFormatAvailable(format);  // before reading anything
     RunInputs inputs = resolveRunInputs(options, log);
     const CoarseGrainingSetup& setup = inputs.setup;
     FrameStream frames(inputs, options);
@@ -326,7 +326,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
         << (options.timeAverage ? " averaged" : smoother ? " smoothed in time to " + std::to_string(outputTimes) + " output times" : "")
         << " at " << points.size() << " points in " << seconds(elapsed) << "; wrote "
         << outputPath << (format == OutputFormat::Hdf5 && !options.depthAverage ? " and its .xmf" : "")
-        << (format == OutputFormat::Vtk ? " and its .vti frames" : "") << "\n";
+        << (format == OutputFormat::Vtk ? (options.pointsPath.empty() ? " and its .vti frames" : " and its .vtu frames") : "") << "\n";
     return framesUsed;
 }
 

@@ -61,11 +61,7 @@ bool hdf5Available() {
 #endif
 }
 
-void requireOutputFormatAvailable(OutputFormat format, bool grid) {
-    if (format == OutputFormat::Vtk && !grid) {
-        throw InputError("--output-format vtk: writes VTK image data, which needs a regular grid (-n, -x/-y/-z); the points of "
-                         "--points are not one: use csv, hdf5 or stat for a point list");
-    }
+void requireOutputFormatAvailable(OutputFormat format) {
     if (format == OutputFormat::Hdf5 && !hdf5Available()) {
         throw InputError("--output-format hdf5: this talus-cg was built without HDF5 (install libhdf5-dev and "
                          "configure with -DTALUS_WITH_HDF5=ON); use csv or stat");
@@ -73,7 +69,7 @@ void requireOutputFormatAvailable(OutputFormat format, bool grid) {
 }
 
 std::unique_ptr<FieldWriter> makeFieldWriter(OutputFormat format, const FieldOutputSetup& setup) {
-    requireOutputFormatAvailable(format, setup.grid);
+    requireOutputFormatAvailable(format);
     switch (format) {
         case OutputFormat::Stat: return std::make_unique<StatFieldWriter>(setup);
         case OutputFormat::Vtk: return std::make_unique<VtkFieldWriter>(setup);

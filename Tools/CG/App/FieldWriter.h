@@ -54,9 +54,8 @@ public:
     virtual void close() = 0;
 };
 
-// Throws InputError for hdf5 in a build without HDF5, and for vtk (image data) without a grid
-// (before any file is read).
-void requireOutputFormatAvailable(OutputFormat format, bool grid);
+// Throws InputError for hdf5 in a build without HDF5 (before any file is read).
+void requireOutputFormatAvailable(OutputFormat format);
 
 // Throws InputError as requireOutputFormatAvailable.
 std::unique_ptr<FieldWriter> makeFieldWriter(OutputFormat format, const FieldOutputSetup& setup);

@@ -428,7 +428,8 @@ output:
   -o, --output FILE       output file (default NAME.cg.csv, NAME.cg.h5, NAME.stat, NAME.widthscan.csv)
   --output-format F       csv (default), hdf5 (HDF5 and an XDMF .xmf file for ParaView), stat
                           (MercuryDPM's .stat layout, Documentation/FileFormats/stat.md) or vtk
-                          (a .pvd series of VTK image data .vti files, one per frame; grids only)
+                          (a .pvd series of VTK files, one per frame: image data .vti for a
+                          grid, vertices .vtu for --points)
   --progress-interval S   wall seconds between progress lines on stderr (default 5)
   --help                  this text
 )";

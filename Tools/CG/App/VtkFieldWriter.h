@@ -1,6 +1,7 @@
 // VTK output of talus-cg for ParaView and VTK (Documentation/CoarseGraining.md "Output formats"):
 // the fields of a regular grid as XML ImageData, one `.vti` file per frame (or one for a time
-// average) and a `.pvd` collection that lists them with their times.
+// average), those of a point list (--points) as an XML UnstructuredGrid of vertices (`.vtu`),
+// and a `.pvd` collection that lists them with their times.
 //
 //   NAME.cg.pvd              <VTKFile type="Collection">: one DataSet per frame, timestep = t
 //   NAME.cg_000000.vti, ...  <VTKFile type="ImageData">: WholeExtent 0..nx-1, 0..ny-1, 0..nz-1
@@ -14,9 +15,9 @@
 // order XX XY XZ YX ... ZZ (KineticStress, symmetric, filled out from its 6 CSV columns;
 // ContactStress and Stress as they are). In cylindrical coordinates the image axes are (r, -, s)
 // and the components (R, Theta, Axial), named in each array's ComponentName attributes.
-//
-// Image data needs a regular grid: a point list (--points) is refused with a message naming
-// --output-format.
+//   NAME.cg_000000.vtu, ...  (a point list) <VTKFile type="UnstructuredGrid">: the points as
+//                            given (Float64), one vertex cell (type 1) each, the same PointData
+//                            arrays in the list's order
 #pragma once
 
 #include <string>
@@ -29,18 +30,22 @@ namespace talus::cg {
 
 class VtkFieldWriter : public FieldWriter {
 public:
-    // Checks that the points are a grid and that setup.path is a .pvd name (throws InputError
-    // naming --output-format or -o); the first file is written by writeFrame.
+    // Checks that setup.path is a .pvd name (throws InputError naming -o); the first file is
+    // written by writeFrame.
     explicit VtkFieldWriter(const FieldOutputSetup& setup);
 
     void writeFrame(double firstTime, double time, const std::vector<double>& sums) override;
     // Writes the .pvd collection of the frames written.
     void close() override;
 
-    // The image file of frame `index` beside the .pvd file: out.pvd -> out_000000.vti.
-    static std::string framePath(const std::string& pvdPath, std::size_t index);
+    // The file of frame `index` beside the .pvd file: out.pvd -> out_000000.vti (a grid) or
+    // out_000000.vtu (a point list).
+    static std::string framePath(const std::string& pvdPath, std::size_t index, bool grid);
 
 private:
+    // The point (index into setup.points) that VTK numbers `id`.
+    std::size_t pointOfVtkId(std::size_t id) const;
+
     FieldOutputSetup setup_;
     std::vector<OutputColumn> columns_;
     std::vector<FieldArray> arrays_;

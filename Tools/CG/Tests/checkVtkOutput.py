@@ -10,6 +10,9 @@ usage: checkVtkOutput.py FIELDS.csv FIELDS.pvd
   nx x ny x nz points (1 on averaged axes) whose point coordinates (origin + index x spacing)
   are the CSV's coordinate columns (x, y, z; r and the axis coordinate in cylindrical
   coordinates, in image axes 0 and 2); its TimeValue is the frame's time.
+- A point list (--points) is written as .vtu files instead, read by vtkXMLUnstructuredGridReader:
+  one vertex cell (VTK type 1) per point, the points in the CSV's order, their coordinates the
+  CSV's coordinate columns.
 - Its point arrays hold every CSV field column, none left out and nothing else: a scalar as a
   1-component array named like the column; Momentum, Velocity, InteractionForce with 3
   components; KineticStress, ContactStress and Stress with 9 (row-major; the symmetric
@@ -52,8 +55,9 @@ def pvd_entries(path):
     return vtkFiles.pvd_entries(path, fail)
 
 
-def read_vti(path):
-    return vtkFiles.read_without_complaint(vtk.vtkXMLImageDataReader(), path, fail)
+def read_dataset(path):
+    reader = vtk.vtkXMLUnstructuredGridReader() if path.endswith('.vtu') else vtk.vtkXMLImageDataReader()
+    return vtkFiles.read_without_complaint(reader, path, fail)
 
 
 def agree(what, expected, found):
@@ -87,24 +91,43 @@ def main():
     for (timestep, file_name), (time, rows) in zip(entries, frames):
         if time is not None and timestep != time and abs(timestep - time) > 1e-11 * max(1, abs(time)):
             fail(f"{file_name}: timestep {timestep}, the CSV frame's time {time}")
-        image = read_vti(os.path.join(folder, file_name))
+        image = read_dataset(os.path.join(folder, file_name))
         time_value = vtk_to_numpy(image.GetFieldData().GetArray("TimeValue"))[0]
         if time_value != timestep:
             fail(f"{file_name}: TimeValue {time_value}, the .pvd says {timestep}")
-        n = image.GetDimensions()
-        if n[0] * n[1] * n[2] != len(rows):
-            fail(f"{file_name}: {n} points, the CSV frame has {len(rows)} rows")
+        if file_name.endswith('.vtu'):
+            # A point list: the points in the CSV's order, one vertex each.
+            if image.GetNumberOfPoints() != len(rows):
+                fail(f"{file_name}: {image.GetNumberOfPoints()} points, the CSV frame has {len(rows)} rows")
+            types = vtk_to_numpy(image.GetCellTypesArray()) if image.GetNumberOfCells() else np.array([])
+            if image.GetNumberOfCells() != len(rows) or not np.all(types == vtk.VTK_VERTEX):
+                fail(f"{file_name}: {image.GetNumberOfCells()} cells, not one vertex per point")
+            n = (len(rows), 1, 1)
+            points = vtk_to_numpy(image.GetPoints().GetData())
 
-        def vtk_order(column):
-            return column.reshape(n[0], n[1], n[2]).transpose(2, 1, 0).reshape(-1)
+            def vtk_order(column):
+                return column
 
-        origin, spacing = image.GetOrigin(), image.GetSpacing()
-        index = np.indices((n[2], n[1], n[0])).reshape(3, -1)[::-1]  # (i, j, k) per VTK id
+            def coordinate_of(k):
+                return points[:, k]
+        else:
+            n = image.GetDimensions()
+            if n[0] * n[1] * n[2] != len(rows):
+                fail(f"{file_name}: {n} points, the CSV frame has {len(rows)} rows")
+
+            def vtk_order(column):
+                return column.reshape(n[0], n[1], n[2]).transpose(2, 1, 0).reshape(-1)
+
+            origin, spacing = image.GetOrigin(), image.GetSpacing()
+            index = np.indices((n[2], n[1], n[0])).reshape(3, -1)[::-1]  # (i, j, k) per VTK id
+
+            def coordinate_of(k):
+                return origin[k] + spacing[k] * index[k]
         for k in range(3):
-            coordinate = origin[k] + spacing[k] * index[k]
+            coordinate = coordinate_of(k)
             if axis_names[k] in names:
                 worst = max(worst, agree(f"{file_name} coordinate {axis_names[k]}", vtk_order(rows[:, names.index(axis_names[k])]), coordinate))
-            elif n[k] != 1:
+            elif n[k] != 1 and not file_name.endswith('.vtu'):
                 fail(f"{file_name}: {n[k]} points along image axis {k}, which the CSV does not resolve")
         point_data = image.GetPointData()
         covered = set()
