@@ -474,7 +474,7 @@ template <class Law>
 void addContactForces(const ContactForceLoopArguments<Law>& arguments, PairList& list, const std::vector<Wall>& walls,
                       const std::vector<PrescribedMotion>& motions, const Domain& domain) {
     if (arguments.shapes && arguments.p.hasShapes())
-        placeShapedParticles(arguments.p, *arguments.shapes, list.shapedFrameScratch);
+        placeShapedParticles(arguments.p, *arguments.shapes, list.shapedFrameScratch, list.spinScratch);
     ContactForceLoopInLanes<Law> loop(arguments);
     loop.particlePairs(list, domain, motions.empty());
     loop.oneWayPairs(list, domain);

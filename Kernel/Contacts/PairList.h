@@ -114,6 +114,7 @@ public:
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
+    std::vector<double> spinScratch;  // |w_i| of every particle, for the gap bounds of shaped pairs apart
     std::vector<SweepPoint> sweepPointScratch;  // the force loop's positions and radii grown by the step's reach (PairSweep.h)
     // The sweep grows the radii by the speeds relative to the mobile particles' mean velocity
     // (sweepFrameVelocity), not by the speeds themselves: the same pairs get their forces, fewer

@@ -21,10 +21,13 @@ namespace talus::TALUS_LANES {
 template <class Law>
 void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                        double dy, double dz) {
-    // (The bound is lowered in place: a skipped pair reads and writes nothing else.)
+    // (The bound is lowered in place: a skipped pair reads and writes nothing else. The spins |w|
+    // are each particle's, taken once per force evaluation with its frame; the closing speed
+    // |vi - vj| + |wi| ri + |wj| rj in fused multiply-adds.)
     if (list.history.state(k) == ContactHistory::approaching && list.history.gapBoundOf(k) > 0) {
-        const double closing = (p_.velocity[i] - p_.velocity[j]).norm() + p_.angularVelocity[i].norm() * p_.radius[i] +
-                               p_.angularVelocity[j].norm() * p_.radius[j];
+        const std::vector<double>& spin = list.spinScratch;
+        const double closing =
+            std::fma(spin[j], p_.radius[j], std::fma(spin[i], p_.radius[i], (p_.velocity[i] - p_.velocity[j]).norm()));
         double& gapBound = list.history.gapBoundOf(k);
         gapBound -= 1.5 * closing * dt_;
         list.history.clearLastNormalForce(k);

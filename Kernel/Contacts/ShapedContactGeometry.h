@@ -40,13 +40,19 @@ inline double curvatureRadius(const PlacedSuperquadric& body, const Vec3& x) {
 inline double seriesRadius(double a, double b) { return a * b / (a + b); }
 
 // The lab frames of the shaped particles (frames[i] for particle i), placed once per force
-// evaluation so that all the contacts of a particle share its rotation and quadric.
+// evaluation so that all the contacts of a particle share its rotation and quadric; and every
+// particle's spin |w_i| (spin[i]), for the gap bounds of pairs apart.
 inline void placeShapedParticles(const ParticleStore& p, const std::vector<Superquadric>& shapes,
-                                 std::vector<PlacedSuperquadric>& frames) {
+                                 std::vector<PlacedSuperquadric>& frames, std::vector<double>& spin) {
     frames.resize(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i)
+    spin.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
         if (p.isShaped(i))
             frames[i] = {&shapes[static_cast<std::size_t>(p.shape[i])], p.position[i], p.orientation[i].toRotationMatrix()};
+        // (In the order of the fused multiply-adds the pair's own |w| had when it was made there.)
+        const Vec3& w = p.angularVelocity[i];
+        spin[i] = std::sqrt(std::fma(w.x(), w.x(), std::fma(w.z(), w.z(), w.y() * w.y())));
+    }
 }
 
 // A particle as a placed superquadric at `centre` (its own position or a periodic image): its
