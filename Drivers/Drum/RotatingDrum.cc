@@ -26,6 +26,7 @@ RotatingDrum::RotatingDrum() {
     run().addFlag("settled-energy", "kinetic energy per particle below which the bed counts as at rest", settledEnergy);
     run().addFlag("insertion-rounds", "rounds of insertion (each after the bed settled) before giving up", insertionRounds);
     run().addFlag("cg-width", "width of the Lucy kernel of the mixing index", cgWidth);
+    run().addFlag("rotations", "end the run at the first sample after this many turns (0: at --end-time)", turnsToRun);
     for (auto [key, value] : {std::pair{"targetCount", &targetCount_}, {"insertedSpheres", &insertedSpheres_},
                               {"insertedEllipsoids", &insertedEllipsoids_}, {"rounds", &rounds_}, {"angleSamples", &angleSamples_}})
         run().keepInRestart(std::string("drum.") + key, *value);
@@ -44,6 +45,7 @@ void RotatingDrum::checkFlags() const {
             "--froude must lie in (0, 1) (F >= 1 centrifuges the bed), got " + str(froude));
     require(sampleInterval > 0, "--sample-interval must be positive, got " + str(sampleInterval));
     require(cgWidth > 0, "--cg-width must be positive, got " + str(cgWidth));
+    require(turnsToRun >= 0, "--rotations must not be negative, got " + str(turnsToRun));
     // The longest particle is 2a = R^(2/3); the bed needs a few of them across the drum.
     const double longest = std::cbrt(aspect * aspect), smallest = 2 * longest + wallDiameter;
     require(radius >= smallest, "--radius " + str(radius) + " is too small for particles of length " + str(longest) +
@@ -158,6 +160,7 @@ void RotatingDrum::actionsAfterTimeStep() {
     if (!clock_.every(sampleInterval)) return;
     checkBed();
     writeSample();
+    if (rotating() && turnsToRun > 0 && rotations() >= turnsToRun) run().finishAfterNextStep();
     if (rotating()) return;
     // Filling: wait for the bed to settle (at least the fall time from the insertion region,
     // 2 sqrt(4 r) from the top of the drum), then insert the rest or start turning.
@@ -175,8 +178,7 @@ void RotatingDrum::writeSample() {
     const double angle = rotating() ? drum::surfaceAngle(bed) : NAN;
     if (rotating() && rotations() >= 1 && std::isfinite(angle)) angleSum_ += angle, ++angleSamples_;
     if (!settings().writeData) return;  // --files off
-    series_.write({time(), rotations(), bedEnergy(), mixing.mixing, mixing.segregation,
-                   angle});
+    series_.write({time(), rotations(), bedEnergy(), mixing.mixing, mixing.segregation, angle});
 }
 
 void RotatingDrum::actionsAfterSolve() {

@@ -19,7 +19,8 @@
 // rotation about y, every wall particle along its circle with velocity (-w r sin th, 0, w r cos th)
 // and angular velocity w. Every --sample-interval the run appends to NAME.series: time, rotations,
 // kinetic energy, the mixing and segregation indices M and S of the sphere fraction
-// (DrumAnalysis.h) and the dynamic angle of repose.
+// (DrumAnalysis.h) and the dynamic angle of repose. With --rotations N the run ends at the first
+// sample after N turns (the filling's length is not known beforehand), else at --end-time.
 #pragma once
 
 #include <cmath>
@@ -37,7 +38,7 @@ public:
     // Flags (the thesis's full scale is --radius 15, Theory/RotatingDrum.md; the defaults are a
     // scaled-down drum).
     double radius = 6, length = 6, aspect = 2, fill = 0.4, froude = 0.01;
-    double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1;
+    double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1, turnsToRun = 0;
     int particleCount = 0, seed = 1, insertionRounds = 20;
     std::string wallType = "particles";
 

@@ -204,6 +204,8 @@ TEST(RotatingDrum, BadFlagsAreNamed) {
     EXPECT_NE(errorOf({"--aspect", "0.5"}).find("--aspect must be at least 1"), std::string::npos);
     EXPECT_NE(errorOf({"--wall", "bumpy"}).find("--wall must be particles or smooth"), std::string::npos);
     EXPECT_NE(errorOf({"--particles", "5000"}).find("do not fit into the drum"), std::string::npos);
+    EXPECT_NE(errorOf({"--froude", "1"}).find("--froude must lie in (0, 1) (F >= 1 centrifuges the bed)"), std::string::npos);
+    EXPECT_NE(errorOf({"--rotations", "-1"}).find("--rotations must not be negative"), std::string::npos);
 }
 
 namespace {

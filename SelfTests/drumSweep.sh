@@ -1,0 +1,38 @@
+#!/bin/sh
+# The drum sweep (Tools/Drum/runDrumSweep.py) end to end on a tiny drum: two aspect ratios run as
+# two jobs; each run must stop at its first sample after turns + windows x window-turns
+# (RotatingDrum --rotations), and each result line's M and S must be the means over the windows
+# of the samples in them, recomputed here with awk from the run's .series; then the plot of S and
+# the angle of repose against R (plotDrumSweep.py) with its table.
+#   drumSweep.sh RotatingDrum runDrumSweep.py
+set -eu
+driver=$1
+sweep=$2
+rm -rf sweep
+/usr/bin/python3 "$sweep" --driver "$driver" --out sweep --aspects 1,2 --seeds 3 --turns 0.02 --windows 2 \
+  --window-turns 0.005 -- --radius 4 --length 4 --particles 40 --sample-interval 0.1 > sweep.log 2>&1 \
+  || { cat sweep.log; echo "FAIL: the sweep failed"; exit 1; }
+cat sweep.log
+lines=$(wc -l < sweep/results.csv)
+[ "$lines" -eq 3 ] || { echo "FAIL: results.csv has $lines lines, not a header and 2 points"; exit 1; }
+for name in R1-s3 R2-s3; do
+  series=sweep/points/$name/$name.series
+  # The last sample is the first at or after 0.03 turns.
+  awk '!/^#/ { if (last != "") before = last; last = $2 } END {
+         if (!(last >= 0.03 && before < 0.03)) { print "FAIL: '"$name"' stopped at " last " turns (before: " before ")"; exit 1 } }' "$series"
+  # M and S: the mean over the two windows [0.02, 0.025) and [0.025, 0.03) of each window's mean.
+  expected=$(awk '!/^#/ { w = int(($2 - 0.02) / 0.005 + 1e-9); if ($2 >= 0.02 && w < 2) { m[w] += $4; s[w] += $5; n[w]++ } }
+                  END { if (n[0] == 0 || n[1] == 0) { print "empty"; exit }
+                        printf "%.10g %.10g\n", (m[0] / n[0] + m[1] / n[1]) / 2, (s[0] / n[0] + s[1] / n[1]) / 2 }' "$series")
+  found=$(awk -F, -v p="$name" '$1 == p { print $7, $9 }' sweep/results.csv)
+  awk -v e="$expected" -v f="$found" -v p="$name" 'BEGIN { split(e, a, " "); split(f, b, " ");
+      if (a[1] == "empty" || (a[1] - b[1]) ^ 2 > 1e-14 || (a[2] - b[2]) ^ 2 > 1e-14) {
+        print "FAIL: " p ": M, S = " f " in results.csv, the windows of the series give " e; exit 1 }
+      print p ": M, S = " f " (the series: " e ")" }'
+done
+# The plot and its table: one row per aspect ratio, S as in results.csv (one seed each).
+/usr/bin/python3 "$(dirname "$sweep")/plotDrumSweep.py" sweep/results.csv -o sweep.png --csv table.csv > plot.log 2>&1 \
+  || { cat plot.log; echo "FAIL: plotDrumSweep"; exit 1; }
+cat table.csv
+[ -s sweep.png ] && [ "$(wc -l < table.csv)" -eq 3 ] || { echo "FAIL: no plot, or not one table row per aspect ratio"; exit 1; }
+echo "drum sweep ok"
