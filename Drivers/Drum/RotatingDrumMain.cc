@@ -6,6 +6,10 @@ int main(int argc, char** argv) {
     talus::RotatingDrum drum;
     drum.settings().name = "RotatingDrum";
     drum.settings().timeStep = talus::RotatingDrum::collisionTime / 50;  // Theory/RotatingDrum.md eq. (1): tc = 0.05
+    // The automatic skin (0.2 x the smallest radius) would follow the wall's small spheres: 0.05,
+    // which the flowing layer crosses in some 20 steps, each crossing a new neighbour list
+    // (Documentation/Drums/RotatingDrum.md "Cost").
+    drum.settings().skin = 0.2;
     drum.settings().endTime = 400;
     drum.settings().outputInterval = 10;
     return drum.solve(argc, argv);
