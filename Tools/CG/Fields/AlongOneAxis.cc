@@ -64,17 +64,7 @@ void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points, c
             if (q2 >= Profile::cutoffSquared) continue;
             const double w = weightScale * shape(q2);
             const double mw = mass_[i] * w;
-            double* row = sums.data() + static_cast<std::size_t>(p) * fields;
-            row[FieldSums::density] += mw;
-            row[FieldSums::volumeFraction] += volume_[i] * w;
-            for (int c = 0; c < 3; ++c) row[FieldSums::momentum + c] += mw * v[c];
-            row[FieldSums::momentumFlux + 0] += mw * v[0] * v[0];
-            row[FieldSums::momentumFlux + 1] += mw * v[0] * v[1];
-            row[FieldSums::momentumFlux + 2] += mw * v[0] * v[2];
-            row[FieldSums::momentumFlux + 3] += mw * v[1] * v[1];
-            row[FieldSums::momentumFlux + 4] += mw * v[1] * v[2];
-            row[FieldSums::momentumFlux + 5] += mw * v[2] * v[2];
-            row[FieldSums::speciesDensity + species_[i]] += mw;
+            FieldSums::addParticle(sums.data() + static_cast<std::size_t>(p) * fields, mw, volume_[i] * w, v, species_[i]);
         }
     }
 }

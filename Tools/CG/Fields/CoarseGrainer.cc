@@ -337,18 +337,7 @@ void CoarseGrainer::evaluateDomainAverage(double* row) const {
     // Every source with the weight 1/V (scale_): the sums of eq. (5)-(10) with W replaced by the
     // indicator of the box over its volume and the line integral by 1 (whole branches).
     for (std::size_t i = 0; i < mass_.size(); ++i) {
-        const double m = mass_[i] * scale_;
-        const Vec3& v = velocity_[i];
-        row[FieldSums::density] += m;
-        row[FieldSums::volumeFraction] += volume_[i] * scale_;
-        for (int c = 0; c < 3; ++c) row[FieldSums::momentum + c] += m * v[c];
-        row[FieldSums::momentumFlux + 0] += m * v[0] * v[0];
-        row[FieldSums::momentumFlux + 1] += m * v[0] * v[1];
-        row[FieldSums::momentumFlux + 2] += m * v[0] * v[2];
-        row[FieldSums::momentumFlux + 3] += m * v[1] * v[1];
-        row[FieldSums::momentumFlux + 4] += m * v[1] * v[2];
-        row[FieldSums::momentumFlux + 5] += m * v[2] * v[2];
-        row[FieldSums::speciesDensity + species_[i]] += m;
+        FieldSums::addParticle(row, mass_[i] * scale_, volume_[i] * scale_, velocity_[i], species_[i]);
     }
     if (!setup_.contactStress) return;
     for (std::size_t c = 0; c < contactForce_.size(); ++c) addContactTensor(c, scale_, row + layout_.contactStressIndex());

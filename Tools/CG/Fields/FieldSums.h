@@ -20,6 +20,8 @@
 // (Fields/CylindricalCoarseGrainer.h).
 #pragma once
 
+#include <array>
+
 namespace talus::cg {
 
 struct FieldSums {
@@ -38,6 +40,20 @@ struct FieldSums {
     int interactionForceIndex() const { return contactStressIndex() + 9; }  // 3 components
     int angularMomentumIndex() const { return speciesDensity + species + (contactStress ? 12 : 0); }  // then inertia
     int count() const { return angularMomentumIndex() + (cylindrical ? 2 : 0); }
+
+    // Adds one particle's terms to a row: mw = m_i W, vw = V_i W, velocity v, species s.
+    static void addParticle(double* row, double mw, double vw, const std::array<double, 3>& v, int s) {
+        row[density] += mw;
+        row[volumeFraction] += vw;
+        for (int c = 0; c < 3; ++c) row[momentum + c] += mw * v[c];
+        row[momentumFlux + 0] += mw * v[0] * v[0];
+        row[momentumFlux + 1] += mw * v[0] * v[1];
+        row[momentumFlux + 2] += mw * v[0] * v[2];
+        row[momentumFlux + 3] += mw * v[1] * v[1];
+        row[momentumFlux + 4] += mw * v[1] * v[2];
+        row[momentumFlux + 5] += mw * v[2] * v[2];
+        row[speciesDensity + s] += mw;
+    }
 };
 
 }  // namespace talus::cg
