@@ -88,12 +88,8 @@ void CoarseGrainer::evaluateAlongOneAxis(const std::vector<Vec3>& points, std::v
         const Vec3& segment = contactSegment_[c];
         const double start = contactStart_[c][k], end = start + segment[k];
         const auto [first, last] = byAxis.within(std::min(start, end) - h, std::max(start, end) + h);
-        // The tensor f (x) b of the branch (b = -segment) once per contact, as addContactTensor forms it.
-        const Vec3& f = contactForce_[c];
-        double tensor[9];
-        for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) tensor[3 * r + col] = f[r] * -segment[col];
-        }
+        double tensor[9];  // (once per contact, not per point)
+        contactTensor(c, tensor);
         for (std::size_t j = first; j < last; ++j) {
             const std::uint32_t p = byAxis.order[j];
             const double line = profile_.lineIntegralAlongAxis(ak * (points[p][k] - start), -ak * segment[k]);

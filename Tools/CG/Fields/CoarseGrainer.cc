@@ -304,13 +304,19 @@ void CoarseGrainer::evaluateContacts(const std::vector<Vec3>& points, std::vecto
     }
 }
 
-void CoarseGrainer::addContactTensor(std::size_t c, double weight, double* row) const {
+void CoarseGrainer::contactTensor(std::size_t c, double (&tensor)[9]) const {
     // The tensor f (x) b of the branch, b = -segment.
     const Vec3& f = contactForce_[c];
     const Vec3& segment = contactSegment_[c];
     for (int r = 0; r < 3; ++r) {
-        for (int col = 0; col < 3; ++col) row[3 * r + col] += weight * (f[r] * -segment[col]);
+        for (int col = 0; col < 3; ++col) tensor[3 * r + col] = f[r] * -segment[col];
     }
+}
+
+void CoarseGrainer::addContactTensor(std::size_t c, double weight, double* row) const {
+    double tensor[9];
+    contactTensor(c, tensor);
+    for (int t = 0; t < 9; ++t) row[t] += weight * tensor[t];
 }
 
 void CoarseGrainer::evaluateBoundaryForces(const std::vector<Vec3>& points, std::vector<double>& sums) const {

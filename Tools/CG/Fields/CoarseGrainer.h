@@ -87,7 +87,8 @@ private:
     template <class Profile>
     void scatterParticlesAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
                                    std::vector<double>& sums) const;
-    // row[0..8] += weight * (the tensor of contact source c).
+    // The tensor f (x) b of contact source c (row-major), and row[0..8] += weight * that tensor.
+    void contactTensor(std::size_t c, double (&tensor)[9]) const;
     void addContactTensor(std::size_t c, double weight, double* row) const;
     // Coordinates O: the sums over every source of the frame divided by the box volume.
     void evaluateDomainAverage(double* row) const;
