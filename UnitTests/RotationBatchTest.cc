@@ -38,12 +38,7 @@ TALUS_LANE_TEST(RotationBatch, TurnsEveryParticleAsTheOneParticleCalls) {
         const double kick = 5e-5, dt = 1e-4;
         for (const double drift : {dt, 0.0}) {
             p = before;
-            RotationBatch batch;
-            for (int i = 0; i < n; ++i) {
-                batch.add(static_cast<std::uint32_t>(i), p);
-                if (batch.full()) flushRotationBatch(batch, p, kick, drift);
-            }
-            flushRotationBatch(batch, p, kick, drift);
+            talus::TALUS_LANES::turnShapedParticles(p, kick, drift);
             double worstQ = 0, worstL = 0, worstOmega = 0;
             for (int i = 0; i < n; ++i) {
                 Quat q = before.orientation[i];

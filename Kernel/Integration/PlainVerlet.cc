@@ -41,20 +41,6 @@ void moveWithPrescribedMotion(SimulationState& s) {
     }
 }
 
-// The rigid-body rotation of the non-spherical particles (Particles/RigidBodyRotation.h): a half
-// kick of the angular momentum by the torque, then (drift > 0) the torque-free turn of the
-// orientation over the step; the angular velocity the contacts see follows from both. In
-// batches of lanes (Particles/RotationBatch.h).
-void turnShapedParticles(ParticleStore& p, double kick, double drift) {
-    RotationBatch batch;
-    for (std::size_t i = 0; i < p.owned(); ++i) {
-        if (p.fixed[i] || p.shape[i] < 0) continue;
-        batch.add(static_cast<std::uint32_t>(i), p);
-        if (batch.full()) batch.flush(p, kick, drift);
-    }
-    batch.flush(p, kick, drift);
-}
-
 }  // namespace
 
 void PlainVerlet::advance(StepHost& host, bool recordContacts) {

@@ -79,8 +79,8 @@ void halfKickAndDrift(ParticleStore& p, std::size_t n, double halfStep, double d
 
 void Domain::wrap(Vec3* x, std::size_t n) const { laneKernels().wrap(*this, x, n); }
 
-void RotationBatch::flush(ParticleStore& p, double kick, double drift) {
-    laneKernels().flushRotationBatch(*this, p, kick, drift);
+void turnShapedParticles(ParticleStore& p, double kick, double drift) {
+    laneKernels().turnShapedParticles(p, kick, drift);
 }
 
 std::uint64_t positionSum(const ParticleStore& p, std::size_t n) { return laneKernels().driftPass->positionSum(p, n); }

@@ -2,7 +2,7 @@
 // (Kernel/CMakeLists.txt, talusLaneSources) are compiled with its instruction set into a
 // namespace of its own (lanes_scalar, lanes_avx2, lanes_avx512: Math/LaneNamespace.h) and fill
 // its table; the kernel's entry points (VelocityVerlet.h, DriftPass.h, Domain::wrap,
-// RotationBatch::flush, ContactForces.h, makeNearPairs) call the table of the form in use
+// turnShapedParticles, ContactForces.h, makeNearPairs) call the table of the form in use
 // (Math/LaneForm.cc). Internal to the kernel.
 #pragma once
 
@@ -45,7 +45,7 @@ struct LaneKernels {
     // Boundaries/Domain.h
     void (*wrap)(const Domain& domain, Vec3* x, std::size_t n);
     // Particles/RotationBatch.h
-    void (*flushRotationBatch)(RotationBatch& batch, ParticleStore& p, double kick, double drift);
+    void (*turnShapedParticles)(ParticleStore& p, double kick, double drift);
     // Particles/DriftPass.h (Particles/DriftPass.cc)
     const DriftPassKernels* driftPass;
     // Contacts/PairSweep.h

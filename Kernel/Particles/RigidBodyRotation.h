@@ -167,15 +167,15 @@ inline RotationAxes rotationAxesOf(const Vec3& principalInertia) {
     I.maxCoeff(&largest);
     const int median = smallest == largest ? 0 : 3 - smallest - largest;  // all equal: any axis
     RotationAxes a{};
-    a.medianRate = 1 / I[median];
+    for (int k = 0; k < 3; ++k) a.inverseInertia[k] = 1 / I[k];  // three divisions serve all the rates
+    a.medianRate = a.inverseInertia[median];
     int outer = (median + 1) % 3, inner = (median + 2) % 3;
-    a.outerRate = 1 / I[outer] - a.medianRate, a.innerRate = 1 / I[inner] - a.medianRate;
+    a.outerRate = a.inverseInertia[outer] - a.medianRate, a.innerRate = a.inverseInertia[inner] - a.medianRate;
     if (std::abs(a.innerRate) > std::abs(a.outerRate)) {
         std::swap(outer, inner);
         std::swap(a.outerRate, a.innerRate);
     }
     a.outer[outer] = 1, a.inner[inner] = 1;
-    for (int k = 0; k < 3; ++k) a.inverseInertia[k] = 1 / I[k];
     return a;
 }
 

@@ -34,10 +34,6 @@ public:
         for (int k = 0; k < 3; ++k) outer[k][l] = a.outer[k], inner[k][l] = a.inner[k], inverseInertia[k][l] = a.inverseInertia[k];
     }
 
-    // Every lane turned, written back to the particles (in the lanes of the form in use:
-    // Particles/RotationBatchLanes.h).
-    void flush(ParticleStore& p, double kick, double drift);
-
     // Lane l as one particle's numbers, and back (for the form's pass).
     [[gnu::always_inline]] RotationLane lane(int l) const {
         const RotationAxes a{medianRate[l],
@@ -70,5 +66,10 @@ public:
 private:
     int count_ = 0;
 };
+
+// Every owned, free, non-spherical particle turned: a kick of its angular momentum by `kick` times
+// its torque, then (drift > 0) the torque-free drift of its orientation, and its angular
+// velocity, in batches of lanes of the form in use (Particles/RotationBatchLanes.h).
+void turnShapedParticles(ParticleStore& p, double kick, double drift);
 
 }  // namespace talus

@@ -27,7 +27,7 @@ template <bool withDrift>
 }
 
 // Every lane turned, written back to the particles.
-inline void flushRotationBatch(RotationBatch& b, ParticleStore& p, double kick, double drift) {
+inline void flush(RotationBatch& b, ParticleStore& p, double kick, double drift) {
     if (drift > 0)
         turnLanes<true>(b, kick, drift);
     else
@@ -45,6 +45,17 @@ inline void flushRotationBatch(RotationBatch& b, ParticleStore& p, double kick, 
         p.angularVelocity[i] = Vec3(b.wx[l], b.wy[l], b.wz[l]);
     }
     b.clear();
+}
+
+// The whole pass in this form, the gathering into lanes included (Particles/RotationBatch.h).
+inline void turnShapedParticles(ParticleStore& p, double kick, double drift) {
+    RotationBatch batch;
+    for (std::size_t i = 0; i < p.owned(); ++i) {
+        if (p.fixed[i] || p.shape[i] < 0) continue;
+        batch.add(static_cast<std::uint32_t>(i), p);
+        if (batch.full()) flush(batch, p, kick, drift);
+    }
+    flush(batch, p, kick, drift);
 }
 
 }  // namespace talus::TALUS_LANES
