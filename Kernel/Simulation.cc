@@ -95,6 +95,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     // summation mode excepted.
     const RunSettings saved = state_.settings;
     run_->commandLine().parse(flags);
+    if (state_.settings.timeStep == RunSettings::automaticTimeStep) chooseTimeStep();
     state_.settings.validate();
     if (!restartFile.empty()) refuseContradictions(saved, restartFile);
     initialise(!restartFile.empty());
@@ -192,6 +193,14 @@ void Simulation::refuseContradictions(const RunSettings& saved, const std::strin
     if (now.timeStep != saved.timeStep) refuse("dt", text(now.timeStep), text(saved.timeStep));
     if (now.idOrderedSums != saved.idOrderedSums)
         refuse("id-ordered-sums", now.idOrderedSums ? "on" : "off", saved.idOrderedSums ? "on" : "off");
+}
+
+// --dt auto: the step from the scene as it starts (Scene::automaticTimeStep), said with its reason.
+void Simulation::chooseTimeStep() {
+    RunSettings& c = state_.settings;
+    std::string reason;
+    c.timeStep = scene_->automaticTimeStep(c.stepsPerCollision, c.impactSpeed, &reason);
+    if (ranks_->rank() == 0) std::cout << c.name << ": time step " << c.timeStep << " (--dt auto): " << reason << std::endl;
 }
 
 std::uint64_t Simulation::saveEvery() const {

@@ -100,6 +100,7 @@ private:
     friend struct SimulationInternals;  // (SimulationInternals.h: the state, mutable, for tests)
     void initialise(bool restarted);
     void refuseContradictions(const RunSettings& saved, const std::string& restartFile) const;
+    void chooseTimeStep();
     // The forces at the positions now, the neighbour list updated first (StepHost::computeForces).
     void computeForces(bool recordContacts, OverlapCheck check, const DriftPassResult* drifted = nullptr);
     void checkOverlaps(double limit, bool initial, bool agreeNow = true);

@@ -25,8 +25,18 @@ Simulation::Simulation()
     CommandLine& cl = run_->commandLine();
     cl.add("end-time", "T", "simulated time at which the run stops",
            [&c](const std::string& v) { c.endTime = CommandLine::toDouble("end-time", v); });
-    cl.add("dt", "DT", "time step",
-           [&c](const std::string& v) { c.timeStep = CommandLine::toDouble("dt", v); });
+    cl.add("dt", "DT|auto",
+           "time step; auto: the shortest collision time of the scene over --steps-per-collision (printed with its "
+           "reason)",
+           [&c](const std::string& v) {
+               c.timeStep = v == "auto" ? RunSettings::automaticTimeStep : CommandLine::toDouble("dt", v);
+           });
+    cl.add("steps-per-collision", "N", "for --dt auto: time steps per shortest collision (default 50, at least 10)",
+           [&c](const std::string& v) { c.stepsPerCollision = CommandLine::toDouble("steps-per-collision", v); });
+    cl.add("impact-speed", "V",
+           "for --dt auto: the largest impact speed expected, at which Hertzian collisions are timed (default: "
+           "each Hertzian law's characteristic velocity)",
+           [&c](const std::string& v) { c.impactSpeed = CommandLine::toDouble("impact-speed", v); });
     cl.add("output-interval", "T", "simulated time between saved frames (0: first and last)",
            [&c](const std::string& v) { c.outputInterval = CommandLine::toDouble("output-interval", v); });
     cl.add("name", "NAME", "output file name (NAME.data, NAME.fstat, ...)",

@@ -26,7 +26,12 @@ void requireNotNegative(double x, const std::string& setting, const std::string&
 void RunSettings::validate(bool started) const {
     require(!started || timeStep != 0, "no time step: set settings().timeStep or pass --dt");
     requireWord(name, named("name", "name"));
-    if (timeStep != 0) requirePositive(timeStep, "timeStep", "dt");  // (0: not set yet)
+    if (timeStep != 0 && timeStep != automaticTimeStep) requirePositive(timeStep, "timeStep", "dt");  // (0: not set yet)
+    require(std::isfinite(stepsPerCollision) && stepsPerCollision >= 10,
+            named("stepsPerCollision", "steps-per-collision") + " must be 10 or more (the largest step the run "
+                                                               "accepts is a tenth of a collision), got " +
+                str(stepsPerCollision));
+    requireNotNegative(impactSpeed, "impactSpeed", "impact-speed");
     requireNotNegative(endTime, "endTime", "end-time");
     requireNotNegative(outputInterval, "outputInterval", "output-interval");
     if (skin != automaticSkin) requireNotNegative(skin, "skin", "skin");

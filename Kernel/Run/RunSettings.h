@@ -5,6 +5,7 @@
 // the run before the scene is built, and again before the run starts. The restart file keeps them (IO/RestartFile.h).
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "Integration/StepperTuning.h"
@@ -13,7 +14,13 @@ namespace talus {
 
 struct RunSettings {
     std::string name = "talus";  // --name: output files are name.data, name.fstat, ...
-    double timeStep = 0;         // --dt
+    // --dt: the time step; automaticTimeStep (--dt auto): the shortest collision time of the scene over
+    // stepsPerCollision (--steps-per-collision), Hertzian contacts at impactSpeed (--impact-speed; 0: at each
+    // law's characteristic velocity), chosen when the run starts (Scene::automaticTimeStep).
+    // (A value no flag can give: --dt takes finite numbers only.)
+    static constexpr double automaticTimeStep = -std::numeric_limits<double>::infinity();
+    double timeStep = 0;
+    double stepsPerCollision = 50, impactSpeed = 0;
     double endTime = 0;          // --end-time
     double outputInterval = 0;   // --output-interval: simulated time between saved frames; 0: first and last only
     // --skin: the neighbour-list skin; automaticSkin: 0.2 x the smallest radius, set at the start.

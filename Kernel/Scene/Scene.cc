@@ -191,7 +191,7 @@ std::size_t Scene::addMotion(const PrescribedMotion& motion) {
     return state_.motions.size() - 1;
 }
 
-double Scene::shortestCollisionTime(std::string* which) const {
+double Scene::shortestCollisionTime(std::string* which, double impactSpeed) const {
     // Per species: how many mobile particles, the lightest and the smallest of them, and whether
     // fixed particles or walls of that species can be hit.
     struct Present {
@@ -216,9 +216,14 @@ double Scene::shortestCollisionTime(std::string* which) const {
 
     double shortest = INFINITY;
     auto consider = [&](std::size_t a, std::size_t b, double reducedMass, double effectiveRadius) {
-        const ContactLaw law = state_.species.pairLaw(a, b);
-        const double tc =
-            std::visit([&](const auto& l) { return l.collisionTimeOfPair(reducedMass, effectiveRadius); }, law);
+        ContactLaw law = state_.species.pairLaw(a, b);
+        const double tc = std::visit(
+            [&](auto& l) {
+                if constexpr (requires { l.characteristicVelocity; })  // (a speed-dependent collision)
+                    if (impactSpeed > 0) l.characteristicVelocity = impactSpeed;
+                return l.collisionTimeOfPair(reducedMass, effectiveRadius);
+            },
+            law);
         if (tc >= shortest) return;
         shortest = tc;
         if (which)
@@ -241,6 +246,21 @@ double Scene::shortestCollisionTime(std::string* which) const {
     return shortest;
 }
 
+double Scene::automaticTimeStep(double stepsPerCollision, double impactSpeed, std::string* reason) const {
+    require(std::isfinite(stepsPerCollision) && stepsPerCollision >= 10,
+            "steps per collision (--steps-per-collision) must be 10 or more, got " + str(stepsPerCollision));
+    require(std::isfinite(impactSpeed) && impactSpeed >= 0,
+            "impact speed (--impact-speed) must not be negative, got " + str(impactSpeed));
+    std::string which;
+    const double tc = shortestCollisionTime(&which, impactSpeed);
+    require(std::isfinite(tc), "--dt auto: no particle can collide with anything (no mobile particles), so no "
+                               "collision time sets the step: give --dt");
+    if (reason)
+        *reason = "the shortest collision time " + str(tc) + " (" + which + ") over " + str(stepsPerCollision) +
+                  (impactSpeed > 0 ? ", Hertzian contacts at impact speed " + str(impactSpeed) : std::string());
+    return tc / stepsPerCollision;
+}
+
 std::size_t Scene::slotOf(std::uint64_t id, bool ghosts) const {
     const std::vector<std::uint64_t>& ids = state_.particles.id;
     const auto end = ids.begin() + static_cast<std::ptrdiff_t>(ghosts ? ids.size() : state_.particles.owned());
@@ -258,7 +278,7 @@ void Scene::validate(double timeStep) const {
     const double tc = shortestCollisionTime(&which);
     if (timeStep > tc / 10)
         throw Error("time step " + str(timeStep) + " is larger than a tenth of the shortest collision time " + str(tc) +
-                    " (" + which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller");
+                    " (" + which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller, or --dt auto");
 }
 
 }  // namespace talus

@@ -106,8 +106,13 @@ public:
     std::mt19937_64& random() { return state_.random; }
 
     // --- checks ---
-    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is.
-    double shortestCollisionTime(std::string* which = nullptr) const;
+    // The shortest collision time over the species pairs present (Theory/ContactLaws.md eq. (9)-(10)), and what it is:
+    // the lightest and smallest particles of each pair of species, against each other and against walls and fixed
+    // particles. A Hertzian law's time is that of an impact at impactSpeed (0: at the law's own characteristic velocity).
+    double shortestCollisionTime(std::string* which = nullptr, double impactSpeed = 0) const;
+    // The time step of --dt auto (Theory/Integration.md "Choosing the time step"): the shortest collision time over
+    // stepsPerCollision, and in `reason` (if given) how it was found.
+    double automaticTimeStep(double stepsPerCollision, double impactSpeed = 0, std::string* reason = nullptr) const;
     // The whole scene, before a run starts: the species, the walls' species, and a time step
     // of at most a tenth of the shortest collision time (Theory/Integration.md).
     void validate(double timeStep) const;
