@@ -17,6 +17,7 @@
 #include "IO/RestartFile.h"
 #include "Parallel/Communicator.h"
 #include "Parallel/RankContext.h"
+#include "Run/ModelSummary.h"
 #include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
@@ -220,12 +221,14 @@ void Simulation::initialise(bool restarted) {
     if (state_.species.keepsRollingSprings()) state_.pairList.enableRollingSprings();
     ranks_->start(state_);
     work_->grid = HGrid(c.cellSizeRatio);
-    if (c.skin < 0) {
+    const bool automaticSkin = c.skin < 0;
+    if (automaticSkin) {
         double rmin = INFINITY;
         for (double r : state_.particles.radius) rmin = std::min(rmin, r);
         c.skin = std::isfinite(rmin) ? 0.2 * rmin : 0;
     }
     state_.pairList.skin = c.skin;
+    if (ranks_->rank() == 0) std::cout << c.name << ": " << describeModel(state_, automaticSkin) << std::endl;
     if (state_.settings.idOrderedSums) {
         require(state_.domain.oneWay.outflowSpecies.empty(), "--id-ordered-sums is for scenes without a maser");
         state_.pairList.valid = false;  // the list is built anew with every pair oriented by ids
