@@ -33,6 +33,10 @@ Simulation::Simulation()
            });
     cl.add("steps-per-collision", "N", "for --dt auto: time steps per shortest collision (default 50, at least 10)",
            [&c](const std::string& v) { c.stepsPerCollision = CommandLine::toDouble("steps-per-collision", v); });
+    cl.add("largest-step-fraction", "F",
+           "the largest time step a run accepts, as a fraction of the shortest collision time (default 0.1; above "
+           "it only to study where the integration fails)",
+           [&c](const std::string& v) { c.largestStepFraction = CommandLine::toDouble("largest-step-fraction", v); });
     cl.add("impact-speed", "V",
            "for --dt auto: the largest impact speed expected, at which Hertzian collisions are timed (default: "
            "each Hertzian law's characteristic velocity)",

@@ -142,7 +142,9 @@ TEST(AutomaticTimeStep, BadSettingsNamed) {
     for (const auto& [flags, named] : std::vector<std::pair<std::vector<std::string>, std::string>>{
              {{"--steps-per-collision", "5"}, "--steps-per-collision"},
              {{"--steps-per-collision", "nan"}, "--steps-per-collision"},
-             {{"--impact-speed", "-1"}, "--impact-speed"}}) {
+             {{"--impact-speed", "-1"}, "--impact-speed"},
+             {{"--largest-step-fraction", "2"}, "--largest-step-fraction"},
+             {{"--largest-step-fraction", "0.5", "--steps-per-collision", "1.5"}, "at least 2"}}) {
         SceneSimulation s;
         s.setup = linearScene;
         expectError([&] { s.solveOrThrow(autoStep(flags)); }, {named});

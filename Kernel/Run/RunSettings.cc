@@ -27,10 +27,12 @@ void RunSettings::validate(bool started) const {
     require(!started || timeStep != 0, "no time step: set settings().timeStep or pass --dt");
     requireWord(name, named("name", "name"));
     if (timeStep != 0 && timeStep != automaticTimeStep) requirePositive(timeStep, "timeStep", "dt");  // (0: not set yet)
-    require(std::isfinite(stepsPerCollision) && stepsPerCollision >= 10,
-            named("stepsPerCollision", "steps-per-collision") + " must be 10 or more (the largest step the run "
-                                                               "accepts is a tenth of a collision), got " +
-                str(stepsPerCollision));
+    require(std::isfinite(largestStepFraction) && largestStepFraction > 0 && largestStepFraction <= 1,
+            named("largestStepFraction", "largest-step-fraction") + " must be in (0, 1], got " +
+                str(largestStepFraction));
+    require(std::isfinite(stepsPerCollision) && stepsPerCollision * largestStepFraction >= 1,
+            named("stepsPerCollision", "steps-per-collision") + " must be at least " + str(1 / largestStepFraction) +
+                " (1 / --largest-step-fraction: the largest step a run accepts), got " + str(stepsPerCollision));
     requireNotNegative(impactSpeed, "impactSpeed", "impact-speed");
     requireNotNegative(endTime, "endTime", "end-time");
     requireNotNegative(outputInterval, "outputInterval", "output-interval");

@@ -21,6 +21,9 @@ struct RunSettings {
     static constexpr double automaticTimeStep = -std::numeric_limits<double>::infinity();
     double timeStep = 0;
     double stepsPerCollision = 50, impactSpeed = 0;
+    // --largest-step-fraction: the largest dt / tc a run accepts (Theory/Integration.md eq. (12));
+    // above 0.1 only for studies of where the integration fails (Documentation/SpeedVsError.md).
+    double largestStepFraction = 0.1;
     double endTime = 0;          // --end-time
     double outputInterval = 0;   // --output-interval: simulated time between saved frames; 0: first and last only
     // --skin: the neighbour-list skin; automaticSkin: 0.2 x the smallest radius, set at the start.

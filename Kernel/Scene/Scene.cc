@@ -247,8 +247,8 @@ double Scene::shortestCollisionTime(std::string* which, double impactSpeed) cons
 }
 
 double Scene::automaticTimeStep(double stepsPerCollision, double impactSpeed, std::string* reason) const {
-    require(std::isfinite(stepsPerCollision) && stepsPerCollision >= 10,
-            "steps per collision (--steps-per-collision) must be 10 or more, got " + str(stepsPerCollision));
+    require(std::isfinite(stepsPerCollision) && stepsPerCollision >= 1,
+            "steps per collision (--steps-per-collision) must be 1 or more, got " + str(stepsPerCollision));
     require(std::isfinite(impactSpeed) && impactSpeed >= 0,
             "impact speed (--impact-speed) must not be negative, got " + str(impactSpeed));
     std::string which;
@@ -270,14 +270,16 @@ std::size_t Scene::slotOf(std::uint64_t id, bool ghosts) const {
     return static_cast<std::size_t>(it - ids.begin());
 }
 
-void Scene::validate(double timeStep) const {
+void Scene::validate(double timeStep, double largestStepFraction) const {
     state_.species.validate();
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     std::string which;
     const double tc = shortestCollisionTime(&which);
-    if (timeStep > tc / 10)
-        throw Error("time step " + str(timeStep) + " is larger than a tenth of the shortest collision time " + str(tc) +
+    if (timeStep > largestStepFraction * tc)
+        throw Error("time step " + str(timeStep) + " is larger than " +
+                    (largestStepFraction == 0.1 ? std::string("a tenth") : str(largestStepFraction) + " x") +
+                    " of the shortest collision time " + str(tc) +
                     " (" + which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller, or --dt auto");
 }
 

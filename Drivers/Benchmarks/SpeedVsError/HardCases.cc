@@ -1,0 +1,83 @@
+// Hard cases for the stability limits of the time integration (Documentation/SpeedVsError.md,
+// "Where the integration fails"; Drivers/Benchmarks/SpeedVsError/stabilityLimits.py):
+//   --case size-ratio: a sphere --size-ratio times the diameter of the others (default 20, so
+//     8000 times their mass) dropped onto two layers of them on a floor, periodic along x and y;
+//   --case fast-impact: spheres thrown onto a floor and onto each other at --impact 10 (ten times
+//     the speed of a dense flow), with the Hertz-Mindlin law, whose collisions shorten as the
+//     impact speed rises (its collision time for the time step is the one at speed 1 unless
+//     --impact-speed says otherwise).
+// Both with e = 0.5 and friction 0.5 between d = 1 spheres of density 6/pi.
+#include <cmath>
+#include <string>
+
+#include "Simulation.h"
+
+using namespace talus;
+
+class HardCases : public Simulation {
+public:
+    std::string which = "size-ratio";
+    double sizeRatio = 20;
+    double impact = 10;
+
+    HardCases() {
+        run().addTextFlag("case", "size-ratio or fast-impact", which);
+        run().addFlag("size-ratio", "size-ratio case: diameter of the large sphere (default 20)", sizeRatio);
+        run().addFlag("impact", "fast-impact case: the speed of the thrown spheres (default 10)", impact);
+    }
+
+    void setupInitialConditions() override {
+        require(which == "size-ratio" || which == "fast-impact", "--case must be size-ratio or fast-impact, got '" + which + "'");
+        require(sizeRatio >= 1, "--size-ratio must be at least 1");
+        require(impact > 0, "--impact must be positive");
+        if (which == "size-ratio")
+            largeOnSmall();
+        else
+            fastImpacts();
+    }
+
+private:
+    // A lattice of d = 1 spheres, `layers` high from height z0, over the periodic square of side
+    // `width`, each with velocity v plus a small random part.
+    void lattice(std::size_t species, double width, int layers, double z0, const Vec3& v) {
+        const double spacing = 1.05;
+        const int side = static_cast<int>(std::floor(width / spacing));
+        std::uniform_real_distribution<double> jiggle(-0.05, 0.05);
+        for (int k = 0; k < side * side * layers; ++k) {
+            const Vec3 site(k % side + 0.5, (k / side) % side + 0.5, k / (side * side));
+            const Vec3 random(jiggle(scene().random()), jiggle(scene().random()), jiggle(scene().random()));
+            scene().addParticle(Vec3(site.x() * spacing, site.y() * spacing, z0 + site.z() * spacing), 0.5, species,
+                                v + random);
+        }
+    }
+
+    void largeOnSmall() {
+        const auto grains = scene().addSpecies(
+            "grains", 6 / pi, LinearSpringDashpot::fromCollision(0.005, 0.5, 0.5).withFriction(0.5));
+        const double width = 2 * sizeRatio + 2;  // (a periodic box twice the large diameter)
+        scene().setDomain(Vec3::Zero(), Vec3(width, width, 4 * sizeRatio));
+        scene().setPeriodic(true, true, false);
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grains);
+        lattice(grains, width, 2, 0.55, Vec3::Zero());
+        scene().addParticle(Vec3(width / 2, width / 2, 2 * 1.05 + 0.6 + sizeRatio / 2), sizeRatio / 2, grains);
+    }
+
+    void fastImpacts() {
+        const auto grains = scene().addSpecies("grains", 6 / pi, HertzMindlin::fromMaterial(1e6, 0.3, 0.5).withFriction(0.5));
+        const double width = 8;
+        scene().setDomain(Vec3::Zero(), Vec3(width, width, 40));
+        scene().setPeriodic(true, true, false);
+        scene().addWall(Vec3::UnitZ(), Vec3::Zero(), grains);
+        lattice(grains, width, 2, 0.55, Vec3::Zero());                 // a bed at rest
+        lattice(grains, width, 4, 4, Vec3(0.3, 0.2, -1) * impact);     // thrown onto it
+    }
+};
+
+int main(int argc, char** argv) {
+    HardCases cases;
+    cases.settings().name = "HardCases";
+    cases.settings().timeStep = RunSettings::automaticTimeStep;
+    cases.settings().endTime = 4;
+    cases.settings().outputInterval = 0.5;
+    return cases.solve(argc, argv);
+}
