@@ -23,8 +23,8 @@ cases = {
                                      ["--particles", "100", "--width", "4", "--aspect", "1.5", "--blockiness", "0.2"],
                                      "8"),
     "size ratio 20 (mass ratio 8000)": ("Benchmarks/HardCases", ["--case", "size-ratio"], "4"),
-    "Hertz impacts at speed 10, step for speed 1": ("Benchmarks/HardCases", ["--case", "fast-impact"], "2"),
-    "Hertz impacts at speed 10, --impact-speed 10": ("Benchmarks/HardCases",
+    "Hertz impacts at speed 10 (step for speed 1)": ("Benchmarks/HardCases", ["--case", "fast-impact"], "2"),
+    "Hertz impacts at speed 10 (--impact-speed 10)": ("Benchmarks/HardCases",
                                                      ["--case", "fast-impact", "--impact-speed", "10"], "2"),
 }
 grid = [1, 1.25, 1.5, 1.75, 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 15, 20, 30, 50]
