@@ -59,7 +59,17 @@ TEST(ModelSummary, RollingResistanceSuperquadricsAndCylinders) {
     scene.addSuperquadric(Vec3(2, 0, 0), ellipsoid, sand);
     expectSays(describeModel(s.state(), true),
                {"models 1 sphere and 1 superquadric", "LinearSpringDashpotRolling", "rolling resistance up to 0.2",
-                "rigid bodies", "walls: 1 plane, 1 cylinder"});
+                "contact ends treated between spheres (superquadric contacts: plain velocity Verlet)", "rigid bodies",
+                "walls: 1 plane, 1 cylinder"});
+}
+
+TEST(ModelSummary, SuperquadricContactsSaidPlain) {
+    SceneSimulation s;
+    const auto sand = s.scene().addSpecies("sand", 1, LinearSpringDashpot{1e5, 1, 1e4, 1, 0.5});
+    const std::size_t ellipsoid = s.scene().addShape(Superquadric(0.5, 0.5, 1, 1, 1));
+    s.scene().addSuperquadric(Vec3(2, 0, 0), ellipsoid, sand);
+    expectSays(describeModel(s.state(), true),
+               {"models 1 superquadric", "contact ends plain velocity Verlet (superquadric contacts)"});
 }
 
 TEST(ModelSummary, EveryRunSaysItFirst) {

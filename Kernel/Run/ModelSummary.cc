@@ -11,7 +11,7 @@ namespace {
 // The parts of the law that act, over the pairs of species present: "friction 0.5 (tangential
 // springs kept)" or "frictionless (no tangential force)", rolling resistance, contact ends.
 template <class Law>
-std::string lawParts(const PairTable<Law>& table, const std::vector<bool>& present) {
+std::string lawParts(const PairTable<Law>& table, const std::vector<bool>& present, bool spheres, bool shaped) {
     double lowest = INFINITY, highest = 0, rolling = 0;
     bool endsTreated = false, endsPlain = false;
     for (std::size_t a = 0; a < table.count; ++a)
@@ -38,7 +38,12 @@ std::string lawParts(const PairTable<Law>& table, const std::vector<bool>& prese
         else
             s << ", no rolling resistance (rolling friction 0)";
     }
-    if (endsTreated) s << ", contact ends treated" << (endsPlain ? " for some pairs" : "");
+    // (Contacts with a superquadric take the law's plain step: Contacts/ShapedContactForces.h.)
+    if (endsTreated && !spheres)
+        s << ", contact ends plain velocity Verlet (superquadric contacts)";
+    else if (endsTreated)
+        s << ", contact ends treated" << (endsPlain ? " for some pairs" : "")
+          << (shaped ? " between spheres (superquadric contacts: plain velocity Verlet)" : "");
     if (endsPlain && !endsTreated) s << ", contact ends plain velocity Verlet";
     return s.str();
 }
@@ -70,7 +75,7 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
     const std::size_t speciesPresent = static_cast<std::size_t>(std::count(present.begin(), present.end(), true));
     out << ", " << speciesPresent << " species; ";
     if (s.species.size() > 0)
-        out << std::visit([&](const auto& table) { return lawParts(table, present); }, s.species.tables());
+        out << std::visit([&](const auto& table) { return lawParts(table, present, spheres > 0, shaped > 0); }, s.species.tables());
     out << "; rotation integrated";
     if (shaped > 0) out << " (rigid bodies: angular momentum and orientation)";
     if (s.gravity == Vec3::Zero())
