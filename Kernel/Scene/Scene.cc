@@ -91,9 +91,10 @@ std::size_t Scene::addSuperquadric(const Vec3& position, std::size_t shape, std:
     require(shape < state_.shapes.size(), which + ": shape " + std::to_string(shape) + " does not exist (addShape first)");
     requireValidOrientation(orientation, which);
     require(species < state_.species.size(), which + ": species " + std::to_string(species) + " does not exist");
+    const Superquadric& s = state_.shapes[shape];
+    if (s.isSphere()) return addParticle(position, s.a(), species, velocity, angularVelocity);
     ParticleStore& p = state_.particles;
     enableShapes();
-    const Superquadric& s = state_.shapes[shape];
     const std::size_t i = addParticle(position, s.boundingRadius(), species, velocity, angularVelocity);
     const double density = state_.species[species].density;
     p.mass[i] = density * s.volume();

@@ -45,7 +45,9 @@ public:
     std::size_t addFixedParticle(const Vec3& position, double radius, std::size_t species, int motion = -1);
     // Superquadric particles (Theory/Superquadrics.md): a shape added once, then particles of it. The particle's
     // radius is the shape's bounding radius, its mass density x volume; it turns as a rigid body
-    // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot.
+    // (Particles/RigidBodyRotation.h). Returns the shape's index / the particle's slot. A shape that is a sphere
+    // (Superquadric::isSphere) makes a sphere (addParticle): the same body on the sphere path, several times
+    // cheaper, with the contact's ends treated as a sphere's are (Documentation/SpeedVsError.md).
     std::size_t addShape(const Superquadric& shape);
     std::size_t addSuperquadric(const Vec3& position, std::size_t shape, std::size_t species,
                                 const Quat& orientation = Quat::Identity(), const Vec3& velocity = Vec3::Zero(),
