@@ -1,5 +1,5 @@
 // What a run models, said in one line when it starts (Documentation/UserGuide/WritingADriver.md
-// "What a run says when it starts"): the particles and their shapes, the contact law and which of
+// "What a run prints"): the particles and their shapes, the contact law and which of
 // its parts act (friction and the tangential springs it keeps, rolling resistance, the treatment of
 // the contact's ends), rotation, gravity, walls, periodic directions and the neighbour list's skin
 // with where it came from. The stepper and lane form follow on the next line

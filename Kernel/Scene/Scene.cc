@@ -278,9 +278,8 @@ void Scene::validate(double timeStep, double largestStepFraction) const {
     std::string which;
     const double tc = shortestCollisionTime(&which);
     if (timeStep > largestStepFraction * tc)
-        throw Error("time step " + str(timeStep) + " is larger than " +
-                    (largestStepFraction == 0.1 ? std::string("a tenth") : str(largestStepFraction) + " x") +
-                    " of the shortest collision time " + str(tc) +
+        throw Error("time step " + str(timeStep) + " is larger than " + str(largestStepFraction) +
+                    " x the shortest collision time " + str(tc) +
                     " (" + which + "); use --dt " + str(tc / 50) + " (tc/50) or smaller, or --dt auto");
 }
 

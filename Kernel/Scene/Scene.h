@@ -116,9 +116,9 @@ public:
     // stepsPerCollision, and in `reason` (if given) how it was found.
     double automaticTimeStep(double stepsPerCollision, double impactSpeed = 0, std::string* reason = nullptr) const;
     // The whole scene, before a run starts: the species, the walls' species, and a time step
-    // of at most largestStepFraction (a tenth by default) of the shortest collision time
-    // (Theory/Integration.md eq. (12)).
-    void validate(double timeStep, double largestStepFraction = 0.1) const;
+    // of at most largestStepFraction (RunSettings, --largest-step-fraction) of the shortest
+    // collision time (Theory/Integration.md eq. (12)).
+    void validate(double timeStep, double largestStepFraction) const;
 
 private:
     void requireMotion(int motion, const std::string& what) const;
