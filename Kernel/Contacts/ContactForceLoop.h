@@ -219,7 +219,7 @@ public:
             if (perPair_) [[unlikely]]
                 currentPair_ = k;
             if (shapes_ && (p_.isShaped(i) || p_.isShaped(j))) [[unlikely]] {
-                shapedPair(list, k, i, j, d.x(), d.y(), d.z());
+                if (!shapedPairStaysApart(list, k, i, j)) shapedPair(list, k, i, j, d.x(), d.y(), d.z());
                 return;
             }
         }
@@ -328,6 +328,7 @@ private:
     // Contacts/ShapedContactForces.h ---
     [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                       double dy, double dz);
+    [[gnu::always_inline]] bool shapedPairStaysApart(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j);
     bool isEllipsoid(std::uint32_t i) const;
     bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
     void flushEllipsoids(PairList& list);

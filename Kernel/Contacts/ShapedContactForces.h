@@ -11,28 +11,10 @@ namespace talus::TALUS_LANES {
 // kinematics of the contact point, with the branch vectors from the centres to it. The ends
 // of a contact are not treated (the law's plain step), and the tangential spring is turned
 // into the new tangent plane with its length kept (Denissen 2019, app. 5.A.3).
-// A pair apart keeps a lower bound of its gap (ShapedContactGeometry::gapBound) and lowers it
-// each step by how far the two bodies can have closed in (relative speed of the centres plus
-// each spin times its bounding radius, with a margin of half for the change of speed within
-// the step); while it stays positive the pair cannot touch and is not solved. Such a pair is
-// marked "approaching", so that the force loop's sweep visits it every step, also while its
-// bounding spheres are apart: the bound is then never stale.
 // (The separation comes as three numbers, in registers: a Vec3 would go through memory.)
 template <class Law>
 void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                        double dy, double dz) {
-    // (The bound is lowered in place: a skipped pair reads and writes nothing else. The spins |w|
-    // are each particle's, taken once per force evaluation with its frame; the closing speed
-    // |vi - vj| + |wi| ri + |wj| rj in fused multiply-adds.)
-    if (list.history.state(k) == ContactHistory::approaching && list.history.gapBoundOf(k) > 0) {
-        const std::vector<double>& spin = list.spinScratch;
-        const double closing =
-            std::fma(spin[j], p_.radius[j], std::fma(spin[i], p_.radius[i], (p_.velocity[i] - p_.velocity[j]).norm()));
-        double& gapBound = list.history.gapBoundOf(k);
-        gapBound -= 1.5 * closing * dt_;
-        list.history.clearLastNormalForce(k);
-        if (gapBound > 0) return;
-    }
     const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
     ContactHistory history = list.history.get(k);
     // A lasting contact of two ellipsoids: into the batch (EllipsoidContactBatch.h; laws
@@ -48,6 +30,29 @@ void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std
     }
     shapedPairWith(list, k, i, j, xj, history,
                    shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius));
+}
+
+// A pair apart keeps a lower bound of its gap (ShapedContactGeometry::gapBound) and lowers it
+// each step by how far the two bodies can have closed in (relative speed of the centres plus
+// each spin times its bounding radius, with a margin of half for the change of speed within
+// the step); while it stays positive the pair cannot touch and is not solved. Such a pair is
+// marked "approaching", so that the force loop's sweep visits it every step, also while its
+// bounding spheres are apart: the bound is then never stale. Most visits of a settled packing end
+// here, so this check is inlined into the sweep and only the pairs it cannot skip pay the call.
+// (The bound is lowered in place: a skipped pair reads and writes nothing else. The spins |w|
+// are each particle's, taken once per force evaluation with its frame; the closing speed
+// |vi - vj| + |wi| ri + |wj| rj in fused multiply-adds.)
+template <class Law>
+inline bool ContactForceLoopInLanes<Law>::shapedPairStaysApart(PairList& list, std::size_t k, std::uint32_t i,
+                                                        std::uint32_t j) {
+    if (list.history.state(k) != ContactHistory::approaching || !(list.history.gapBoundOf(k) > 0)) return false;
+    const std::vector<double>& spin = list.spinScratch;
+    const double closing =
+        std::fma(spin[j], p_.radius[j], std::fma(spin[i], p_.radius[i], (p_.velocity[i] - p_.velocity[j]).norm()));
+    double& gapBound = list.history.gapBoundOf(k);
+    gapBound -= 1.5 * closing * dt_;
+    list.history.clearLastNormalForce(k);
+    return gapBound > 0;
 }
 
 // (Shaped particles only; two spheres have the closed form of findSuperquadricContact.)
