@@ -85,12 +85,12 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
     for (int l = 0; l < b.count; ++l) {
         const std::uint32_t i = b.i[l], j = b.j[l];
         const Vec3 xj(b.cjx[l], b.cjy[l], b.cjz[l]);
-        const ContactHistory history = list.history.get(b.k[l]);
         if (b.done[l] == 0) {
+            const ContactHistory history = list.history.get(b.k[l]);
             shapedPairWith(list, b.k[l], i, j, xj, history,
                            shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false));
         } else if (forcesInLanes) {
-            laneContact(list, l, history);
+            laneContact(list, l);
         } else {
             ShapedContactGeometry g;
             g.converged = g.touching = true;
@@ -98,7 +98,7 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
             g.overlap = b.overlap[l];
             g.contactPoint = Vec3(b.mx[l], b.my[l], b.mz[l]);
             g.solution = {Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]};
-            shapedPairWith(list, b.k[l], i, j, xj, history, g);
+            shapedPairWith(list, b.k[l], i, j, xj, list.history.get(b.k[l]), g);
         }
     }
     b.count = 0;
@@ -106,15 +106,11 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
 
 // Lane l's contact, computed in the lanes, applied (as shapedPairWith and shapedContact would).
 template <class Law>
-void ContactForceLoopInLanes<Law>::laneContact(PairList& list, int l, ContactHistory history) {
+void ContactForceLoopInLanes<Law>::laneContact(PairList& list, int l) {
     const EllipsoidContactBatch& b = ellipsoids_;
     const std::uint32_t i = b.i[l], j = b.j[l];
-    history.warmPoint = Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i];
-    history.warmMultiplier = b.mu[l];
-    history.spring = Vec3(b.sx[l], b.sy[l], b.sz[l]);
-    history.state = ContactHistory::touching;
-    history.lastNormalForce = b.fn[l];
-    list.history.set(b.k[l], history);
+    list.history.setTouching(b.k[l], Vec3(b.sx[l], b.sy[l], b.sz[l]), b.fn[l],
+                             Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]);
     const Vec3 force(b.fx[l], b.fy[l], b.fz[l]);
     const Vec3 torqueI(b.tix[l], b.tiy[l], b.tiz[l]), torqueJ(b.tjx[l], b.tjy[l], b.tjz[l]);
     if (perPair_) [[unlikely]] {  // kept for the sums in id order (IdOrderedForceSums.h)
