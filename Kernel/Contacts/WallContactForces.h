@@ -63,11 +63,14 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
                                            const std::vector<PrescribedMotion>& motions) {
     const std::uint32_t i = list.wallPairs[k].particle;
     const Wall& wall = walls[list.wallPairs[k].wall];
+    const double distance = wall.signedDistance(p_.position[i]);
     if (shapes_ && p_.isShaped(i)) [[unlikely]] {
-        shapedWall(list, k, i, wall, motions);
+        // (A shaped particle lies within its bounding sphere, p_.radius: a sphere clear of the wall
+        // by more than rounding leaves a pair that was apart apart, with nothing to solve.)
+        if (!(list.wallHistory.state(k) == ContactHistory::apart && distance - p_.radius[i] > 1e-9 * p_.radius[i]))
+            shapedWall(list, k, i, wall, motions);
         return;
     }
-    const double distance = wall.signedDistance(p_.position[i]);
     const bool touching = distance < p_.radius[i];
     // (A moving wall may close in faster than the particles: no shortcut for it.)
     if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
