@@ -332,7 +332,7 @@ private:
     bool isEllipsoid(std::uint32_t i) const;
     bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
     void flushEllipsoids(PairList& list);
-    void laneContact(PairList& list, int l);
+    [[gnu::always_inline]] void laneContact(PairList& list, int l);
     void shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& xj,
                         ContactHistory history, const ShapedContactGeometry& g);
     [[gnu::noinline]] void shapedWall(PairList& list, std::size_t k, std::uint32_t i, const Wall& wall,

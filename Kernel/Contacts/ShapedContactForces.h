@@ -106,7 +106,7 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
 
 // Lane l's contact, computed in the lanes, applied (as shapedPairWith and shapedContact would).
 template <class Law>
-void ContactForceLoopInLanes<Law>::laneContact(PairList& list, int l) {
+inline void ContactForceLoopInLanes<Law>::laneContact(PairList& list, int l) {
     const EllipsoidContactBatch& b = ellipsoids_;
     const std::uint32_t i = b.i[l], j = b.j[l];
     list.history.setTouching(b.k[l], Vec3(b.sx[l], b.sy[l], b.sz[l]), b.fn[l],
