@@ -69,6 +69,33 @@ void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points, c
     }
 }
 
+// Contact segments: from start_ along segment_, the line integral of the kernel along the axis
+// (KernelProfile::lineIntegralAlongAxis), compiled once per shape.
+template <class Profile>
+void CoarseGrainer::scatterContactsAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
+                                             std::vector<double>& sums) const {
+    const int fields = layout_.count();
+    const int k = setup_.coordinates.kernelAxes()[0];
+    const double ak = setup_.width.a()[4 * k];
+    const double h = halfExtent_[k];
+    for (std::size_t c = 0; c < contactStart_.size(); ++c) {
+        const Vec3& segment = contactSegment_[c];
+        const double start = contactStart_[c][k], end = start + segment[k];
+        const auto [first, last] = byAxis.within(std::min(start, end) - h, std::max(start, end) + h);
+        double tensor[9];  // (once per contact, not per point)
+        contactTensor(c, tensor);
+        const double e = -ak * segment[k];
+        for (std::size_t j = first; j < last; ++j) {
+            const std::uint32_t p = byAxis.order[j];
+            const double line = profile_.lineIntegralAlongAxisOf<Profile>(ak * (points[p][k] - start), e);
+            if (line == 0) continue;
+            const double w = scale_ * line;
+            double* row = sums.data() + static_cast<std::size_t>(p) * fields + layout_.contactStressIndex();
+            for (int t = 0; t < 9; ++t) row[t] += w * tensor[t];
+        }
+    }
+}
+
 void CoarseGrainer::evaluateAlongOneAxis(const std::vector<Vec3>& points, std::vector<double>& sums) const {
     const int k = setup_.coordinates.kernelAxes()[0];
     const PointsAlongAxis byAxis(points, k);
@@ -78,28 +105,14 @@ void CoarseGrainer::evaluateAlongOneAxis(const std::vector<Vec3>& points, std::v
         case KernelShape::Heaviside: scatterParticlesAlongAxis<HeavisideShape>(points, byAxis, sums); break;
     }
     if (!setup_.contactStress) return;
-    const int fields = layout_.count();
-    const auto& a = setup_.width.a();
-    const double ak = a[4 * k];
-    const double h = halfExtent_[k];
-    // Contact segments: from start_ along segment_, the line integral of the kernel along the axis
-    // (KernelProfile::lineIntegralAlongAxis).
-    for (std::size_t c = 0; c < contactStart_.size(); ++c) {
-        const Vec3& segment = contactSegment_[c];
-        const double start = contactStart_[c][k], end = start + segment[k];
-        const auto [first, last] = byAxis.within(std::min(start, end) - h, std::max(start, end) + h);
-        double tensor[9];  // (once per contact, not per point)
-        contactTensor(c, tensor);
-        for (std::size_t j = first; j < last; ++j) {
-            const std::uint32_t p = byAxis.order[j];
-            const double line = profile_.lineIntegralAlongAxis(ak * (points[p][k] - start), -ak * segment[k]);
-            if (line == 0) continue;
-            const double w = scale_ * line;
-            double* row = sums.data() + static_cast<std::size_t>(p) * fields + layout_.contactStressIndex();
-            for (int t = 0; t < 9; ++t) row[t] += w * tensor[t];
-        }
+    switch (setup_.shape) {
+        case KernelShape::Lucy: scatterContactsAlongAxis<LucyShape>(points, byAxis, sums); break;
+        case KernelShape::Gauss: scatterContactsAlongAxis<GaussShape>(points, byAxis, sums); break;
+        case KernelShape::Heaviside: scatterContactsAlongAxis<HeavisideShape>(points, byAxis, sums); break;
     }
     // Boundary forces: the force at the contact point, spread by the kernel.
+    const int fields = layout_.count();
+    const double ak = setup_.width.a()[4 * k], h = halfExtent_[k];
     for (std::size_t c = 0; c < boundaryPoint_.size(); ++c) {
         const double at = boundaryPoint_[c][k];
         const auto [first, last] = byAxis.within(at - h, at + h);

@@ -87,6 +87,9 @@ private:
     template <class Profile>
     void scatterParticlesAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
                                    std::vector<double>& sums) const;
+    template <class Profile>
+    void scatterContactsAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
+                                  std::vector<double>& sums) const;
     // The tensor f (x) b of contact source c (row-major), and row[0..8] += weight * that tensor.
     void contactTensor(std::size_t c, double (&tensor)[9]) const;
     void addContactTensor(std::size_t c, double weight, double* row) const;

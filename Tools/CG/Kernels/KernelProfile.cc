@@ -153,25 +153,13 @@ double KernelProfile::lineIntegral(const double u0[3], const double e[3]) const 
     return normalisation_ * (lucyAntiderivative(tau1, m2) - lucyAntiderivative(tau0, m2)) / sqrtA;
 }
 
-// int_0^u f(t^2) dt: Lucy x - 2x^3 + 2x^4 - 3x^5/5 (0.4 at the cut-off 1, so c_1 = 5/4); Gauss
-// sqrt(pi/2) erf(x / sqrt 2); Heaviside x; with x = min(|u|, R) and the sign of u.
-double KernelProfile::axialAntiderivative(double u) const {
-    const double x = std::min(std::abs(u), cutoff_);
-    double g = x;
-    if (shape_ == KernelShape::Lucy) g = x * (1 + x * x * (-2 + x * (2 - 0.6 * x)));
-    if (shape_ == KernelShape::Gauss) g = std::sqrt(std::numbers::pi / 2) * std::erf(x * (std::numbers::sqrt2 / 2));
-    return std::copysign(g, u);
-}
-
 double KernelProfile::lineIntegralAlongAxis(double u0, double e) const {
-    const double u1 = u0 + e;
-    const double lo = std::max(std::min(u0, u1), -cutoff_), hi = std::min(std::max(u0, u1), cutoff_);
-    if (hi <= lo) return 0.0;
-    if (hi - lo < 1e-3) {  // (as lineIntegral's short intervals: a difference of nearly equal values)
-        const double point[3] = {u0, 0, 0}, segment[3] = {e, 0, 0};
-        return lineIntegral(point, segment);
+    switch (shape_) {
+        case KernelShape::Lucy: return lineIntegralAlongAxisOf<LucyShape>(u0, e);
+        case KernelShape::Gauss: return lineIntegralAlongAxisOf<GaussShape>(u0, e);
+        case KernelShape::Heaviside: break;
     }
-    return normalisation_ * (axialAntiderivative(hi) - axialAntiderivative(lo)) / std::abs(e);
+    return lineIntegralAlongAxisOf<HeavisideShape>(u0, e);
 }
 
 }  // namespace talus::cg

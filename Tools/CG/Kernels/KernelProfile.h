@@ -9,7 +9,11 @@
 //   Heaviside f = 1, R = 1, c_d = 1 / (volume of the unit ball): 1/2, 1/pi, 3/(4 pi)
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+
+#include "Kernels/RadialShapes.h"
 
 namespace talus::cg {
 
@@ -46,9 +50,24 @@ public:
     // or logarithm, about 4 times faster than lineIntegral. Short clipped intervals go to
     // lineIntegral, as there.
     double lineIntegralAlongAxis(double u0, double e) const;
+    // The same for a shape known when compiling (Kernels/RadialShapes.h), inlined into a loop
+    // over points (Fields/AlongOneAxis.cc): lineIntegralAlongAxis is this for the profile's shape.
+    template <class Shape>
+    double lineIntegralAlongAxisOf(double u0, double e) const {
+        const double u1 = u0 + e;
+        const double lo = std::max(std::min(u0, u1), -Shape::cutoff), hi = std::min(std::max(u0, u1), Shape::cutoff);
+        if (hi <= lo) return 0.0;
+        if (hi - lo < 1e-3) [[unlikely]] {  // (as lineIntegral's short intervals: a difference of nearly equal values)
+            const double point[3] = {u0, 0, 0}, segment[3] = {e, 0, 0};
+            return lineIntegral(point, segment);
+        }
+        // (G(u) / c_1 is odd and constant beyond the cut-off; lo and hi are clipped already.)
+        const double gHi = std::copysign(Shape::axialIntegral(std::abs(hi)), hi);
+        const double gLo = std::copysign(Shape::axialIntegral(std::abs(lo)), lo);
+        return normalisation_ * (gHi - gLo) / std::abs(e);
+    }
 
 private:
-    double axialAntiderivative(double u) const;  // G(u) / c_1, odd, constant beyond the cut-off
     double lucyAntiderivative(double tau, double m2) const;
 
     KernelShape shape_;
