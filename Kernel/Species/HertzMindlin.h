@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "Error.h"
 #include "Contacts/ContactHistory.h"
@@ -40,16 +41,26 @@ struct HertzMindlin {
         visit("characteristic velocity", law.characteristicVelocity);
     }
 
-    // Effective moduli from Young's modulus E and Poisson ratio nu of two equal materials.
-    static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {
-        require(youngsModulus > 0, "Young's modulus must be positive");
-        require(poissonRatio > -1 && poissonRatio < 0.5, "Poisson ratio must be in (-1, 0.5)");
+    // The effective moduli of two materials (Theory/ContactLaws.md eq. (20a)):
+    // 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2(1 + nu)).
+    static HertzMindlin betweenMaterials(double youngsModulus1, double poissonRatio1, double youngsModulus2,
+                                         double poissonRatio2, double restitution) {
+        for (const auto& [E, nu] : {std::pair{youngsModulus1, poissonRatio1}, std::pair{youngsModulus2, poissonRatio2}}) {
+            require(std::isfinite(E) && E > 0, "Young's modulus must be positive");
+            require(nu > -1 && nu < 0.5, "Poisson ratio must be in (-1, 0.5)");
+        }
+        const double shear1 = youngsModulus1 / (2 * (1 + poissonRatio1));
+        const double shear2 = youngsModulus2 / (2 * (1 + poissonRatio2));
         HertzMindlin law;
-        law.effectiveYoungsModulus = youngsModulus / (2 * (1 - poissonRatio * poissonRatio));
-        const double shearModulus = youngsModulus / (2 * (1 + poissonRatio));
-        law.effectiveShearModulus = shearModulus / (2 * (2 - poissonRatio));
+        law.effectiveYoungsModulus = 1 / ((1 - poissonRatio1 * poissonRatio1) / youngsModulus1 +
+                                          (1 - poissonRatio2 * poissonRatio2) / youngsModulus2);
+        law.effectiveShearModulus = 1 / ((2 - poissonRatio1) / shear1 + (2 - poissonRatio2) / shear2);
         law.restitution = restitution;
         return law;
+    }
+    // Two equal materials: E* = E / (2 (1 - nu^2)), G* = G / (2 (2 - nu)).
+    static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {
+        return betweenMaterials(youngsModulus, poissonRatio, youngsModulus, poissonRatio, restitution);
     }
 
     HertzMindlin& withFriction(double mu) { friction = mu; return *this; }
