@@ -216,7 +216,7 @@ void Simulation::initialise(bool restarted) {
     // a few ulps past it.
     require(c.endTime >= state_.time - 0.5 * c.timeStep,
             "end time " + str(c.endTime) + " lies before the current time " + str(state_.time));
-    scene_->validate(c.timeStep, c.largestStepFraction);
+    scene_->validate(c.timeStep, c.largestStepFraction, c.impactSpeed);
     work_->laws = state_.species.tables();
     if (state_.species.keepsRollingSprings()) state_.pairList.enableRollingSprings();
     ranks_->start(state_);

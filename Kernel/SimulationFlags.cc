@@ -38,8 +38,8 @@ Simulation::Simulation()
            "it only to study where the integration fails)",
            [&c](const std::string& v) { c.largestStepFraction = CommandLine::toDouble("largest-step-fraction", v); });
     cl.add("impact-speed", "V",
-           "for --dt auto: the largest impact speed expected, at which Hertzian collisions are timed (default: "
-           "each Hertzian law's characteristic velocity)",
+           "for --dt auto and the time-step check: the largest impact speed expected, at which Hertzian collisions "
+           "are timed (default: each Hertzian law's characteristic velocity)",
            [&c](const std::string& v) { c.impactSpeed = CommandLine::toDouble("impact-speed", v); });
     cl.add("output-interval", "T", "simulated time between saved frames (0: first and last)",
            [&c](const std::string& v) { c.outputInterval = CommandLine::toDouble("output-interval", v); });

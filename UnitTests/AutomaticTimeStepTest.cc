@@ -124,6 +124,34 @@ TEST(AutomaticTimeStep, HertzianLawsAtTheExpectedImpactSpeed) {
     }
 }
 
+// The check of a step given by hand times Hertzian pairs at --impact-speed too: a step of a
+// twentieth of the collision time at the law's own speed (1) passes, and at speed 100, where the
+// impact is 100^(1/5) = 2.5 times shorter, it is a eighth of it and refused.
+TEST(AutomaticTimeStep, HandGivenStepCheckedAtTheImpactSpeed) {
+    const HertzMindlin law = HertzMindlin::fromMaterial(1e7, 0.3, 0.8);
+    const double m = sphereMass(1, 0.5), tc = hertzCollisionTime(law.effectiveYoungsModulus, m / 2, 0.25, 1);
+    auto run = [&](std::vector<std::string> flags) {
+        SceneSimulation s;
+        s.setup = [&](SceneSimulation& sim) {
+            const auto a = sim.scene().addSpecies("grains", 1, law);
+            sim.scene().addParticle(Vec3(0, 0, 2), 0.5, a);
+            sim.scene().addParticle(Vec3(3, 0, 2), 0.5, a);
+        };
+        std::vector<std::string> all = {"--dt", str(tc / 20), "--end-time", str(tc), "--files", "off"};
+        all.insert(all.end(), flags.begin(), flags.end());
+        testing::internal::CaptureStdout();
+        try {
+            s.solveOrThrow(all);
+        } catch (...) {
+            testing::internal::GetCapturedStdout();
+            throw;
+        }
+        testing::internal::GetCapturedStdout();
+    };
+    EXPECT_NO_THROW(run({}));
+    expectError([&] { run({"--impact-speed", "100"}); }, {"larger than 0.1 x the shortest collision time"});
+}
+
 TEST(AutomaticTimeStep, RestartedRunKeepsTheStepItChose) {
     const std::string name = "AutomaticTimeStep";
     SceneSimulation first;

@@ -271,12 +271,12 @@ std::size_t Scene::slotOf(std::uint64_t id, bool ghosts) const {
     return static_cast<std::size_t>(it - ids.begin());
 }
 
-void Scene::validate(double timeStep, double largestStepFraction) const {
+void Scene::validate(double timeStep, double largestStepFraction, double impactSpeed) const {
     state_.species.validate();
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
     std::string which;
-    const double tc = shortestCollisionTime(&which);
+    const double tc = shortestCollisionTime(&which, impactSpeed);
     if (timeStep > largestStepFraction * tc)
         throw Error("time step " + str(timeStep) + " is larger than " + str(largestStepFraction) +
                     " x the shortest collision time " + str(tc) +

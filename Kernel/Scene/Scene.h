@@ -117,8 +117,9 @@ public:
     double automaticTimeStep(double stepsPerCollision, double impactSpeed = 0, std::string* reason = nullptr) const;
     // The whole scene, before a run starts: the species, the walls' species, and a time step
     // of at most largestStepFraction (RunSettings, --largest-step-fraction) of the shortest
-    // collision time (Theory/Integration.md eq. (12)).
-    void validate(double timeStep, double largestStepFraction) const;
+    // collision time (Theory/Integration.md eq. (12)), Hertzian contacts timed at impactSpeed as
+    // for --dt auto (--impact-speed; 0: at each law's characteristic velocity).
+    void validate(double timeStep, double largestStepFraction, double impactSpeed = 0) const;
 
 private:
     void requireMotion(int motion, const std::string& what) const;
