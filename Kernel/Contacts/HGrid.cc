@@ -10,7 +10,7 @@
 namespace talus {
 
 HGrid::HGrid(double cellSizeRatio) : cellSizeRatio_(cellSizeRatio) {
-    require(cellSizeRatio > 1, "HGrid cell size ratio must be greater than 1, got " + std::to_string(cellSizeRatio));
+    require(cellSizeRatio > 1, "HGrid cell size ratio must be greater than 1, got " + str(cellSizeRatio));
 }
 
 void HGrid::buildLevels(const ParticleStore& particles, const Domain& domain, double skin) {
@@ -32,8 +32,8 @@ void HGrid::buildLevels(const ParticleStore& particles, const Domain& domain, do
             // Theory/ContactLaws.md eq. (1)-(3) pairs use the nearest image, which is unique only
             // if no pair spans half the box.
             require(L >= 2 * maxDiameter, "periodic length along " + std::string(1, "xyz"[a]) + " (" +
-                                              std::to_string(L) + ") must be at least twice the largest interaction "
-                                              "diameter 2r + skin (" + std::to_string(maxDiameter) + ")");
+                                              str(L) + ") must be at least twice the largest interaction "
+                                              "diameter 2r + skin (" + str(maxDiameter) + ")");
             level.count[a] = std::max(1, static_cast<int>(std::floor(L / level.size)));
             level.cell[a] = L / level.count[a];
         }

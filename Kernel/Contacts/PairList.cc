@@ -79,7 +79,7 @@ bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& part
                     << "); the time step may be too large for the stiffest contact";
             throw Error(message.str());
         }
-        throw Error("blow-up at t = " + std::to_string(time) + ": a position or velocity is not finite");
+        throw Error("blow-up at t = " + str(time) + ": a position or velocity is not finite");
     }
     maxSpeed = std::sqrt(moves.speed2);
     return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach;

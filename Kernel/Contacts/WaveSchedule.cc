@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "Error.h"
+
 namespace talus {
 
 namespace {
@@ -40,7 +42,7 @@ std::optional<WaveCells> WaveCells::fit(const Domain& domain, double longestSepa
         const double cells = std::floor(domain.length(a) / longestSeparation);
         if (cells < least)
             return none(std::string("the box holds ") + std::to_string(static_cast<long>(cells)) + " cells along " +
-                        (a == 0 ? "x" : "y") + " of the longest listed separation " + std::to_string(longestSeparation) +
+                        (a == 0 ? "x" : "y") + " of the longest listed separation " + str(longestSeparation) +
                         "; waves of " + std::to_string(levels) + " steps need " + std::to_string(least));
         count[a] = static_cast<int>(std::min(cells, 1e6));
         c.width_[a] = domain.length(a) / count[a];

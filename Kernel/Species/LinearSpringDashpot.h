@@ -46,10 +46,10 @@ struct LinearSpringDashpot {
     // Theory/ContactLaws.md eq. (12) inverse formulas for a central collision of reduced mass m:
     // kn = m (pi^2 + ln(e)^2) / tc^2, gn = -2 m ln(e) / tc; and kt = 2/7 kn, gt = gn.
     static LinearSpringDashpot fromCollision(double collisionTime, double restitution, double reducedMass) {
-        require(collisionTime > 0, "collision time must be positive, got " + std::to_string(collisionTime));
+        require(collisionTime > 0, "collision time must be positive, got " + str(collisionTime));
         require(restitution > 0 && restitution <= 1,
-                "restitution must be in (0, 1], got " + std::to_string(restitution));
-        require(reducedMass > 0, "reduced mass must be positive, got " + std::to_string(reducedMass));
+                "restitution must be in (0, 1], got " + str(restitution));
+        require(reducedMass > 0, "reduced mass must be positive, got " + str(reducedMass));
         const double logE = std::log(restitution);
         LinearSpringDashpot law;
         law.normalStiffness = reducedMass * (pi * pi + logE * logE) / (collisionTime * collisionTime);
