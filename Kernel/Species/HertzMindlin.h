@@ -111,7 +111,9 @@ struct HertzMindlin {
     }
     double approachForce(const ContactKinematics&, ContactHistory&, double) const { return 0; }
 
-    ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
+    // (Inlined always, so that each lane form compiles it into its own force loop; out of line the
+    // linker keeps one copy, compiled for the baseline processor.)
+    [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
         const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);  // sqrt(R* dn)
         const double normalStiffness = 2 * effectiveYoungsModulus * contactRadius;   // Sn
         const double tangentialStiffness = 8 * effectiveShearModulus * contactRadius;  // St
