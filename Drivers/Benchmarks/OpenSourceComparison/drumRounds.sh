@@ -3,12 +3,14 @@
 # start file, materials, walls (Talus: smooth cylinder and planes; LIGGGHTS: the published
 # triangles) and time step, each run for --time seconds from t = 0, in alternating rounds pinned to
 # the first core, printing each round's particle-steps per second and their ratio.
-#   drumRounds.sh [build-dir] [rounds] [time] [os-benchmark folder]
+#   drumRounds.sh INPUTS [build-dir] [rounds] [time]
+# INPUTS: the comparison's published input folder (its Drum/PartCoordinates.txt and Drum/walls.txt).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-build=${1:-$here/../../../build}
-rounds=${2:-3} time=${3:-0.05}
-inputs=${4:-$here/../../../../shared/peers/os-benchmark}
+[ $# -ge 1 ] || { echo "usage: drumRounds.sh INPUTS [build-dir] [rounds] [time]" >&2; exit 2; }
+inputs=$1
+build=${2:-$here/../../../build}
+rounds=${3:-3} time=${4:-0.05}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python3 "$here/liggghts/comparisonInputs.py" data "$inputs/Drum/PartCoordinates.txt" "$work/drum.data" >/dev/null
