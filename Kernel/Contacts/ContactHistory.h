@@ -74,8 +74,8 @@ public:
         if (withRollingSprings_) [[unlikely]]
             rollingSprings_[k] = h.rollingSpring;
     }
-    // A contact that touches, written in place: the batched ellipsoid contacts (ContactForces.h)
-    // come with these numbers in lanes, and a whole ContactHistory put together on the stack and
+    // A contact that touches, written in place (its rolling spring, if kept, left as it is): the
+    // batched ellipsoid contacts (Contacts/ShapedContactForces.h) come with these numbers in lanes, and a whole ContactHistory put together on the stack and
     // copied stalled each contact on its own stores (a third of the time of applying them).
     [[gnu::always_inline]] void setTouching(std::size_t k, const Vec3& spring, double lastNormalForce,
                                             const Vec3& warmPoint, double warmMultiplier) {

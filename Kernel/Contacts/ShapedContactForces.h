@@ -44,7 +44,7 @@ void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std
 // |vi - vj| + |wi| ri + |wj| rj in fused multiply-adds.)
 template <class Law>
 inline bool ContactForceLoopInLanes<Law>::shapedPairStaysApart(PairList& list, std::size_t k, std::uint32_t i,
-                                                        std::uint32_t j) {
+                                                               std::uint32_t j) {
     if (list.history.state(k) != ContactHistory::approaching || !(list.history.gapBoundOf(k) > 0)) return false;
     const std::vector<double>& spin = list.spinScratch;
     const double closing =
