@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <string>
-#include <utility>
 
 #include "Error.h"
 #include "Contacts/ContactHistory.h"
@@ -45,10 +44,8 @@ struct HertzMindlin {
     // 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2(1 + nu)).
     static HertzMindlin betweenMaterials(double youngsModulus1, double poissonRatio1, double youngsModulus2,
                                          double poissonRatio2, double restitution) {
-        for (const auto& [E, nu] : {std::pair{youngsModulus1, poissonRatio1}, std::pair{youngsModulus2, poissonRatio2}}) {
-            require(std::isfinite(E) && E > 0, "Young's modulus must be positive");
-            require(nu > -1 && nu < 0.5, "Poisson ratio must be in (-1, 0.5)");
-        }
+        checkMaterial(youngsModulus1, poissonRatio1, "the first material");
+        checkMaterial(youngsModulus2, poissonRatio2, "the second material");
         const double shear1 = youngsModulus1 / (2 * (1 + poissonRatio1));
         const double shear2 = youngsModulus2 / (2 * (1 + poissonRatio2));
         HertzMindlin law;
@@ -57,6 +54,11 @@ struct HertzMindlin {
         law.effectiveShearModulus = 1 / ((2 - poissonRatio1) / shear1 + (2 - poissonRatio2) / shear2);
         law.restitution = restitution;
         return law;
+    }
+    // An elastic material Hertz's contact can take: E > 0, -1 < nu < 0.5 (`what` names it).
+    static void checkMaterial(double youngsModulus, double poissonRatio, const std::string& what) {
+        require(std::isfinite(youngsModulus) && youngsModulus > 0, what + ": Young's modulus must be positive");
+        require(poissonRatio > -1 && poissonRatio < 0.5, what + ": Poisson ratio must lie in (-1, 0.5)");
     }
     // Two equal materials: E* = E / (2 (1 - nu^2)), G* = G / (2 (2 - nu)).
     static HertzMindlin fromMaterial(double youngsModulus, double poissonRatio, double restitution) {

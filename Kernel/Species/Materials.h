@@ -49,10 +49,7 @@ public:
                 "material name '" + m.name + "': one word, not empty");
         require(index_.count(m.name) == 0, "material '" + m.name + "' is given twice");
         require(std::isfinite(m.density) && m.density > 0, "material '" + m.name + "': density must be positive");
-        require(std::isfinite(m.youngsModulus) && m.youngsModulus > 0,
-                "material '" + m.name + "': Young's modulus must be positive");
-        require(m.poissonRatio > -1 && m.poissonRatio < 0.5,
-                "material '" + m.name + "': Poisson ratio must lie in (-1, 0.5)");
+        HertzMindlin::checkMaterial(m.youngsModulus, m.poissonRatio, "material '" + m.name + "'");
         index_[m.name] = materials_.size();
         materials_.push_back(m);
         return materials_.size() - 1;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Error.h"
+#include "IO/InputNumbers.h"
 #include "Math/Vector.h"
 #include "Species/Materials.h"
 
@@ -37,25 +38,23 @@ struct StartParticle {
     Vec3 position;
 };
 
-// A start file: one header line, then "radius x y z" per line. Every value must be a finite
-// number and every radius positive; an error names the file and the line.
+// A start file: one header line, then "radius x y z" per line, read with the kernel's strict
+// numbers (IO/InputNumbers.h); a word that is not a finite number, a line of other than four
+// words or a radius that is not positive is an error naming the file and the line.
 inline std::vector<StartParticle> readStartParticles(const std::string& path) {
     std::ifstream in(path);
     require(static_cast<bool>(in), "cannot open the start file '" + path + "' (give its path with --start-file)");
+    InputPlace place("start file " + path);
     std::vector<StartParticle> particles;
-    std::string line;
-    std::getline(in, line);  // the header
-    for (int number = 2; std::getline(in, line); ++number) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    for (std::string line; std::getline(in, line); ++place.line) {
         std::istringstream fields(line);
-        StartParticle p{};
-        double x, y, z;
-        std::string extra;
-        const bool read = static_cast<bool>(fields >> p.radius >> x >> y >> z) && !(fields >> extra);
-        require(read && std::isfinite(p.radius) && std::isfinite(x) && std::isfinite(y) && std::isfinite(z) && p.radius > 0,
-                path + ":" + std::to_string(number) + ": expected four numbers 'radius x y z' with a positive radius, got '" +
-                    line + "'");
-        p.position = Vec3(x, y, z);
+        std::vector<std::string> words;
+        for (std::string word; fields >> word;) words.push_back(word);
+        if (place.line == 1 || words.empty()) continue;  // (the header)
+        if (words.size() != 4) place.fail("a particle is 4 numbers (radius x y z), found " + std::to_string(words.size()) + " words");
+        StartParticle p{place.real(words[0], "the radius"), Vec3::Zero()};
+        if (!(p.radius > 0)) place.fail("the radius must be positive, got " + str(p.radius));
+        for (int a = 0; a < 3; ++a) p.position[a] = place.real(words[1 + a], std::string("the ") + "xyz"[a]);
         particles.push_back(p);
     }
     require(!particles.empty(), "the start file '" + path + "' holds no particles");
