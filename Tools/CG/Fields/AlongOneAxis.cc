@@ -8,6 +8,7 @@
 // point alone get bitwise the same value. The terms are those of the general path
 // (Theory/CoarseGraining.md eq. (5)-(10)); only their order differs.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 
@@ -20,21 +21,41 @@ namespace talus::cg {
 struct PointsAlongAxis {
     std::vector<std::uint32_t> order;
     std::vector<double> along;
+    double first = 0, spacing = 0;  // a grid's points: along[j] near first + j spacing (else spacing 0)
 
     PointsAlongAxis(const std::vector<Vec3>& points, int axis) : order(points.size()), along(points.size()) {
         std::iota(order.begin(), order.end(), 0u);
         std::stable_sort(order.begin(), order.end(),
                          [&](std::uint32_t a, std::uint32_t b) { return points[a][axis] < points[b][axis]; });
         for (std::size_t j = 0; j < order.size(); ++j) along[j] = points[order[j]][axis];
+        if (along.size() < 2 || !(along.back() > along.front())) return;
+        first = along.front();
+        spacing = (along.back() - along.front()) / static_cast<double>(along.size() - 1);
+        for (std::size_t j = 0; j < along.size(); ++j) {
+            if (std::abs(along[j] - (first + static_cast<double>(j) * spacing)) > 0.25 * spacing) spacing = 0;
+        }
     }
 
     // The sorted indices [first, last) of the points in [lo, hi], widened by a few units of
     // round-off: the kernel itself decides at the ends, as on the general path.
     std::pair<std::size_t, std::size_t> within(double lo, double hi) const {
         const double slack = 1e-12 * std::max({std::abs(lo), std::abs(hi), hi - lo});
-        const auto first = std::lower_bound(along.begin(), along.end(), lo - slack);
-        const auto last = std::upper_bound(first, along.end(), hi + slack);
-        return {static_cast<std::size_t>(first - along.begin()), static_cast<std::size_t>(last - along.begin())};
+        const std::size_t begin = firstNotBelow(lo - slack);
+        std::size_t end = firstNotBelow(hi + slack);
+        while (end < along.size() && along[end] <= hi + slack) ++end;  // (the first above, as upper_bound)
+        return {begin, end};
+    }
+
+private:
+    // The first index j with along[j] >= value (std::lower_bound's): on a grid from a guess by
+    // arithmetic, moved to the exact place by comparisons, so the answer is bisection's.
+    std::size_t firstNotBelow(double value) const {
+        if (spacing == 0) return static_cast<std::size_t>(std::lower_bound(along.begin(), along.end(), value) - along.begin());
+        const double guess = std::ceil((value - first) / spacing);
+        std::size_t j = !(guess > 0) ? 0 : guess >= static_cast<double>(along.size()) ? along.size() : static_cast<std::size_t>(guess);
+        while (j > 0 && along[j - 1] >= value) --j;
+        while (j < along.size() && along[j] < value) ++j;
+        return j;
     }
 };
 
@@ -43,54 +64,112 @@ bool CoarseGrainer::alongOneAxis() const {
            setup_.width.isDiagonal();
 }
 
+namespace {
+
+// The weights of one source at the sorted points along[0, n): first in a loop without branches
+// (which the compiler turns into vector code), then added point by point.
+//
+// A particle at x: W1(q) with q = |a_k (r_k - x_k)|, times the scale; zero beyond the cut-off.
+template <class Profile>
+void particleWeights(const double* along, std::size_t n, double x, double ak, double scale, double* weight) {
+    for (std::size_t j = 0; j < n; ++j) {
+        const double q = std::abs(ak * (along[j] - x));
+        weight[j] = q < Profile::cutoff ? scale * Profile::ofDistance(q) : 0.0;
+    }
+}
+
+// A segment from `start` whose extent along the axis is e in widths: the line integral
+// KernelProfile::lineIntegralAlongAxisOf at each point, times the scale, with the ends clipped to
+// the support; the rare points whose clipped interval is short take that function's quadrature.
+template <class Profile>
+void segmentWeights(const KernelProfile& profile, const double* along, std::size_t n, double start, double ak,
+                    double e, double scale, double* weight) {
+    const double factor = scale * profile.normalisation() / std::abs(e);
+    for (std::size_t j = 0; j < n; ++j) {
+        const double u0 = ak * (along[j] - start), u1 = u0 + e;
+        // (Selections by value, not std::min and std::max, so that the loop has no branches.)
+        const double smaller = u1 < u0 ? u1 : u0, larger = u1 < u0 ? u0 : u1;
+        const double lo = smaller < -Profile::cutoff ? -Profile::cutoff : smaller;
+        const double hi = larger > Profile::cutoff ? Profile::cutoff : larger;
+        const double length = hi - lo;
+        // (G / c_1 is odd; beyond the support the value is not used.)
+        const double gHi = std::copysign(Profile::axialIntegral(std::abs(hi)), hi);
+        const double gLo = std::copysign(Profile::axialIntegral(std::abs(lo)), lo);
+        weight[j] = length > 0 ? factor * (gHi - gLo) : 0.0;
+    }
+    for (std::size_t j = 0; j < n; ++j) {  // (a second pass: a count in the first would stop its vector code)
+        const double u0 = ak * (along[j] - start);
+        const double length = std::min(std::max(u0, u0 + e), Profile::cutoff) - std::max(std::min(u0, u0 + e), -Profile::cutoff);
+        if (length > 0 && length < 1e-3) weight[j] = scale * profile.lineIntegralAlongAxisOf<Profile>(u0, e);
+    }
+}
+
+}  // namespace
+
 template <class Profile>
 void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
                                               std::vector<double>& sums) const {
-    const Profile shape;
-    const int fields = layout_.count();
+    const std::size_t fields = static_cast<std::size_t>(layout_.count());
     const int k = setup_.coordinates.kernelAxes()[0];
-    const auto& a = setup_.width.a();
+    const double ak = setup_.width.a()[4 * k];
     const double weightScale = scale_ * profile_.normalisation();
+    std::vector<double> weight(points.size());
+    static_assert(FieldSums::speciesDensity == 11, "the terms below fill the row up to the species densities");
     for (std::size_t i = 0; i < position_.size(); ++i) {
         const Vec3& x = position_[i];
         const auto [first, last] = byAxis.within(x[k] - halfExtent_[k], x[k] + halfExtent_[k]);
+        if (first == last) continue;
+        particleWeights<Profile>(byAxis.along.data() + first, last - first, x[k], ak, weightScale, weight.data());
+        // The particle's terms of FieldSums (m, V, m v, m v v), formed once and added at each
+        // point with its weight: a point costs eleven multiply-adds and the species' one.
         const Vec3& v = velocity_[i];
+        const double m = mass_[i];
+        const double terms[11] = {m,
+                                  volume_[i],
+                                  m * v[0],
+                                  m * v[1],
+                                  m * v[2],
+                                  m * v[0] * v[0],
+                                  m * v[0] * v[1],
+                                  m * v[0] * v[2],
+                                  m * v[1] * v[1],
+                                  m * v[1] * v[2],
+                                  m * v[2] * v[2]};
+        const int speciesColumn = FieldSums::speciesDensity + species_[i];
         for (std::size_t j = first; j < last; ++j) {
-            const std::uint32_t p = byAxis.order[j];
-            const Vec3& r = points[p];
-            // (A = diag(1/w) with zeros on the averaged axes: the general path's q^2 to the bit.)
-            const double u0 = a[0] * (r[0] - x[0]), u1 = a[4] * (r[1] - x[1]), u2 = a[8] * (r[2] - x[2]);
-            const double q2 = u0 * u0 + u1 * u1 + u2 * u2;
-            if (q2 >= Profile::cutoffSquared) continue;
-            const double w = weightScale * shape(q2);
-            const double mw = mass_[i] * w;
-            FieldSums::addParticle(sums.data() + static_cast<std::size_t>(p) * fields, mw, volume_[i] * w, v, species_[i]);
+            const double w = weight[j - first];
+            if (w == 0) continue;
+            double* row = sums.data() + byAxis.order[j] * fields;
+            for (int t = 0; t < 11; ++t) row[t] += w * terms[t];
+            row[speciesColumn] += w * m;
         }
     }
 }
 
 // Contact segments: from start_ along segment_, the line integral of the kernel along the axis
-// (KernelProfile::lineIntegralAlongAxis), compiled once per shape.
+// (KernelProfile::lineIntegralAlongAxis), compiled once per shape; the tensor is formed once per
+// segment.
 template <class Profile>
 void CoarseGrainer::scatterContactsAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
                                              std::vector<double>& sums) const {
-    const int fields = layout_.count();
+    const std::size_t fields = static_cast<std::size_t>(layout_.count());
     const int k = setup_.coordinates.kernelAxes()[0];
     const double ak = setup_.width.a()[4 * k];
     const double h = halfExtent_[k];
+    std::vector<double> weight(points.size());
     for (std::size_t c = 0; c < contactStart_.size(); ++c) {
         const Vec3& segment = contactSegment_[c];
         const double start = contactStart_[c][k], end = start + segment[k];
         const auto [first, last] = byAxis.within(std::min(start, end) - h, std::max(start, end) + h);
-        double tensor[9];  // (once per contact, not per point)
+        if (first == last) continue;
+        segmentWeights<Profile>(profile_, byAxis.along.data() + first, last - first, start, ak, -ak * segment[k], scale_,
+                                weight.data());
+        double tensor[9];
         contactTensor(c, tensor);
-        const double e = -ak * segment[k];
         for (std::size_t j = first; j < last; ++j) {
-            const std::uint32_t p = byAxis.order[j];
-            const double line = profile_.lineIntegralAlongAxisOf<Profile>(ak * (points[p][k] - start), e);
-            if (line == 0) continue;
-            const double w = scale_ * line;
-            double* row = sums.data() + static_cast<std::size_t>(p) * fields + layout_.contactStressIndex();
+            const double w = weight[j - first];
+            if (w == 0) continue;
+            double* row = sums.data() + byAxis.order[j] * fields + layout_.contactStressIndex();
             for (int t = 0; t < 9; ++t) row[t] += w * tensor[t];
         }
     }

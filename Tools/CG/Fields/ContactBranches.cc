@@ -38,10 +38,15 @@ void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contac
         order.emplace_back(contacts.eachContactOnce ? std::uint64_t{k} : pairKey, static_cast<std::uint32_t>(k));
     }
     if (!contacts.eachContactOnce) std::sort(order.begin(), order.end());
+    // (1/length once per frame, not a division per axis and contact.)
+    Vec3 length, inverseLength;
+    for (int k = 0; k < 3; ++k) {
+        length[k] = frame.box.length(k);
+        inverseLength[k] = length[k] > 0 ? 1 / length[k] : 0.0;
+    }
     auto minimumImage = [&](Vec3 d) {
         for (int k = 0; k < 3; ++k) {
-            const double length = frame.box.length(k);
-            if (length > 0) d[k] -= length * std::round(d[k] / length);
+            if (length[k] > 0) d[k] -= length[k] * std::round(d[k] * inverseLength[k]);
         }
         return d;
     };
