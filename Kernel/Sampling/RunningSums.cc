@@ -16,13 +16,9 @@ RunningSums::RunningSums(Simulation& simulation, const std::string& name, std::s
                               });
 }
 
-void RunningSums::addStepIntegral(std::size_t k, const Selection& selection, const ParticleQuantity& quantity) {
-    const ParticleStore& p = simulation_.scene().particles();
-    const double dt = simulation_.settings().timeStep;
-    double& part = unsummed_.at(k);
-    for (std::size_t i = 0; i < p.owned(); ++i)
-        if (selection(p, i)) part += quantity(p, i) * dt;
-}
+const ParticleStore& RunningSums::particles() const { return simulation_.scene().particles(); }
+
+double RunningSums::timeStep() const { return simulation_.settings().timeStep; }
 
 void RunningSums::sumParts() {
     simulation_.ranks().sum(unsummed_);
