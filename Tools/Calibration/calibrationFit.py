@@ -15,6 +15,9 @@ class FitError(Exception):
     """Too few points of a kind for a step of the fit; the message says what is missing."""
 
 
+PARAMETERS = ("delta1", "delta2", "A", "beta", "gamma")
+
+
 def hstop_model(theta_deg, delta1, delta2, a_d):
     """h_stop(theta) = A d (tan d2 - tan theta) / (tan theta - tan d1): the inverse of
     tan theta = tan d1 + (tan d2 - tan d1) / (h_stop / (A d) + 1) (Pouliquen and Forterre 2002)."""
@@ -114,12 +117,16 @@ def friction_law(h, froude, delta1, delta2, a_d, beta, gamma):
     return t1 + (t2 - t1) / (beta * np.asarray(h) / (a_d * (np.asarray(froude) + gamma)) + 1)
 
 
-def refine_jointly(h, rule, d, with_gamma):
+def refine_jointly(h, rule, d, with_gamma, held=None):
     """All parameters at once, from the h_stop estimates and the flowing points together: weighted
     least squares of log h_stop (each estimate weighted by its uncertainty, the half gap relative
     to h_stop, at least 2%) and of F (weighted by the rms residual of the separate flow-rule fit,
     at least 0.005). Near delta2 h_stop is below a particle and no depth brackets it, but the flows
-    there are fast and their F depends on h_stop(theta): the joint fit lets them pin delta2 down."""
+    there are fast and their F depends on h_stop(theta): the joint fit lets them pin delta2 down.
+
+    held: parameters kept at given values (names of PARAMETERS, A in units of d), the others fitted;
+    the returned misfit (the sum of the squared weighted residuals) then says how much worse the
+    data fit with them held than free."""
     estimates, used = h["estimates"], rule["used"]
     theta_h = np.array([e[0] for e in estimates])
     log_h = np.log([e[1] for e in estimates])
@@ -129,27 +136,49 @@ def refine_jointly(h, rule, d, with_gamma):
     sigma_f = max(float(np.sqrt(np.mean(rule["residuals"] ** 2))), 0.005)
     low, high = min(theta_h.min(), theta_f.min()), max(theta_h.max(), theta_f.max())
 
-    def residual(x):
-        delta1, delta2, a_d, beta, gamma = x if with_gamma else (*x, 0.0)
+    def residual(full):
+        delta1, delta2, a_d, beta, gamma = full
         on_curve = (np.log(hstop_model(theta_h, delta1, delta2, a_d)) - log_h) / sigma_h
         froude = (beta * depth / hstop_model(theta_f, delta1, delta2, a_d) - gamma - rule["F"]) / sigma_f
         return np.concatenate([on_curve, froude])
 
+    names = PARAMETERS if with_gamma else PARAMETERS[:4]
+    held = dict(held or {})
+    held_full = {k: (v * d if k == "A" else v) for k, v in held.items()}  # (A d, as the model takes it)
+    if not with_gamma:
+        held_full["gamma"] = 0.0
     start = [min(h["delta1"], low - 1e-3), max(h["delta2"], high + 1e-3), h["A"] * d, rule["beta"], rule["gamma"]]
     lower, upper = [0.01, high + 1e-6, 1e-6, 0, -np.inf], [low - 1e-6, 89.9, np.inf, np.inf, np.inf]
-    if not with_gamma:
-        start, lower, upper = start[:4], lower[:4], upper[:4]
+    if "delta1" in held_full and "delta2" not in held_full:  # (delta2 above every angle, delta1 below: as held)
+        lower[1] = max(lower[1], held_full["delta1"] + 1e-6)
+    if held_full.get("delta2", math.inf) <= high or held_full.get("delta1", -math.inf) >= low:
+        raise FitError(f"held delta1 and delta2 must lie below and above every angle of the points used ({low:g} to "
+                       f"{high:g} degrees), where the h_stop curve is defined; held: "
+                       + ", ".join(f"{k} = {v:g}" for k, v in held.items()))
+    free = [k for k in PARAMETERS if k not in held_full]
+    index = [PARAMETERS.index(k) for k in free]
+
+    def expand(x):
+        full = [held_full.get(k, 0.0) for k in PARAMETERS]
+        for i, v in zip(index, x):
+            full[i] = v
+        return full
+
     # (The separate fits may end outside the joint bounds, e.g. a negative beta from a resample
     # with few flowing points: start inside them.)
-    start = [min(max(v, lo + 1e-6 * max(1.0, abs(lo))), hi - 1e-6 * max(1.0, abs(hi))) if np.isfinite(hi) else max(v, lo)
-             for v, lo, hi in zip(start, lower, upper)]
-    x = least_squares(residual, start, bounds=(lower, upper)).x
-    delta1, delta2, a_d, beta = x[:4]
+    start = [min(max(start[i], lower[i] + 1e-6 * max(1.0, abs(lower[i]))), upper[i] - 1e-6 * max(1.0, abs(upper[i])))
+             if np.isfinite(upper[i]) else max(start[i], lower[i]) for i in index]
+    x = least_squares(lambda x: residual(expand(x)), start, bounds=([lower[i] for i in index], [upper[i] for i in index])).x \
+        if index else []
+    delta1, delta2, a_d, beta, gamma = expand(x)
+    misfit = float(np.sum(residual(expand(x)) ** 2))
     h = {"delta1": delta1, "delta2": delta2, "A": a_d / d, "estimates": estimates}
-    return h, fit_flow_rule(used, h, d, with_gamma, beta=beta, gamma=x[4] if with_gamma else 0.0)
+    rule = fit_flow_rule(used, h, d, with_gamma, beta=beta, gamma=gamma)
+    rule["misfit"], rule["residualCount"], rule["free"] = misfit, len(theta_h) + len(theta_f), [k for k in free if k in names]
+    return h, rule
 
 
-def fit_all(points, d=1.0, with_gamma=True):
+def fit_all(points, d=1.0, with_gamma=True, held=None):
     """The h_stop curve and the flow rule, each on its own and then jointly (refine_jointly), and
     the friction law's residuals at the flowing points (against their measured basal friction mu
     and against tan theta). Flowing layers thinner than an arrested one at their angle are left
@@ -157,20 +186,19 @@ def fit_all(points, d=1.0, with_gamma=True):
     points = set_aside_thin_flows(points)
     h = fit_hstop(points, d)
     rule = fit_flow_rule(points, h, d, with_gamma)
-    h, rule = refine_jointly(h, rule, d, with_gamma)
+    h, rule = refine_jointly(h, rule, d, with_gamma, held)
     used = rule["used"]
     predicted = friction_law([p["h"] for p in used], [p["F"] for p in used], h["delta1"], h["delta2"], h["A"] * d,
                              rule["beta"], rule["gamma"])
     tan_theta = np.tan(np.radians([p["angle"] for p in used]))
     return {"delta1": h["delta1"], "delta2": h["delta2"], "A": h["A"], "beta": rule["beta"], "gamma": rule["gamma"],
             "hstop": h, "rule": rule, "muPredicted": predicted, "muResidualTan": predicted - tan_theta,
-            "muMeasured": np.array([p["mu"] for p in used])}
+            "muMeasured": np.array([p["mu"] for p in used]), "misfit": rule["misfit"],
+            "residualCount": rule["residualCount"], "free": rule["free"]}
 
 
-PARAMETERS = ("delta1", "delta2", "A", "beta", "gamma")
 
-
-def bootstrap(points, d=1.0, with_gamma=True, replicates=200, seed=1, level=0.95):
+def bootstrap(points, d=1.0, with_gamma=True, replicates=200, seed=1, level=0.95, held=None):
     """Percentile intervals of the parameters from fits to the points resampled with replacement.
     Resamples for which a step has too few points are counted and left out."""
     rng = np.random.default_rng(seed)
@@ -179,7 +207,7 @@ def bootstrap(points, d=1.0, with_gamma=True, replicates=200, seed=1, level=0.95
     for _ in range(replicates):
         sample = [points[i] for i in rng.integers(0, len(points), len(points))]
         try:
-            fit = fit_all(sample, d, with_gamma)
+            fit = fit_all(sample, d, with_gamma, held)
         except FitError:
             failed += 1
             continue

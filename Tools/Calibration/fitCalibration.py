@@ -4,7 +4,8 @@
 arrested/flowing boundary, the flow rule (beta, gamma), the friction law's residuals, bootstrap
 intervals, plots, and the parameters next to the thesis's Table 3.1.
 
-    Tools/Calibration/fitCalibration.py /work/studies/calibration/results.csv --plots /work/studies/calibration/fit
+    Tools/Calibration/fitCalibration.py DIR/results.csv --plots DIR/fit
+    Tools/Calibration/fitCalibration.py DIR/results.csv --species large --hold delta2=30.06,A=3.07
 """
 import argparse
 import math
@@ -57,16 +58,24 @@ def plot(points, fit, d, prefix, table=None):
     ax.set_ylim(0, 1.2 * max(p["h"] for p in points))
     paths.append(save(fig, ax, "angle (degrees)", "h (large diameters)", prefix + "-hstop.png"))
 
-    fig, ax = plt.subplots(figsize=(5, 4))
+    # The collapse, and below it the residuals F - (beta h/h_stop - gamma) of the fit.
+    fig, (ax, below) = plt.subplots(2, 1, figsize=(5, 5.5), sharex=True, gridspec_kw={"height_ratios": [3, 1.3]})
     rule = fit["rule"]
     angles = [p["angle"] for p in rule["used"]]
     scatter = ax.scatter(rule["x"], rule["F"], c=angles, cmap="viridis")
-    fig.colorbar(scatter, label="angle (degrees)")
+    fig.colorbar(scatter, ax=[ax, below], label="angle (degrees)")
     x = np.linspace(0, 1.1 * max(rule["x"]), 50)
     ax.plot(x, beta * x - gamma, "k-", label=f"F = {beta:.3f} h/h_stop {-gamma:+.3f}")
-    paths.append(save(fig, ax, "h / h_stop(theta)", "F", prefix + "-flowrule.png"))
+    ax.set_ylabel("F")
+    ax.legend(fontsize=8)
+    below.scatter(rule["x"], rule["residuals"], c=angles, cmap="viridis", s=14)
+    below.axhline(0, color="k", lw=0.8)
+    below.set_xlabel("h / h_stop(theta)")
+    below.set_ylabel("residual of F")
+    paths.append(prefix + "-flowrule.png")
+    fig.savefig(paths[-1], dpi=120)
 
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9, 4))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
     used = rule["used"]
     h = np.array([p["h"] for p in used])
     froude = np.array([p["F"] for p in used])
@@ -80,13 +89,28 @@ def plot(points, fit, d, prefix, table=None):
         right.plot(h_axis, cf.friction_law(h_axis, value, d1, d2, a_d, beta, gamma), lw=0.8, label=f"law, F = {value}")
     for a in (left, right):
         a.set_ylabel("mu")
-        a.legend(fontsize=7)
+        a.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     left.set_xlabel("F")
     right.set_xlabel("h")
     fig.tight_layout()
     paths.append(prefix + "-friction.png")
     fig.savefig(paths[-1], dpi=120)
     return paths
+
+
+def parse_held(text):
+    """--hold NAME=VALUE,...: a dict of parameters to keep fixed; a name not among the parameters,
+    or a value that is not a number, stops with a message naming it."""
+    held = {}
+    for item in filter(None, (t.strip() for t in text.split(","))):
+        name, _, value = item.partition("=")
+        if name not in cf.PARAMETERS:
+            raise cf.FitError(f"--hold {item}: no parameter {name!r} (one of {', '.join(cf.PARAMETERS)})")
+        try:
+            held[name] = float(value)
+        except ValueError:
+            raise cf.FitError(f"--hold {item}: the value of {name} is not a number") from None
+    return held
 
 
 def main():
@@ -103,13 +127,18 @@ def main():
                              "the bulk's solid fraction; Documentation/Calibration.md, accounts (c)); default 0")
     parser.add_argument("--bootstrap", type=int, default=200, help="resamples for the intervals (default 200)")
     parser.add_argument("--plots", help="prefix of the plots PREFIX-hstop.png, -flowrule.png, -friction.png")
+    parser.add_argument("--hold", default="",
+                        help="NAME=VALUE,...: parameters (delta1, delta2, A in units of d, beta, gamma) kept at these "
+                             "values while the others are fitted; the misfit is compared with the free fit's")
     args = parser.parse_args()
     try:
+        held = parse_held(args.hold)
         points = cf.read_points(args.results, args.species, args.max_change, args.height_offset)
         species = points[0]["species"]
         d = args.diameter or (SMALL_DIAMETER if species == "small" else 1.0)
-        fit = cf.fit_all(points, d, not args.no_gamma)
-        intervals, failed = cf.bootstrap(points, d, not args.no_gamma, args.bootstrap)
+        fit = cf.fit_all(points, d, not args.no_gamma, held)
+        intervals, failed = cf.bootstrap(points, d, not args.no_gamma, args.bootstrap, held=held)
+        free = cf.fit_all(points, d, not args.no_gamma) if held else fit
     except (cf.FitError, OSError) as error:
         sys.exit(f"fitCalibration: {error}")
     kinds = ("flowing", "arrested", "unsteady", "undecided", "thin-flowing")
@@ -124,7 +153,15 @@ def main():
     for k in cf.PARAMETERS:
         low, high = intervals[k]
         table = f"{seed[k]:.4g}" if k in seed else "-"
-        print(f"{k:<10}{fit[k]:>10.4g}   [{low:8.4g}, {high:8.4g}]{table:>12}")
+        interval = "   (held)" + " " * 13 if k in held else f"   [{low:8.4g}, {high:8.4g}]"
+        print(f"{k:<10}{fit[k]:>10.4g}{interval}{table:>12}")
+    if held:
+        # (Weighted residuals: log h_stop by its bracket, F by the flow rule's rms residual.)
+        dof = free["residualCount"] - len(free["free"])
+        print(f"misfit (sum of squared weighted residuals, {fit['residualCount']} residuals): {fit['misfit']:.4g} with "
+              + ", ".join(f"{k} = {v:g}" for k, v in held.items()) + f" held, {free['misfit']:.4g} with all free "
+              f"(per degree of freedom of the free fit: {free['misfit'] / max(dof, 1):.3g}); free fit: "
+              + ", ".join(f"{k} = {free[k]:.4g}" for k in cf.PARAMETERS))
     print(f"(bootstrap: {args.bootstrap - failed} of {args.bootstrap} resamples fitted)")
     rule = fit["rule"]
     rms = math.sqrt(sum(r * r for r in rule["residuals"]) / len(rule["residuals"]))

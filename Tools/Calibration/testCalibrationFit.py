@@ -154,6 +154,39 @@ with tempfile.TemporaryDirectory() as folder:
     except cf.FitError as error:
         check("--height-offset 50" in str(error), f"height offset 50: refused saying {str(error)!r}")
 
+# Parameters held (fitCalibration.py --hold): held at the truth the misfit is the free fit's
+# within its noise (two fewer free parameters: the least squares cannot do better than free, and
+# the truth fits the synthetic points); held 5 degrees off in delta2 with A at the truth, far worse;
+# held below an angle of the points (where the curve is not defined), refused.
+truth_study = synthetic_study(large, 1.0, np.linspace(large["delta1"] + 1.5, large["delta2"] - 1.5, 9), 28, seed=7)
+free = cf.fit_all(truth_study)
+at_truth = cf.fit_all(truth_study, held={"delta2": large["delta2"], "A": large["A"]})
+off = cf.fit_all(truth_study, held={"delta2": large["delta2"] + 5, "A": large["A"]})
+try:
+    cf.fit_all(truth_study, held={"delta2": large["delta2"] - 5})
+    check(False, "delta2 held below an angle of the points: refused")
+except cf.FitError as error:
+    check("held delta1 and delta2" in str(error), f"delta2 held below an angle of the points: refused saying {str(error)!r}")
+check(at_truth["delta2"] == large["delta2"] and at_truth["A"] == large["A"], "held parameters keep their values")
+check(free["misfit"] <= at_truth["misfit"] * (1 + 1e-9), f"holding cannot fit better than free ({free['misfit']:.4g} "
+                                                         f"<= {at_truth['misfit']:.4g})")
+check(at_truth["misfit"] < 1.25 * free["misfit"],
+      f"held at the truth: misfit {at_truth['misfit']:.4g} within 25% of the free fit's {free['misfit']:.4g}")
+check(off["misfit"] > 5 * at_truth["misfit"], f"delta2 held 5 degrees high: misfit {off['misfit']:.4g} far above "
+                                              f"{at_truth['misfit']:.4g}")
+import importlib.util  # noqa: E402
+spec = importlib.util.spec_from_file_location("fitCalibration", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                                              "fitCalibration.py"))
+tool = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(tool)
+check(tool.parse_held("delta2=30.06, A=3.07") == {"delta2": 30.06, "A": 3.07}, "--hold read")
+for text, words in (("delta3=1", ["delta3", "delta1"]), ("A=big", ["A=big", "not a number"])):
+    try:
+        tool.parse_held(text)
+        check(False, f"--hold {text}: refused")
+    except cf.FitError as error:
+        check(all(w in str(error) for w in words), f"--hold {text}: refused saying {str(error)!r}")
+
 if failures:
     sys.exit(f"calibration fit: {len(failures)} checks failed")
 print("calibration fit: all checks passed")
