@@ -137,10 +137,15 @@ def main():
         species = points[0]["species"]
         d = args.diameter or (SMALL_DIAMETER if species == "small" else 1.0)
         fit = cf.fit_all(points, d, not args.no_gamma, held)
-        intervals, failed = cf.bootstrap(points, d, not args.no_gamma, args.bootstrap, held=held)
         free = cf.fit_all(points, d, not args.no_gamma) if held else fit
     except (cf.FitError, OSError) as error:
         sys.exit(f"fitCalibration: {error}")
+    # (A study with few points near the curve still has a fit; it says why it has no intervals.)
+    try:
+        intervals, failed = cf.bootstrap(points, d, not args.no_gamma, args.bootstrap, held=held)
+    except cf.FitError as error:
+        print(f"fitCalibration: no intervals: {error}")
+        intervals, failed = {k: (math.nan, math.nan) for k in cf.PARAMETERS}, args.bootstrap
     kinds = ("flowing", "arrested", "unsteady", "undecided", "thin-flowing")
     counts = {s: sum(p["state"] == s for p in cf.set_aside_thin_flows(points)) for s in kinds}
     print(f"{len(points)} points of {species} (d = {d:.4g}): {counts['flowing']} flowing, {counts['arrested']} arrested, "
