@@ -175,7 +175,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
 
 // A restarted run continues the saved one: the flags that would make it another run are refused
 // when they contradict the restart file (Documentation/FileFormats/restart.md, "What a restart
-// keeps"). The time step changes the discretisation; --id-ordered-sums promises results that
+// keeps"). The time step changes the discretisation, and so does the tolerance of superquadric
+// contacts (--shape-tolerance); --id-ordered-sums promises results that
 // are the same to the bit on any number of ranks, which a run that changes it halfway keeps on
 // neither side. The other settings that change the sums' order (skin, HGrid, reorder, relist,
 // waves) change only round-off and may be changed, as the number of ranks may.
@@ -192,6 +193,8 @@ void Simulation::refuseContradictions(const RunSettings& saved, const std::strin
         return std::string(b);
     };
     if (now.timeStep != saved.timeStep) refuse("dt", text(now.timeStep), text(saved.timeStep));
+    if (now.shapeTolerance != saved.shapeTolerance)
+        refuse("shape-tolerance", text(now.shapeTolerance), text(saved.shapeTolerance));
     if (now.idOrderedSums != saved.idOrderedSums)
         refuse("id-ordered-sums", now.idOrderedSums ? "on" : "off", saved.idOrderedSums ? "on" : "off");
 }
@@ -324,7 +327,7 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
             [&](const auto& laws) {
                 addContactForces(p, state_.pairList, state_.walls, state_.motions, laws, state_.domain,
                                  state_.settings.timeStep, state_.pairList.maxSpeed, work.previousForce, work.summary,
-                                 records, &state_.shapes, perPair);
+                                 records, &state_.shapes, perPair, {.tolerance = state_.settings.shapeTolerance});
             },
             work.laws);
     }

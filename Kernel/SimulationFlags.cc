@@ -47,6 +47,10 @@ Simulation::Simulation()
            [&c](const std::string& v) { c.name = v; });
     cl.add("restart", "FILE", "continue the run saved in FILE (a .restart file)",
            [this](const std::string& v) { run_->restartFile_ = v; });
+    cl.add("shape-tolerance", "T",
+           "Newton tolerance of the superquadric contacts, relative to the smaller bounding radius (default 1e-10; "
+           "Theory/Superquadrics.md, Convergence)",
+           [&c](const std::string& v) { c.shapeTolerance = CommandLine::toDouble("shape-tolerance", v); });
     cl.add("skin", "S", "neighbour-list skin distance",
            [&c](const std::string& v) { c.skin = CommandLine::toDouble("skin", v); });
     cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",

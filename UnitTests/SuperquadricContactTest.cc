@@ -4,6 +4,7 @@
 // few hundred per class.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 #include "SuperquadricReference.h"
@@ -142,5 +143,45 @@ TEST(SuperquadricContact, PlanBAloneAgreesWithTheIndependentReference) {
         EXPECT_LT(worstOverlap, 1e-6) << name(kind);
         EXPECT_LT(worstNormal, 1e-6) << name(kind);
         EXPECT_LT(worstPoint, 1e-6) << name(kind);
+    }
+}
+
+// The tolerance (SuperquadricContactSettings, --shape-tolerance; Theory/Superquadrics.md
+// "Convergence"): a lasting contact followed step by step, warm-started at each tolerance T,
+// against the same contact solved to 1e-14. The convergence test promises an error of order
+// T x scale in the contact point, so the overlap and the normal may differ by about that and no
+// more (a margin of 10); and the looser T, the fewer iterations.
+TEST(SuperquadricContact, ToleranceBoundsTheErrorOfAWarmStartedContact) {
+    const SuperquadricContactSettings reference{.tolerance = 1e-14};
+    std::mt19937_64 random(11);
+    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::blocky}) {
+        double iterationsBefore = 1e9;
+        for (double tolerance : {1e-10, 1e-8, 1e-6}) {
+            std::mt19937_64 same(17);
+            reference::Configuration c = reference::randomConfiguration(kind, same);
+            c.j.centre += 0.06 * (c.i.centre - c.j.centre).normalized() * c.shapeJ.semiAxes().minCoeff();
+            const double scale = std::min(c.shapeI.boundingRadius(), c.shapeJ.boundingRadius());
+            SuperquadricContact last = findSuperquadricContact(c.i, c.j, nullptr, reference);
+            ASSERT_TRUE(last.converged && last.touching) << name(kind);
+            const Mat3 turn = Eigen::AngleAxisd(2e-3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+            double worstOverlap = 0, worstNormal = 0, iterations = 0;
+            for (int step = 0; step < 100; ++step) {
+                c.j.centre += Vec3(2e-4, -3e-4, 1e-4);  // (about 1e-3 of a radius a step, as in a flow)
+                c.j.rotation = turn * c.j.rotation;
+                const SuperquadricContact loose = findSuperquadricContact(c.i, c.j, &last.solution, {.tolerance = tolerance});
+                const SuperquadricContact tight = findSuperquadricContact(c.i, c.j, &last.solution, reference);
+                ASSERT_TRUE(loose.converged && tight.converged && tight.touching) << name(kind);
+                worstOverlap = std::max(worstOverlap, std::abs(loose.overlap - tight.overlap) / scale);
+                worstNormal = std::max(worstNormal, (loose.normal - tight.normal).norm());
+                iterations += loose.iterations;
+                last = loose;
+            }
+            EXPECT_LE(worstOverlap, 10 * tolerance) << name(kind) << " T = " << tolerance;
+            EXPECT_LE(worstNormal, 10 * tolerance) << name(kind) << " T = " << tolerance;
+            EXPECT_LE(iterations, iterationsBefore) << name(kind) << " T = " << tolerance;
+            iterationsBefore = iterations;
+            std::printf("%s T = %g: overlap error %.2g scale, normal error %.2g, %.2f iterations a step\n",
+                        name(kind), tolerance, worstOverlap, worstNormal, iterations / 100);
+        }
     }
 }

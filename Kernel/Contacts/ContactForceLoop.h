@@ -60,7 +60,7 @@ public:
     explicit ContactForceLoopInLanes(const ContactForceLoopArguments<Law>& a)
         : p_(a.p), laws_(a.laws), dt_(a.dt), closing_(2 * a.maxSpeed * a.dt), previousForce_(a.previousForce),
           summary_(a.summary), records_(a.records), shapes_(a.p.hasShapes() ? a.shapes : nullptr),
-          perPair_(a.perPair), prefetchPartners_(a.p.size() >= prefetchFromParticles) {
+          perPair_(a.perPair), shapeSettings_(a.shapeSettings), prefetchPartners_(a.p.size() >= prefetchFromParticles) {
         if constexpr (Law::rollingResistance)
             require(!shapes_, std::string("the contact law ") + Law::name +
                                   " (rolling resistance) is for spheres; this scene has superquadric particles");
@@ -465,6 +465,7 @@ private:
     ContactRecords* records_;
     const std::vector<Superquadric>* shapes_;  // null in scenes of spheres only
     PairContribution* perPair_;  // non-null: pair forces kept for sums in id order (IdOrderedForceSums.h)
+    const SuperquadricContactSettings shapeSettings_;  // the Newton solve of superquadric pairs (--shape-tolerance)
     const bool prefetchPartners_;  // a large scene: the contact pass asks for its partners' data ahead
     std::size_t currentPair_ = 0;
     EllipsoidContactBatch ellipsoids_;  // (scenes with shapes only)

@@ -13,6 +13,7 @@
 #include "Contacts/IdOrderedForceSums.h"
 #include "Contacts/PairList.h"
 #include "Contacts/PairSweep.h"
+#include "Contacts/SuperquadricContact.h"
 #include "Contacts/WaveSchedule.h"
 #include "Particles/ParticleStore.h"
 #include "Shapes/Superquadric.h"
@@ -36,6 +37,7 @@ struct ContactForceLoopArguments {
     ContactRecords* records;
     const std::vector<Superquadric>* shapes;
     PairContribution* perPair;
+    SuperquadricContactSettings shapeSettings;  // the Newton solve of superquadric pairs
 };
 
 // The force loop of one lane form (Contacts/ContactForceLoop.h ContactForceLoopInLanes), of any
@@ -88,8 +90,10 @@ class ContactForceLoop {
 public:
     ContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt, double maxSpeed,
                      const std::vector<Vec3>& previousForce, ContactSummary& summary, ContactRecords* records,
-                     const std::vector<Superquadric>* shapes = nullptr, PairContribution* perPair = nullptr)
-        : loop_(makeContactForceLoop<Law>({p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair})) {}
+                     const std::vector<Superquadric>* shapes = nullptr, PairContribution* perPair = nullptr,
+                     const SuperquadricContactSettings& shapeSettings = {})
+        : loop_(makeContactForceLoop<Law>(
+              {p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair, shapeSettings})) {}
 
     // nearPairs: the near list may be swept (not with particles on prescribed motions, whose
     // positions the step sets apart from their velocities).
@@ -122,7 +126,7 @@ template <class Law>
 std::unique_ptr<AnyContactForceLoop> sphereContactForceLoop(ParticleStore& p, const PairTable<Law>& laws, double dt,
                                                             const std::vector<Vec3>& previousForce,
                                                             ContactSummary& summary) {
-    return makeContactForceLoop<Law>({p, laws, dt, 0, previousForce, summary, nullptr, nullptr, nullptr});
+    return makeContactForceLoop<Law>({p, laws, dt, 0, previousForce, summary, nullptr, nullptr, nullptr, {}});
 }
 
 // The forces of one step: the listed pairs, the one-way pairs, the wall candidates.
@@ -131,9 +135,9 @@ void addContactForces(ParticleStore& p, PairList& list, const std::vector<Wall>&
                       const std::vector<PrescribedMotion>& motions, const PairTable<Law>& laws, const Domain& domain,
                       double dt, double maxSpeed, const std::vector<Vec3>& previousForce, ContactSummary& summary,
                       ContactRecords* records, const std::vector<Superquadric>* shapes = nullptr,
-                      PairContribution* perPair = nullptr) {
-    addContactForcesInLanes<Law>({p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair}, list,
-                                 walls, motions, domain);
+                      PairContribution* perPair = nullptr, const SuperquadricContactSettings& shapeSettings = {}) {
+    addContactForcesInLanes<Law>({p, laws, dt, maxSpeed, previousForce, summary, records, shapes, perPair, shapeSettings},
+                                 list, walls, motions, domain);
 }
 
 }  // namespace talus

@@ -29,7 +29,8 @@ void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std
         }
     }
     shapedPairWith(list, k, i, j, xj, history,
-                   shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius));
+                   shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, Law::usesEffectiveRadius,
+                                      shapeSettings_));
 }
 
 // A pair apart keeps a lower bound of its gap (ShapedContactGeometry::gapBound) and lowers it
@@ -68,7 +69,7 @@ template <class Law>
 void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
     EllipsoidContactBatch& b = ellipsoids_;
     if (b.count == 0) return;
-    b.compute(SuperquadricContactSettings{}.tolerance);
+    b.compute(shapeSettings_.tolerance);
     bool forcesInLanes = false;
     if constexpr (Law::batched) {
         forcesInLanes = !records_;
@@ -88,7 +89,7 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
         if (b.done[l] == 0) {
             const ContactHistory history = list.history.get(b.k[l]);
             shapedPairWith(list, b.k[l], i, j, xj, history,
-                           shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false));
+                           shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false, shapeSettings_));
         } else if (forcesInLanes) {
             laneContact(list, l);
         } else {

@@ -76,13 +76,14 @@ inline const PlacedSuperquadric& placed(const ParticleStore& p, const std::vecto
 // The curvatures are evaluated only if the law needs the effective radius (`withRadius`).
 inline ShapedContactGeometry shapedPairGeometry(const ParticleStore& p, const std::vector<PlacedSuperquadric>& frames,
                                                 std::size_t i, std::size_t j, const Vec3& xj,
-                                                const ContactHistory& history, bool withRadius) {
+                                                const ContactHistory& history, bool withRadius,
+                                                const SuperquadricContactSettings& settings = {}) {
     std::optional<Superquadric> sphereI, sphereJ;
     std::optional<PlacedSuperquadric> movedI, movedJ;
     const PlacedSuperquadric& a = placed(p, frames, i, p.position[i], movedI, sphereI);
     const PlacedSuperquadric& b = placed(p, frames, j, xj, movedJ, sphereJ);
     SuperquadricContactPoint start{p.position[i] + history.warmPoint, history.warmMultiplier};
-    const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr);
+    const SuperquadricContact c = findSuperquadricContact(a, b, history.warmMultiplier > 0 ? &start : nullptr, settings);
     ShapedContactGeometry g;
     g.converged = c.converged;
     g.touching = c.touching;

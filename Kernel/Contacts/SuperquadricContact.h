@@ -53,19 +53,22 @@ struct SuperquadricContactPoint {
     double multiplier = 1;
 };
 
-// The Newton solve's convergence test after a step (SuperquadricContact.cc): the step was small
-// and the residual is, or the residual alone is a hundred times below the tolerance (Newton's
-// next step would be smaller still: a warm start then ends after one iteration). `mismatch` is
-// Fi - Fj, `gradientResidual2` the squared first three components of Phi, `step2` the squared
-// length of the step taken. Branch-free, so that the ellipsoid lanes (EllipsoidContactBatch.h)
-// share it with the scalar solve.
+// The Newton solve's convergence test after a step (SuperquadricContact.cc): the residual at the
+// new point is within the tolerance and the step that led there was below sqrt(tolerance) x
+// scale, or the residual alone is a hundred times below the tolerance. Newton's method converges
+// quadratically (Theory/Superquadrics.md "Convergence"): after a step s the error is of order
+// |s|^2 / scale, so a step of sqrt(tolerance) scale leaves an error of order tolerance x scale, the
+// accuracy the residual test asks for; a warm start that moved by less than that ends after one
+// iteration. `mismatch` is Fi - Fj, `gradientResidual2` the squared first three components of Phi,
+// `step2` the squared length of the step taken. Branch-free, so that the ellipsoid lanes
+// (EllipsoidContactBatch.h) share it with the scalar solve.
 [[gnu::always_inline]] inline bool newtonConverged(double mismatch, double gradientResidual2, double gradientLengthI,
                                                    double step2, double scale, double tolerance) {
     const double tolerance2 = tolerance * tolerance, gradientScale = 1 + scale * gradientLengthI;
     const double limit2 = tolerance2 * gradientScale * gradientScale;
     const bool residualSmall = (std::abs(mismatch) <= tolerance) & (gradientResidual2 <= limit2);
     const bool residualTiny = (std::abs(mismatch) <= 0.01 * tolerance) & (gradientResidual2 <= 1e-4 * limit2);
-    return (residualSmall & (step2 <= tolerance2 * scale * scale)) | residualTiny;
+    return (residualSmall & (step2 <= tolerance * scale * scale)) | residualTiny;
 }
 
 // The positive root t of c + 2 b t + a t^2 = 0 (a > 0, c < 0: from inside an ellipsoid to its
@@ -79,7 +82,7 @@ struct SuperquadricContactPoint {
 }
 
 struct SuperquadricContactSettings {
-    double tolerance = 1e-10;   // relative: |dX| / (bounding radius) and |Fi - Fj|
+    double tolerance = 1e-10;   // relative: |Fi - Fj|, the gradient residual, and the error of X / (bounding radius)
     int maxIterations = 50;     // per Newton solve
 };
 

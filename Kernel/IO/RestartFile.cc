@@ -22,6 +22,7 @@ namespace {
 // The keys, the version and the fields talus-cg reads by position: Formats/RestartFormat.h.
 namespace key = formats::restart::key;
 constexpr int formatVersion = formats::restart::version;
+constexpr const char* shapeToleranceValue = "settings.shapeTolerance";
 constexpr const char* item = formats::restart::itemIndent;
 
 class Writer {
@@ -258,7 +259,12 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         w.key(key::output) << s.output.savedFrames << s.output.dataBytes << s.output.fstatBytes << s.output.eneBytes
                         << std::uint64_t(s.output.frameTimes.size()); w.end();
         for (double t : s.output.frameTimes) { w.key(item) << t; w.end(); }
-        w.key(key::values) << std::uint64_t(s.keptValues.size()); w.end();
+        // (The Newton tolerance of superquadric contacts among the kept values, in scenes with
+        // shapes: it changes their trajectories, so a restart keeps it, and the section takes a
+        // new name without a new format version.)
+        const bool keepsTolerance = s.particles.hasShapes();
+        w.key(key::values) << std::uint64_t(s.keptValues.size() + keepsTolerance); w.end();
+        if (keepsTolerance) { w.key(item) << std::string(shapeToleranceValue) << c.shapeTolerance; w.end(); }
         for (const auto& [name, value] : s.keptValues) { w.key(item) << name << value; w.end(); }
         w.key(key::end); w.end();
     });
@@ -274,6 +280,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
                std::to_string(formatVersion) + ")");
     SimulationState t;  // filled completely before it replaces s
     RunSettings& c = t.settings;
+    c = s.settings;  // (the settings a file does not hold stay as the driver made them)
     r.expect(key::name);
     c.name = r.token("name");
     r.expect(key::run);
@@ -482,7 +489,9 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     const auto values = r.count("value count", 1ull << 20);
     for (std::uint64_t k = 0; k < values; ++k) {
         std::string name = r.token("value name");
-        t.keptValues.emplace_back(std::move(name), r.real("kept value"));
+        const double value = r.real("kept value");
+        if (name == shapeToleranceValue) c.shapeTolerance = value;
+        else t.keptValues.emplace_back(std::move(name), value);
     }
     for (std::int32_t species : t.domain.oneWay.outflowSpecies)
         if (species >= static_cast<std::int32_t>(t.species.size()) || t.domain.oneWay.outflowSpecies.size() > t.species.size())

@@ -34,6 +34,9 @@ void RunSettings::validate(bool started) const {
             named("stepsPerCollision", "steps-per-collision") + " must be at least " + str(1 / largestStepFraction) +
                 " (1 / --largest-step-fraction: the largest step a run accepts), got " + str(stepsPerCollision));
     requireNotNegative(impactSpeed, "impactSpeed", "impact-speed");
+    require(std::isfinite(shapeTolerance) && shapeTolerance >= 1e-15 && shapeTolerance <= 1e-3,
+            named("shapeTolerance", "shape-tolerance") + " must be in [1e-15, 1e-3] (relative to the bounding radius), got " +
+                str(shapeTolerance));
     requireNotNegative(endTime, "endTime", "end-time");
     requireNotNegative(outputInterval, "outputInterval", "output-interval");
     if (skin != automaticSkin) requireNotNegative(skin, "skin", "skin");

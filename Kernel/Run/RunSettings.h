@@ -38,6 +38,9 @@ struct RunSettings {
     double progressInterval = 10;             // --progress-interval: wall seconds between progress lines
     double maxOverlapFraction = 0.25;         // --max-overlap: of the smaller radius, during the run
     double maxInitialOverlapFraction = 0.05;  // of the smaller radius, at the start
+    // --shape-tolerance: the Newton tolerance of the superquadric contact point (relative to the
+    // smaller bounding radius; Theory/Superquadrics.md "Convergence"; SuperquadricContactSettings).
+    double shapeTolerance = 1e-10;
     // How the forces are summed (each changes the result, if only by round-off; the restart file
     // keeps them: Documentation/FileFormats/restart.md):
     bool idOrderedSums = false;  // in the order of partners' ids (--id-ordered-sums, IdOrderedForceSums.h)
