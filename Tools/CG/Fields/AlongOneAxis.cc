@@ -80,7 +80,8 @@ void particleWeights(const double* along, std::size_t n, double x, double ak, do
 
 // A segment from `start` whose extent along the axis is e in widths: the line integral
 // KernelProfile::lineIntegralAlongAxisOf at each point, times the scale, with the ends clipped to
-// the support; the rare points whose clipped interval is short take that function's quadrature.
+// the support; the rare points whose clipped interval is short, and every point of a segment
+// across the axis (e = 0), take that function's answer.
 template <class Profile>
 void segmentWeights(const KernelProfile& profile, const double* along, std::size_t n, double start, double ak,
                     double e, double scale, double* weight) {
@@ -100,7 +101,8 @@ void segmentWeights(const KernelProfile& profile, const double* along, std::size
     for (std::size_t j = 0; j < n; ++j) {  // (a second pass: a count in the first would stop its vector code)
         const double u0 = ak * (along[j] - start);
         const double length = std::min(std::max(u0, u0 + e), Profile::cutoff) - std::max(std::min(u0, u0 + e), -Profile::cutoff);
-        if (length > 0 && length < 1e-3) weight[j] = scale * profile.lineIntegralAlongAxisOf<Profile>(u0, e);
+        // (A branch across the axis, e = 0, has the kernel's value there: that function's answer.)
+        if ((length > 0 && length < 1e-3) || e == 0) weight[j] = scale * profile.lineIntegralAlongAxisOf<Profile>(u0, e);
     }
 }
 

@@ -54,6 +54,7 @@ public:
     // over points (Fields/AlongOneAxis.cc): lineIntegralAlongAxis is this for the profile's shape.
     template <class Shape>
     double lineIntegralAlongAxisOf(double u0, double e) const {
+        if (e == 0) return value(u0 * u0);  // (a branch across the axis: the integrand is constant)
         const double u1 = u0 + e;
         const double lo = std::max(std::min(u0, u1), -Shape::cutoff), hi = std::min(std::max(u0, u1), Shape::cutoff);
         if (hi <= lo) return 0.0;

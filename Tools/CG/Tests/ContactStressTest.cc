@@ -70,6 +70,21 @@ TEST(ContactStress, ExactLineIntegralsAgreeWithQuadrature) {
     }
 }
 
+// A branch across the axis of a one-dimensional kernel (e = 0: a contact with a vertical wall in a
+// depth profile, or two particles at the same height): the line integral of a constant, the
+// kernel's value at u0, not zero.
+TEST(ContactStress, BranchAcrossTheAxisTakesTheKernelsValue) {
+    for (KernelShape shape : {KernelShape::Lucy, KernelShape::Gauss, KernelShape::Heaviside}) {
+        const KernelProfile profile(shape, 1);
+        for (double u0 : {0.0, 0.3, -0.7, 0.99, 1.5, -4.0}) {
+            const double expected = profile.value(u0 * u0);
+            EXPECT_DOUBLE_EQ(profile.lineIntegralAlongAxis(u0, 0.0), expected) << kernelShapeName(shape) << " u0 " << u0;
+            // (and continuous with a branch that leans a little)
+            EXPECT_NEAR(profile.lineIntegralAlongAxis(u0, 1e-9), expected, 1e-8) << kernelShapeName(shape) << " u0 " << u0;
+        }
+    }
+}
+
 namespace {
 
 struct Profile {
