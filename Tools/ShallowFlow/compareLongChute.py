@@ -17,7 +17,8 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
 3. The particles: the depth averages along the chute at the frames nearest to --times (kernel
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
-4. Per time, for both: the front (the last x' where h reaches 0.5), the shock (the last x' where
+4. Per time, for both: the front (the last x' where h reaches 0.5 in the flow connected to the
+   inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front), the shock (the last x' where
    phi reaches 0.25 among those where h is at least 1), the head's height (the largest h) and length (front - shock: the part of the
    flow that holds large particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
    profiles, PREFIX-fronts.png the positions against time.
@@ -33,6 +34,7 @@ import tempfile
 import numpy as np
 
 FRONT_HEIGHT, SHOCK_CONCENTRATION = 0.5, 0.25  # talus-shallow's defaults (--front-height, --shock-concentration)
+FRONT_GAP = 25.0  # dL: a stretch below FRONT_HEIGHT this long ends the flow (connected_front)
 
 
 def fail(message):
@@ -110,10 +112,31 @@ def last_crossing(x, value, level):
     return x[k] + (value[k] - level) / (value[k] - value[k + 1]) * (x[k + 1] - x[k])
 
 
-def measures(x, h, phi):
-    """Front, shock, head height and length. The shock is sought where h is at least one large
-    diameter: near the particles' front a few grains make phi anything from 0 to 1."""
-    front = last_crossing(x, h, FRONT_HEIGHT)
+def connected_front(x, h, level, gap):
+    """The front of the flow that is connected to the inflow: scanning downstream, the last x
+    where h reaches level before the first stretch longer than gap where it stays below (linear
+    between points; nan if h never reaches level). Single grains that bounce ahead of the flow
+    raise a coarse-grained h above the level here and there, far downstream of the flow's end:
+    they are not its front. A smooth profile (the model's) has no such stretch, and this is its
+    last crossing."""
+    above = np.nonzero(h >= level)[0]
+    if len(above) == 0:
+        return math.nan
+    k = above[0]
+    for following in above[1:]:
+        if x[following] - x[k] > gap:
+            break
+        k = following
+    if k + 1 >= len(x):
+        return x[k]
+    return x[k] + (h[k] - level) / (h[k] - h[k + 1]) * (x[k + 1] - x[k])
+
+
+def measures(x, h, phi, front_gap=FRONT_GAP):
+    """Front, shock, head height and length. The front is that of the flow connected to the
+    inflow (connected_front). The shock is sought where h is at least one large diameter: near
+    the particles' front a few grains make phi anything from 0 to 1."""
+    front = connected_front(x, h, FRONT_HEIGHT, front_gap)
     shock = last_crossing(x, np.where(h >= 1.0, phi, 0.0), SHOCK_CONCENTRATION)
     return {"front": front, "shock": shock, "head_height": float(np.max(h)), "head_length": front - shock}
 

@@ -2,7 +2,9 @@
 """The measures of compareLongChute.py (Documentation/ShallowFlow.md, "Against the particles") on a
 profile whose answers follow by hand: h = 10 - x/10 (the front, h = 0.5, at x = 95), phi = 1 up to
 x = 30 falling linearly to 0 at x = 31 (phi = 0.25 at x = 30.75), and a few grains beyond the
-front at x = 120 (h = 0.3, phi = 1), which must be neither the front nor the shock. Prints
+front at x = 120 (h = 0.3, phi = 1), which must be neither the front nor the shock; then a grain
+bouncing far ahead (h = 0.8 around x = 160, beyond a 25-long stretch below 0.5) must not be the
+front either, while a dip below 0.5 shorter than that inside the flow does not end it. Prints
 "compare measures ok"."""
 import math
 import os
@@ -21,6 +23,16 @@ h[grains], phi[grains] = 0.3, 1.0
 m = c.measures(x, h, phi)
 expected = {"front": 95.0, "shock": 30.75, "head_height": 10.0, "head_length": 95.0 - 30.75}
 bad = [f"{k} {m[k]} != {v}" for k, v in expected.items() if not math.isclose(m[k], v, abs_tol=1e-9)]
+ahead = h.copy()
+ahead[np.abs(x - 160) < 0.5] = 0.8  # a grain far ahead: the front stays at 95
+dip = h.copy()
+dip[np.abs(x - 80) < 2] = 0.2  # a short dip inside the flow (h = 2 there): the front stays at 95
+for label, profile in (("a grain far ahead", ahead), ("a short dip", dip)):
+    front = c.measures(x, profile, phi)["front"]
+    if not math.isclose(front, 95.0, abs_tol=1e-9):
+        bad.append(f"{label}: front {front} != 95")
+if not math.isclose(c.connected_front(x, ahead, 0.5, 100.0), 160.4 + 0.3 / 0.8 * 0.1, abs_tol=1e-9):
+    bad.append("with a gap longer than the distance to the grain, the grain is the front")
 nowhere = c.last_crossing(x, h, 20.0)
 if not math.isnan(nowhere):
     bad.append(f"a level reached nowhere gave {nowhere}")
