@@ -44,7 +44,7 @@ public:
     double angle = 24, depth = 6, concentration = 0.5, length = 10, width = 10, boxHeight = 60;
     double sampleInterval = 1, averageTime = 100, baseDiameter = 1, startAngle = 0, startTime = 0;
     FlowCriteria criteria;
-    int particles = 0, seed = 1, window = static_cast<int>(criteria.window);
+    int particles = 0, seed = 1, window = static_cast<int>(criteria.window), baseOfSmall = 0;
     std::string species = "large";
 
     CalibrationChute() {
@@ -57,6 +57,7 @@ public:
         run().addFlag("width", "periodic width along y", width);
         run().addFlag("box-height", "height of the box above the base, which the start layer must fit", boxHeight);
         run().addFlag("base-diameter", "diameter of the fixed base spheres (large diameters)", baseDiameter);
+        run().addFlag("base-of-small", "1: the base has the small spheres' friction (0.375, 0.25), 0: the large ones'", baseOfSmall);
         run().addFlag("start-angle", "inclination in degrees until --start-time (0: --angle)", startAngle);
         run().addFlag("start-time", "time the layer flows at --start-angle before the decision starts", startTime);
         run().addFlag("seed", "seed of the base and of the start positions", seed);
@@ -85,8 +86,8 @@ public:
         require(species != "mixture" || (concentration > 0 && concentration < 1),
                 "--concentration " + str(concentration) + ": a mixture's small share must lie in (0, 1)");
         require(depth > 0 && particles >= 0, "--depth must be positive and --particles not negative");
-        require(sampleInterval > 0 && averageTime > 0, "--sample-interval and --average-time must be positive");
-        require(boxHeight > 0, "--box-height must be positive");
+        require(sampleInterval > 0 && averageTime > 0 && boxHeight > 0, "--sample-interval, --average-time and --box-height must be positive");
+        require(baseOfSmall == 0 || baseOfSmall == 1, "--base-of-small must be 0 or 1, got " + std::to_string(baseOfSmall));
         require(startTime >= 0 && (startAngle == 0 || (startAngle > 0 && startAngle < 90)),
                 "--start-time " + str(startTime) + ", --start-angle " + str(startAngle) +
                     ": the start time must not be negative and the start angle must lie in (0, 90) degrees (0: --angle)");
@@ -95,7 +96,7 @@ public:
         setChuteAngle(startTime > 0 && startAngle > 0 ? startAngle : angle);
         setChuteGeometry({.length = length, .width = width, .height = boxHeight, .periodicEnds = true});
         addMaserChuteSpecies(*this, "table-3C1", 1, smallDiameter, 1, density * pi / 6 * std::pow(smallDiameter, 3),
-                             density, baseDiameter);
+                             density, baseDiameter, baseOfSmall == 1);
         addCalibrationBase(*this, baseDiameter, baseSpecies, static_cast<std::uint64_t>(seed));
 
         const double smallShare = species == "small" ? 1 : species == "large" ? 0 : concentration;

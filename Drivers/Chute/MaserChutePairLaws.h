@@ -4,7 +4,8 @@
 // mass: the reduced mass is the other's). table-3C1 (the thesis's Table 3.C.1): tc and e of two
 // large spheres from kn = 2e5 and gamma_n = 25 in the thesis's units (dL = mL = g = 1, so
 // m* = 1/2), tc/sqrt(d) and e the same for every pair type (d: the pair's mean diameter), and the
-// base, fixed large particles there, with the large spheres' friction towards both sizes.
+// base, fixed large particles there, with the large spheres' friction towards both sizes (with
+// baseOfSmall, a base of small beads: the small spheres' friction towards both).
 // Friction 0.5 for large, 0.25 for small spheres and 0.375 between them.
 #pragma once
 
@@ -20,7 +21,7 @@ namespace talus {
 
 // Adds the species large, small and base (in this order) and sets every pair's law; prints them.
 inline void addMaserChuteSpecies(Simulation& s, const std::string& contactLaw, double dL, double dS, double mL,
-                                 double mS, double density, double baseDiameter) {
+                                 double mS, double density, double baseDiameter, bool baseOfSmall = false) {
     require(contactLaw == "chapter-4" || contactLaw == "table-3C1",
             "--contact-law must be chapter-4 or table-3C1, got '" + contactLaw + "'");
     const bool thesis = contactLaw == "table-3C1";
@@ -42,8 +43,8 @@ inline void addMaserChuteSpecies(Simulation& s, const std::string& contactLaw, d
     const PairType pairs[] = {{"large-large", large, large, mL / 2, dL, 0.5},
                               {"small-small", small, small, mS / 2, dS, 0.25},
                               {"large-small", large, small, mL * mS / (mL + mS), (dL + dS) / 2, muLS},
-                              {"base-large", base, large, mL, (dB + dL) / 2, 0.5},
-                              {"base-small", base, small, mS, (dB + dS) / 2, thesis ? muLS : 0.25}};
+                              {"base-large", base, large, mL, (dB + dL) / 2, baseOfSmall ? muLS : 0.5},
+                              {"base-small", base, small, mS, (dB + dS) / 2, thesis && !baseOfSmall ? muLS : 0.25}};
     auto lawOf = [&](const PairType& t) { return law(t.reducedMass, t.diameter, t.friction); };
     s.scene().addSpecies("large", density, lawOf(pairs[0]));
     s.scene().addSpecies("small", density, lawOf(pairs[1]));
