@@ -107,9 +107,8 @@ public:
     void actionsAfterTimeStep() override {
         // m vx dt of the maser's spheres per size: over the box length, the mass crossing its face.
         const auto momentum = [](const ParticleStore& p, std::size_t i) { return p.mass[i] * p.velocity[i].x(); };
-        const auto of = [](std::size_t s) { return [s](const ParticleStore& p, std::size_t i) { return p.species[i] == s; }; };
         if (activatedAt_ >= 0)
-            for (std::size_t k : {0, 1}) carried_.addStepIntegral(k, of(k == 0 ? maserLarge_ : maserSmall_), momentum);
+            for (std::size_t k : {0, 1}) carried_.addStepIntegral(k, ofSpecies(k == 0 ? maserLarge_ : maserSmall_), momentum);
         carried_.add(2, static_cast<double>(contactSummary().oneWayReactions));
         if (!clock_.every(sampleInterval)) return;
         carried_.totals();  // (this interval's sums join the totals at every sample)

@@ -75,8 +75,9 @@ public:
             rollingSprings_[k] = h.rollingSpring;
     }
     // A contact that touches, written in place (its rolling spring, if kept, left as it is): the
-    // batched ellipsoid contacts (Contacts/ShapedContactForces.h) come with these numbers in lanes, and a whole ContactHistory put together on the stack and
-    // copied stalled each contact on its own stores (a third of the time of applying them).
+    // batched ellipsoid contacts (Contacts/ShapedContactForces.h) come with these numbers in
+    // lanes, and a whole ContactHistory put together on the stack and copied stalled each contact
+    // on its own stores (a third of the time of applying them).
     [[gnu::always_inline]] void setTouching(std::size_t k, const Vec3& spring, double lastNormalForce,
                                             const Vec3& warmPoint, double warmMultiplier) {
         forces_[k] = {spring, lastNormalForce};

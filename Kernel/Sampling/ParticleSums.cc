@@ -15,9 +15,6 @@ Selection allParticles() {
 Selection mobileParticles() {
     return [](const ParticleStore& p, std::size_t i) { return !p.fixed[i]; };
 }
-Selection ofSpecies(std::size_t species) {
-    return [species](const ParticleStore& p, std::size_t i) { return p.species[i] == species; };
-}
 Selection inBox(const Vec3& lo, const Vec3& hi) {
     return [lo, hi](const ParticleStore& p, std::size_t i) {
         const Vec3& x = p.position[i];

@@ -26,7 +26,11 @@ using ParticleQuantity = std::function<double(const ParticleStore&, std::size_t)
 // Common selections; combine them with `both`.
 Selection allParticles();
 Selection mobileParticles();                   // not fixed
-Selection ofSpecies(std::size_t species);      // of one species (fixed or not)
+// Of one species (fixed or not). A predicate the compiler sees, so that a template taking it
+// (RunningSums::addStepIntegral) inlines it; it converts to a Selection where one is asked for.
+inline auto ofSpecies(std::size_t species) {
+    return [species](const ParticleStore& p, std::size_t i) { return p.species[i] == species; };
+}
 Selection inBox(const Vec3& lo, const Vec3& hi);  // centre in [lo, hi)
 Selection both(Selection a, Selection b);
 

@@ -149,8 +149,6 @@ def refine_jointly(h, rule, d, with_gamma, held=None):
         held_full["gamma"] = 0.0
     start = [min(h["delta1"], low - 1e-3), max(h["delta2"], high + 1e-3), h["A"] * d, rule["beta"], rule["gamma"]]
     lower, upper = [0.01, high + 1e-6, 1e-6, 0, -np.inf], [low - 1e-6, 89.9, np.inf, np.inf, np.inf]
-    if "delta1" in held_full and "delta2" not in held_full:  # (delta2 above every angle, delta1 below: as held)
-        lower[1] = max(lower[1], held_full["delta1"] + 1e-6)
     if held_full.get("delta2", math.inf) <= high or held_full.get("delta1", -math.inf) >= low:
         raise FitError(f"held delta1 and delta2 must lie below and above every angle of the points used ({low:g} to "
                        f"{high:g} degrees), where the h_stop curve is defined; held: "
@@ -170,8 +168,9 @@ def refine_jointly(h, rule, d, with_gamma, held=None):
              if np.isfinite(upper[i]) else max(start[i], lower[i]) for i in index]
     x = least_squares(lambda x: residual(expand(x)), start, bounds=([lower[i] for i in index], [upper[i] for i in index])).x \
         if index else []
-    delta1, delta2, a_d, beta, gamma = expand(x)
-    misfit = float(np.sum(residual(expand(x)) ** 2))
+    full = expand(x)
+    delta1, delta2, a_d, beta, gamma = full
+    misfit = float(np.sum(residual(full) ** 2))
     h = {"delta1": delta1, "delta2": delta2, "A": a_d / d, "estimates": estimates}
     rule = fit_flow_rule(used, h, d, with_gamma, beta=beta, gamma=gamma)
     rule["misfit"], rule["residualCount"], rule["free"] = misfit, len(theta_h) + len(theta_f), [k for k in free if k in names]

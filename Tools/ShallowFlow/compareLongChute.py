@@ -18,9 +18,10 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
 4. Per time, for both: the front (the last x' where h reaches 0.5 in the flow connected to the
-   inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front), the shock (the last x' where
-   phi reaches 0.25 among those where h is at least 1), the head's height (the largest h) and length (front - shock: the part of the
-   flow that holds large particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
+   inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front),
+   the shock (the last x' where phi reaches 0.25 among those where h is at least 1), the head's
+   height (the largest h) and length (front - shock: the part of the flow that holds large
+   particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
    profiles, PREFIX-fronts.png the positions against time.
 """
 import argparse
@@ -101,15 +102,18 @@ def read_csv(path):
     return {n: values[:, k] for k, n in enumerate(names)}
 
 
-def last_crossing(x, value, level):
-    """The last x where value reaches level, linear between points (nan if nowhere)."""
-    above = np.nonzero(value >= level)[0]
-    if len(above) == 0:
-        return math.nan
-    k = above[-1]
+def crossing_after(x, value, k, level):
+    """Where value, at least level at point k, falls to level on the way to point k + 1 (linear
+    between them; x[k] at the last point)."""
     if k + 1 >= len(x):
         return x[k]
     return x[k] + (value[k] - level) / (value[k] - value[k + 1]) * (x[k + 1] - x[k])
+
+
+def last_crossing(x, value, level):
+    """The last x where value reaches level, linear between points (nan if nowhere)."""
+    above = np.nonzero(value >= level)[0]
+    return math.nan if len(above) == 0 else crossing_after(x, value, above[-1], level)
 
 
 def connected_front(x, h, level, gap):
@@ -127,9 +131,7 @@ def connected_front(x, h, level, gap):
         if x[following] - x[k] > gap:
             break
         k = following
-    if k + 1 >= len(x):
-        return x[k]
-    return x[k] + (h[k] - level) / (h[k] - h[k + 1]) * (x[k + 1] - x[k])
+    return crossing_after(x, h, k, level)
 
 
 def measures(x, h, phi, front_gap=FRONT_GAP):

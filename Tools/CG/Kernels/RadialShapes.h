@@ -16,10 +16,11 @@ struct LucyShape {
     static constexpr double cutoff = 1.0, cutoffSquared = 1.0;
     static double axialIntegral(double x) { return x * (1 + x * x * (-2 + x * (2 - 0.6 * x))); }
     double operator()(double q2) const {
-        const double q = std::sqrt(q2);
-        return 1 + q2 * (-6 + q * (8 - 3 * q));
+        return polynomial(std::sqrt(q2), q2);
     }
-    static double ofDistance(double q) { return 1 + q * q * (-6 + q * (8 - 3 * q)); }
+    static double ofDistance(double q) { return polynomial(q, q * q); }
+    // f from q and q^2, each as the caller has it (the radial path its q^2, the axial one its q).
+    static double polynomial(double q, double q2) { return 1 + q2 * (-6 + q * (8 - 3 * q)); }
 };
 struct GaussShape {
     static constexpr double cutoff = 3.0, cutoffSquared = 9.0;
