@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <unordered_map>
 
@@ -46,6 +47,26 @@ CoarseGrainer::CoarseGrainer(CoarseGrainingSetup setup)
     layout_.contactStress = setup_.contactStress;
     for (int k = 0; k < 3; ++k) {
         halfExtent_[k] = setup_.coordinates.resolves(k) ? setup_.width.supportHalfExtent(k, profile_.cutoff()) : 0.0;
+    }
+    restrictTo({});
+}
+
+void CoarseGrainer::restrictTo(const std::vector<Vec3>& points) {
+    const double infinity = std::numeric_limits<double>::infinity();
+    regionLo_ = pointsLo_ = {-infinity, -infinity, -infinity};
+    regionHi_ = pointsHi_ = {infinity, infinity, infinity};
+    if (points.empty() || cylindrical_ || setup_.coordinates.isDomainAverage()) return;
+    for (int k = 0; k < 3; ++k) {
+        if (!setup_.coordinates.resolves(k)) continue;  // (sources reach every point along an averaged axis)
+        const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                                  [k](const Vec3& a, const Vec3& b) { return a[k] < b[k]; });
+        pointsLo_[k] = (*lo)[k];
+        pointsHi_[k] = (*hi)[k];
+        // (Widened by far more than the round-off of a support's ends: a source kept in vain
+        // costs a little time, one left out in error would change a sum.)
+        const double slack = 1e-9 * std::max({std::abs(pointsLo_[k]), std::abs(pointsHi_[k]), halfExtent_[k], 1.0});
+        regionLo_[k] = pointsLo_[k] - slack;
+        regionHi_[k] = pointsHi_[k] + slack;
     }
 }
 
@@ -156,6 +177,7 @@ void CoarseGrainer::setFrame(const ParticleFrame& frame, const ContactFrame* con
                 lo[k] = x[k] - halfExtent_[k];
                 hi[k] = x[k] + halfExtent_[k];
             }
+            if (!meetsRegion(lo, hi)) continue;
             position_.push_back(x);
             velocity_.push_back(frame.velocity[p]);
             mass_.push_back(frame.massOf(p, setup_.speciesDensity[s]));
@@ -194,6 +216,27 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
     segmentLo.clear();
     segmentHi.clear();
     std::vector<Vec3> pointLo, pointHi, shifts;
+    // A branch's ends lie within a (bounding) radius and an overlap of its contact point, so
+    // within 2R of it (R the largest radius); along an axis without images a line whose point is
+    // farther than 2R + the support's half-extent from the region of restrictTo has no source
+    // there: it is skipped unformed.
+    double largestRadius = 0;
+    for (double r : frame.radius) largestRadius = std::max(largestRadius, r);
+    Vec3 wantedLo, wantedHi;
+    bool restricted = false;
+    for (int k = 0; k < 3; ++k) {
+        const bool bounded = imagesEachSide_[k] == 0 && std::isfinite(regionLo_[k]);
+        const double reach = 2 * largestRadius + halfExtent_[k];
+        wantedLo[k] = bounded ? regionLo_[k] - reach : -std::numeric_limits<double>::infinity();
+        wantedHi[k] = bounded ? regionHi_[k] + reach : std::numeric_limits<double>::infinity();
+        restricted = restricted || bounded;
+    }
+    const auto nearRegion = [&](const Vec3& c) {
+        for (int k = 0; k < 3; ++k) {
+            if (c[k] < wantedLo[k] || c[k] > wantedHi[k]) return false;
+        }
+        return true;
+    };
     forEachContactBranch(frame, contacts, setup_, dataPath, fstatPath, [&](const ContactBranch& branch) {
         const Vec3& xm = branch.centre;
         const Vec3& b = branch.branch;
@@ -204,6 +247,7 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         }
         imageShifts(lo, hi, frame.box, shifts);
         for (const Vec3& shift : shifts) {
+            if (!meetsRegion(shifted(lo, shift), shifted(hi, shift))) continue;
             contactStart_.push_back(shifted(xm, shift));
             contactSegment_.push_back({-b[0], -b[1], -b[2]});
             contactForce_.push_back(branch.force);
@@ -220,12 +264,13 @@ void CoarseGrainer::addContacts(const ParticleFrame& frame, const ContactFrame& 
         }
         imageShifts(lo, hi, frame.box, shifts);
         for (const Vec3& shift : shifts) {
+            if (!meetsRegion(shifted(lo, shift), shifted(hi, shift))) continue;
             boundaryPoint_.push_back(shifted(point, shift));
             boundaryForce_.push_back(branch.force);
             pointLo.push_back(shifted(lo, shift));
             pointHi.push_back(shifted(hi, shift));
         }
-    });
+    }, restricted ? std::function<bool(const Vec3&)>(nearRegion) : nullptr);
     if (alongOneAxis()) return;
     contactBins_.build(segmentLo, segmentHi, setup_.coordinates.resolvesAxes(), cellSize);
     boundaryBins_.build(pointLo, pointHi, setup_.coordinates.resolvesAxes(), cellSize);
@@ -356,6 +401,14 @@ void CoarseGrainer::evaluate(const std::vector<Vec3>& points, std::vector<double
     if (cylindrical_) {
         cylindrical_->evaluate(points, sums);
         return;
+    }
+    for (const Vec3& r : points) {
+        for (int k = 0; k < 3; ++k) {
+            if (r[k] < pointsLo_[k] || r[k] > pointsHi_[k]) {
+                throw InputError("the point (" + str(r[0]) + ", " + str(r[1]) + ", " + str(r[2]) +
+                                 ") lies outside the points this coarse graining was restricted to (restrictTo)");
+            }
+        }
     }
     sums.assign(points.size() * layout_.count(), 0.0);
     if (setup_.coordinates.isDomainAverage()) {

@@ -68,6 +68,13 @@ public:
     // particles, InRun/InRunFields.h, whose fixed particles and ghosts change from sample to sample).
     void setExcluded(std::vector<bool> excluded);
 
+    // From the next frame on, sources whose support reaches none of `points` are left out of the
+    // frames (they would add nothing to these points, so their sums are bitwise those without);
+    // evaluate() then takes points within the bounding box of these only (InputError otherwise).
+    // For an object whose points cover part of the domain: one point at the base of a flow skips
+    // the flow above it. Not for cylindrical coordinates or the domain average (no effect).
+    void restrictTo(const std::vector<Vec3>& points);
+
     // sums[p * layout().count() + f]: field f at points[p] (overwritten).
     void evaluate(const std::vector<Vec3>& points, std::vector<double>& sums) const;
 
@@ -98,6 +105,13 @@ private:
     // Adds the contact lines of a frame: pair segments, boundary segments and boundary forces.
     void addContacts(const ParticleFrame& frame, const ContactFrame& contacts, const std::string& dataPath,
                      const std::string& fstatPath, const Vec3& cellSize);
+    // Whether a support box [lo, hi] meets the region of restrictTo (widened by round-off).
+    bool meetsRegion(const Vec3& lo, const Vec3& hi) const {
+        for (int k = 0; k < 3; ++k) {
+            if (hi[k] < regionLo_[k] || lo[k] > regionHi_[k]) return false;
+        }
+        return true;
+    }
     // Shifts (one per periodic image, the original included) of a support box along the
     // periodic kernel axes that bring it into the domain box.
     void imageShifts(const Vec3& lo, const Vec3& hi, const DomainBox& box, std::vector<Vec3>& shifts) const;
@@ -109,6 +123,9 @@ private:
     Vec3 halfExtent_{};  // support half-extent per lab axis (zero on averaged axes)
     std::array<long, 3> imagesEachSide_{};  // of the current frame per lab axis (0: no images)
     double scale_ = 1;   // c_d det(A) / (lengths of the averaged directions) of the current frame
+    // The region of restrictTo along each lab axis (everything unless restricted), and the
+    // points' own bounding box, which evaluate() checks its points against.
+    Vec3 regionLo_, regionHi_, pointsLo_, pointsHi_;
 
     // Particle sources of the current frame (images included), structure of arrays.
     std::vector<Vec3> position_;

@@ -15,7 +15,8 @@ std::string lineOf(const std::string& path, long line) { return path + " line " 
 
 void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contacts, const CoarseGrainingSetup& setup,
                           const std::string& dataPath, const std::string& fstatPath,
-                          const std::function<void(const ContactBranch&)>& visit) {
+                          const std::function<void(const ContactBranch&)>& visit,
+                          const std::function<bool(const Vec3&)>& wanted) {
     const std::size_t n = frame.size();
     // A pair may be written once (Talus and MercuryDPM skip the side of a fixed particle) or
     // once from each side (fstat.md): the lines of a pair are grouped (sorted by pair key; each
@@ -34,6 +35,7 @@ void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contac
         const std::uint64_t pairKey = c.isWall() ? (std::uint64_t{1} << 63) | k
                                                  : (static_cast<std::uint64_t>(std::min(c.i, c.j)) << 32) |
                                                        static_cast<std::uint64_t>(std::max(c.i, c.j));
+        if (wanted && !wanted(c.point)) continue;  // (after the checks of its indices)
         // (Lines that are each a contact of their own keep their order, each its own group.)
         order.emplace_back(contacts.eachContactOnce ? std::uint64_t{k} : pairKey, static_cast<std::uint32_t>(k));
     }

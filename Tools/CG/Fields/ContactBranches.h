@@ -32,9 +32,12 @@ struct ContactBranch {
 // Calls visit(branch) for every contact of the flow, ordered by pair (no list of branches is kept:
 // a frame of 10^5 particles has about 6 10^5 lines). Throws InputError naming the file and line for
 // contacts of particles beyond the frame and for contact points that do not lie on the particle's
-// surface (the files of different runs).
+// surface (the files of different runs). With `wanted`, a line whose contact point it declines is
+// skipped before its branch is formed (a caller that needs only the branches near some points: a
+// branch lies within a bounding radius of its contact point).
 void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contacts, const CoarseGrainingSetup& setup,
                           const std::string& dataPath, const std::string& fstatPath,
-                          const std::function<void(const ContactBranch&)>& visit);
+                          const std::function<void(const ContactBranch&)>& visit,
+                          const std::function<bool(const Vec3&)>& wanted = nullptr);
 
 }  // namespace talus::cg

@@ -38,6 +38,7 @@ InRunFields::InRunFields(Simulation& simulation, std::function<InRunOptions()> m
 InRunFields::~InRunFields() = default;
 
 void InRunFields::startRun(Simulation& simulation) {
+    forgetSharedInRunFrame();
     if (makeOptions_) options_ = makeOptions_();
     const InRunOptions& o = options_;
     const std::string label = o.name.empty() ? std::string("(unnamed)") : o.name;
@@ -74,6 +75,7 @@ void InRunFields::startRun(Simulation& simulation) {
             count[a] = o.count[a];
         }
         points_ = o.points.empty() ? gridPoints(setup.coordinates, count, lo, hi) : o.points;
+        grainer_->restrictTo(points_);  // (an object's points stay; sources that reach none are skipped)
         writes_ = !o.name.empty() && simulation.ranks().rank() == 0;
         if (!writes_) return 0;
         FieldOutputSetup output;
@@ -118,10 +120,10 @@ bool InRunFields::wantsSteps(const Simulation& simulation, std::uint64_t first, 
 void InRunFields::sample(Simulation& simulation, const ContactRecordList& contacts) {
     const auto start = std::chrono::steady_clock::now();
     const SimulationState& state = simulation.state();
-    fillInRunFrame(state, options_.contactStress ? &contacts : nullptr, frame_, contacts_, fixed_);
+    const InRunFrame& frame = sharedInRunFrame(simulation, options_.contactStress ? &contacts : nullptr);
     refusingAs(options_.name, [&] {
-        if (options_.fixed != FixedParticles::include) grainer_->setExcluded(fixed_);
-        grainer_->setFrame(frame_, options_.contactStress ? &contacts_ : nullptr, "the run's particles",
+        if (options_.fixed != FixedParticles::include) grainer_->setExcluded(frame.fixed);
+        grainer_->setFrame(frame.particles, options_.contactStress ? &frame.contacts : nullptr, "the run's particles",
                            "the run's contacts");
         grainer_->evaluate(points_, last_);
         return 0;

@@ -126,9 +126,6 @@ private:
     std::vector<Vec3> points_;
     bool writes_ = false;
     std::unique_ptr<FieldWriter> writer_;
-    ParticleFrame frame_;
-    ContactFrame contacts_;
-    std::vector<bool> fixed_;
     std::vector<double> last_, sum_;
     int samples_ = 0, averaged_ = 0;
     bool written_ = false;  // the average was written: the next sample starts a new one

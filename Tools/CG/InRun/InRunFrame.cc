@@ -1,13 +1,17 @@
 #include "InRun/InRunFrame.h"
 
+#include <cstdint>
+
+#include "Simulation.h"
 #include "SimulationState.h"
 
 namespace talus::cg {
 
 namespace {
 talus::cg::Vec3 array(const talus::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-}  // namespace
 
+// Fills `frame` (and `contacts` from `records`, when given) from the state after a step; `fixed`
+// gets one flag per line.
 void fillInRunFrame(const SimulationState& state, const ContactRecordList* records, ParticleFrame& frame,
                     ContactFrame& contacts, std::vector<bool>& fixed) {
     const ParticleStore& p = state.particles;
@@ -48,5 +52,30 @@ void fillInRunFrame(const SimulationState& state, const ContactRecordList* recor
         contacts.contacts.push_back(c);
     }
 }
+
+// The frame last filled on this thread, and the run and step it belongs to.
+struct SharedFrame {
+    InRunFrame frame;
+    const Simulation* simulation = nullptr;  // none: nothing kept
+    std::uint64_t step = 0;
+};
+thread_local SharedFrame shared;
+
+}  // namespace
+
+const InRunFrame& sharedInRunFrame(const Simulation& simulation, const ContactRecordList* records) {
+    const bool kept = shared.simulation == &simulation && shared.step == simulation.step() &&
+                      (shared.frame.withContacts || records == nullptr);
+    if (!kept) {
+        InRunFrame& f = shared.frame;
+        fillInRunFrame(simulation.state(), records, f.particles, f.contacts, f.fixed);
+        f.withContacts = records != nullptr;
+        shared.simulation = &simulation;
+        shared.step = simulation.step();
+    }
+    return shared.frame;
+}
+
+void forgetSharedInRunFrame() { shared.simulation = nullptr; }
 
 }  // namespace talus::cg

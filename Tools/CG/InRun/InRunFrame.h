@@ -18,14 +18,24 @@
 #include "IO/ParticleFrame.h"
 
 namespace talus {
-struct SimulationState;
+class Simulation;
 }
 
 namespace talus::cg {
 
-// Fills `frame` (and `contacts` from `records`, when given) from the state after a step; `fixed`
-// gets one flag per line.
-void fillInRunFrame(const SimulationState& state, const ContactRecordList* records, ParticleFrame& frame,
-                    ContactFrame& contacts, std::vector<bool>& fixed);
+struct InRunFrame {
+    ParticleFrame particles;
+    ContactFrame contacts;     // empty unless withContacts
+    bool withContacts = false;
+    std::vector<bool> fixed;   // one flag per line
+};
+
+// The frame of the simulation's current step, filled at the first call of the step and shared by
+// the objects that sample the same step (each would otherwise copy the same numbers): with the
+// contacts of `records` when given (a frame filled without them is filled again). The frame is
+// kept per thread; forgetSharedInRunFrame(), called as each object starts a run, drops it, so a
+// run never sees the frame of another.
+const InRunFrame& sharedInRunFrame(const Simulation& simulation, const ContactRecordList* records);
+void forgetSharedInRunFrame();
 
 }  // namespace talus::cg
