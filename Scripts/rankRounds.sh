@@ -7,7 +7,7 @@
 # single-copy transport (the MPI default that Talus turns off: Parallel/MpiCommunicator.cc), and
 # (if given) another build on 2 ranks; the order turns by one each round. Prints a line per run (round, ranks, build, load average, wall seconds of the time loop,
 # communication shares, as Documentation/Performance/ranks-3000-idle.txt has them), then per
-# configuration the best and the median, and the ratios of the medians.
+# configuration the best and the median, the median speedup of the rounds, and the ratios of the medians.
 # -n: the runs at this niceness (nice -n; below 0 needs root): on a host shared with other jobs,
 # -10 keeps the ranks from waiting for the others' turns, most of what a loaded host measures.
 #   Scripts/rankRounds.sh [-r rounds] [-t end-time] [-d data] [-n niceness] BUILD [OTHER-BUILD]
@@ -65,6 +65,13 @@ for config in "${configs[@]}"; do
 done
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
 serial=$(awk -v a="${median[1rank]}" -v b="${median[1rank-second-core]}" 'BEGIN {print (a < b ? a : b)}')
+# The speedup in each round (the faster single-core run of the round against its 2-rank run): a
+# slow spell of the host then falls on both sides of a ratio.
+pairs=$(awk '{wall[$2 " " $6] = $10} END {for (key in wall) {split(key, k, " "); if (k[2] != "2ranks") continue
+          r = k[1]; one = wall[r " 1rank"]; other = wall[r " 1rank-second-core"]
+          if (other != "" && other < one) one = other; if (one != "") print one / wall[key]}}' "$results" | sort -g |
+        awk '{s[NR] = $1} END {printf "%.2f (%.2f-%.2f over %d rounds)", (NR % 2 ? s[(NR + 1) / 2] : (s[NR / 2] + s[NR / 2 + 1]) / 2), s[1], s[NR], NR}')
+echo "speedup per round: median $pairs"
 echo -n "ratios of the medians: 1 rank (the faster core) / 2 ranks $(ratio "$serial" "${median[2ranks]}") (the speedup);" \
         "buffered / single-copy transport $(ratio "${median[2ranks]}" "${median[2ranks-single-copy]}")"
 [ -n "${median[2ranks-other-build]:-}" ] &&
