@@ -13,7 +13,10 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
    the frames after the maser's activation give h_in, u_in and phi_in (the small spheres' share of
    the solids), averaged over the box's interior and the frames.
 2. The model: talus-shallow with that inflow, the friction law's parameters as given after "--"
-   (default: its own, table 3.1), at the frames' times t'.
+   (default: its own, table 3.1), at the frames' times t'. It starts as the particles do: at the
+   activation MaserFedChute seeds the first maser length of the chute with a copy of the maser's
+   flow, so the model starts with the inflow state over that length (--seeded-length) and an
+   empty chute beyond.
 3. The particles: the depth averages along the chute at the frames nearest to --times (kernel
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
@@ -143,6 +146,17 @@ def measures(x, h, phi, front_gap=FRONT_GAP):
     return {"front": front, "shock": shock, "head_height": float(np.max(h)), "head_length": front - shock}
 
 
+def write_start(path, length, cells, seeded, inflow):
+    """talus-shallow's --initial file: the inflow state (h, u, phi) in the cells whose centres lie
+    within the seeded length, an empty chute beyond."""
+    with open(path, "w") as f:
+        f.write("x,h,u,phi\n")
+        for i in range(cells):
+            x = (i + 0.5) * length / cells
+            h, u, phi = inflow if x < seeded else (0.0, 0.0, 0.0)
+            f.write(f"{x!r},{h!r},{u!r},{phi!r}\n")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run", help="the particle run's name (RUN.data, RUN.restart)")
@@ -153,6 +167,8 @@ def main():
                         help="dL in the run's units (default 1.1150: size ratio 2^(1/3) at mean diameter 1)")
     parser.add_argument("--maser-length", type=float, required=True, help="the maser box's length, run units")
     parser.add_argument("--chute-length", type=float, required=True, help="the open chute's length, run units")
+    parser.add_argument("--seeded-length", type=float, default=None,
+                        help="the chute's length seeded at the activation, run units (default: the maser length; 0: none)")
     parser.add_argument("--small-species", default="1,4", help="species of the small spheres (default 1,4: chute, maser)")
     parser.add_argument("--base-species", default="2,5", help="species of the fixed base (default 2,5: chute, maser)")
     parser.add_argument("--widths", type=float, nargs=2, default=[5.0, 0.5], metavar=("WX", "WZ"),
@@ -183,11 +199,15 @@ def main():
         h_in, u_in, phi_in = h[inside].mean(), u[inside].mean(), phi[inside].mean()
         print(f"inflow from the maser ({len(after)} frames): h = {h_in / dl:.4g} dL, u = {u_in / tu:.4g}, phi = {phi_in:.4g}")
 
-        # 2. The model at the frames' times.
+        # 2. The model at the frames' times, from the chute as the activation left it.
         times = [(t - activated) / tu for t in chosen]
         prefix = os.path.join(folder, "model")
-        command = [args.talus_shallow, "--length", f"{args.chute_length / dl:.6f}",
-                   "--cells", str(int(round(args.chute_length / dl))), "--end-time", repr(max(times)),
+        length, cells = args.chute_length / dl, int(round(args.chute_length / dl))
+        seeded = (args.maser_length if args.seeded_length is None else args.seeded_length) / dl
+        start = os.path.join(folder, "start.csv")
+        write_start(start, length, cells, seeded, (h_in / dl, u_in / tu, phi_in))
+        command = [args.talus_shallow, "--length", repr(length), "--initial", start,
+                   "--cells", str(cells), "--end-time", repr(max(times)),
                    "--output-times", ",".join(repr(t) for t in times), "--inflow-height", repr(h_in / dl),
                    "--inflow-velocity", repr(u_in / tu), "--inflow-concentration", repr(phi_in),
                    "--output", prefix] + args.shallow

@@ -4,11 +4,13 @@ profile whose answers follow by hand: h = 10 - x/10 (the front, h = 0.5, at x = 
 x = 30 falling linearly to 0 at x = 31 (phi = 0.25 at x = 30.75), and a few grains beyond the
 front at x = 120 (h = 0.3, phi = 1), which must be neither the front nor the shock; then a grain
 bouncing far ahead (h = 0.8 around x = 160, beyond a 25-long stretch below 0.5) must not be the
-front either, while a dip below 0.5 shorter than that inside the flow does not end it. Prints
-"compare measures ok"."""
+front either, while a dip below 0.5 shorter than that inside the flow does not end it. And the
+model's start (write_start): the inflow state in the cells whose centres lie within the seeded
+length, nothing beyond, one line per cell at its centre. Prints "compare measures ok"."""
 import math
 import os
 import sys
+import tempfile
 
 import numpy as np
 
@@ -36,6 +38,17 @@ if not math.isclose(c.connected_front(x, ahead, 0.5, 100.0), 160.4 + 0.3 / 0.8 *
 nowhere = c.last_crossing(x, h, 20.0)
 if not math.isnan(nowhere):
     bad.append(f"a level reached nowhere gave {nowhere}")
+with tempfile.TemporaryDirectory() as folder:
+    start = os.path.join(folder, "start.csv")
+    c.write_start(start, 100.0, 40, 20.0, (15.5, 4.1, 0.5))  # cells 2.5 long: 8 centres below 20
+    with open(start) as f:
+        lines = f.read().split()
+    rows = [[float(v) for v in line.split(",")] for line in lines[1:]]
+    if lines[0] != "x,h,u,phi" or len(rows) != 40:
+        bad.append(f"start file: header {lines[0]!r}, {len(rows)} rows (40 expected)")
+    elif [r[0] for r in rows[:2]] != [1.25, 3.75] or [r[1] for r in rows[7:9]] != [15.5, 0.0] or \
+            rows[7][1:] != [15.5, 4.1, 0.5] or any(r[1:] != [0.0, 0.0, 0.0] for r in rows[8:]):
+        bad.append(f"start file: rows 0-1 {rows[:2]}, 7-8 {rows[7:9]}")
 if bad:
     sys.exit("compare measures: " + "; ".join(bad))
 print("compare measures ok")
