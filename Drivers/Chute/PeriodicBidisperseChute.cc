@@ -7,7 +7,9 @@
 // above it and flow under gravity g (sin 24, 0, -cos 24). Contacts are linear spring-dashpots with
 // Coulomb friction: kn = 2e5 and gn = 25 for two large spheres (tc = 4.97e-3, e = 0.883), the same
 // e and tc ~ sqrt(d) for every pair type (Theory/ContactLaws.md "Bidisperse mixtures"), kt = 2/7
-// kn, gt = gn, friction 0.5 (LL), 0.25 (SS), 0.375 (LS); the base is of the large material.
+// kn, gt = gn, friction 0.5 (LL), 0.25 (SS), 0.375 (LS); the base is of the large material. With
+// --softer F every stiffness is divided by F and every damping by sqrt(F): each collision lasts
+// sqrt(F) times as long with the same restitution (the softer particles of common practice).
 // dt = 1e-4. Every time unit the run samples the kinetic energy and the mass flux; once both have
 // been on a plateau for the last 200 samples (their trend over them below 2% of their mean) the
 // flow is steady, and from then on the run averages depth profiles and the flow's mean velocity,
@@ -28,7 +30,7 @@ using namespace talus;
 
 class PeriodicBidisperseChute : public Chute {
 public:
-    double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02, baseDiameter = 1;
+    double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02, baseDiameter = 1, softer = 1;
     int large = 1000, small = 2000, seed = 1, window = 200;
 
     PeriodicBidisperseChute() {
@@ -39,6 +41,7 @@ public:
         run().addFlag("small", "number of small spheres (d = 0.7937)", small);
         run().addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
         run().addFlag("seed", "seed of the base and of the start positions", seed);
+        run().addFlag("softer", "divide the stiffnesses by F and the dampings by sqrt(F) (collisions sqrt(F) longer)", softer);
         run().addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         run().addFlag("window", "samples on a plateau that make the flow steady", window);
         run().addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
@@ -58,7 +61,9 @@ public:
         setChuteGeometry({.length = length, .width = width, .height = 60, .periodicEnds = true});
         // The thesis's table 3.C.1: the LL law from kn and gn, then the bidisperse rule for the
         // others.
-        const LinearSpringDashpot largeLaw{2e5, 25, 2.0 / 7.0 * 2e5, 25, 0.5};
+        require(softer >= 1 && std::isfinite(softer), "--softer must be at least 1, got " + str(softer));
+        const double k = 2e5 / softer, g = 25 / std::sqrt(softer);
+        const LinearSpringDashpot largeLaw{k, g, 2.0 / 7.0 * k, g, 0.5};
         const double density = 6 / pi;
         largeSpecies_ = scene().addSpecies("large", density, largeLaw);
         smallSpecies_ = scene().addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
