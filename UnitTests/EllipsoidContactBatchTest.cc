@@ -2,7 +2,8 @@
 // exact stage (Contacts/SuperquadricContact.h) from the same warm starts: a lane the batch
 // finishes must give the scalar answer (point, multiplier, normal, overlap, contact point), and
 // every lane the scalar solve would take further (more than one iteration, a pair apart) must be
-// left to it.
+// left to it. A sphere partner enters the batch as the force loop gives it, a plain sphere:
+// the quadric diag((1/r)^2) and the bounding radius r (Contacts/ShapedContactForces.h, batchBody).
 #include <random>
 
 #include "LaneFormTest.h"
@@ -16,7 +17,7 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
     std::mt19937_64 random(20261201);
     std::uniform_real_distribution<double> uniform(-1, 1);
     const double tolerance = SuperquadricContactSettings{}.tolerance;
-    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::needles}) {
+    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::needles, reference::Case::sphereOnEllipsoid}) {
         int lanes = 0, done = 0, oneIterationTouching = 0, atRest = 0, apart = 0;
         double worstPoint = 0, worstNormal = 0, worstOverlap = 0, worstMiddle = 0;
         for (int round = 0; round < 25; ++round) {
@@ -50,7 +51,14 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                     c.j = PlacedSuperquadric(&c.shapeJ, c.j.centre + move * Vec3(uniform(random), uniform(random), uniform(random)),
                                              turn * c.j.rotation);
                 }
-                batch.add(0, 0, 1, c.i, c.j.centre, c.j, start);
+                if (kind == reference::Case::sphereOnEllipsoid) {
+                    const double r = c.shapeI.a(), inverse = 1 / r;
+                    Mat3 sphere = Mat3::Zero();
+                    sphere.diagonal().setConstant(inverse * inverse);
+                    batch.add(0, 0, 1, {c.i.centre, sphere, r}, {c.j.centre, c.j.quadric, c.shapeJ.boundingRadius()}, start);
+                } else {
+                    batch.add(0, 0, 1, c.i, c.j.centre, c.j, start);
+                }
                 scalar.push_back(findSuperquadricContact(c.i, c.j, &start));
             }
             batch.compute(tolerance);

@@ -79,10 +79,10 @@ inline Contact contact(const PlacedSuperquadric& i, const PlacedSuperquadric& j,
 // smaller semi-axis (or, for a share of them, apart by up to 5% of it while their bounding
 // spheres overlap). The touching distance along the chosen direction is found with the
 // reference solver, by bisection.
-enum class Case { spheres, ellipsoids, blocky, parallelFaces, edgeOnFace, needles };
+enum class Case { spheres, ellipsoids, blocky, parallelFaces, edgeOnFace, needles, sphereOnEllipsoid };
 inline const char* name(Case c) {
     const char* names[] = {"spheres", "ellipsoids (aspect 1-10)", "blocky (e 0.1-1)", "near-parallel flat faces",
-                           "edge on face", "needle crossings (aspect 10)"};
+                           "edge on face", "needle crossings (aspect 10)", "a sphere on an ellipsoid (aspect 1-10)"};
     return names[static_cast<int>(c)];
 }
 
@@ -133,6 +133,10 @@ inline Configuration randomConfiguration(Case kind, std::mt19937_64& random) {
         b = {0.8, 0.5, 0.5, between(0.1, 0.3), between(0.1, 0.3)};
         Rj = Ri * Eigen::AngleAxisd(pi / 4, Vec3::UnitX()).toRotationMatrix() * tilt;
         u = Ri * Vec3(between(-0.1, 0.1), between(-0.1, 0.1), 1).normalized();
+        break;
+    case Case::sphereOnEllipsoid:
+        a = Superquadric::sphere(between(0.3, 1));
+        b = Superquadric::ellipsoid(between(0.1, 1), 1, between(0.1, 1));
         break;
     case Case::needles:  // long axes crossing at right angles (up to a milliradian)
         a = Superquadric::ellipsoid(1, 0.1, 0.1), b = Superquadric::ellipsoid(1, 0.1, 0.1);

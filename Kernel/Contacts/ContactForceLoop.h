@@ -329,8 +329,10 @@ private:
     [[gnu::noinline]] void shapedPair(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, double dx,
                                       double dy, double dz);
     [[gnu::always_inline]] bool shapedPairStaysApart(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j);
-    bool isEllipsoid(std::uint32_t i) const;
-    bool isSphere(std::uint32_t i) const { return (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere(); }
+    bool isEllipsoidOrSphere(std::uint32_t i) const;
+    bool isRound(std::uint32_t i) const;
+    EllipsoidContactBatch::Body batchBody(const std::vector<PlacedSuperquadric>& frames, std::uint32_t i,
+                                          const Vec3& centre, Mat3& sphere) const;
     void flushEllipsoids(PairList& list);
     [[gnu::always_inline]] void laneContact(PairList& list, int l);
     void shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& xj,

@@ -1,4 +1,4 @@
-// Lasting contacts of two ellipsoids, gathered in batches and taken one Newton iteration forward
+// Lasting contacts of two ellipsoids (a sphere counts as one: Q = I / r^2), gathered in batches and taken one Newton iteration forward
 // lane by lane, in loops of plain numbers that the compiler vectorises: the warm-started exact
 // stage of Theory/Superquadrics.md for the common case, as ContactBatch (ContactBatch.h) does the
 // sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
@@ -94,17 +94,29 @@ struct EllipsoidContactBatch {
         }
     }
 
+    // A body as the batch sees it: its centre, its quadric Q and its bounding radius.
+    struct Body {
+        const Vec3& centre;
+        const Mat3& quadric;
+        double boundingRadius;
+    };
+    // An ellipsoid's placed frame (at bodyI's own centre; j's image at centreJ).
     void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const PlacedSuperquadric& bodyI, const Vec3& centreJ,
              const PlacedSuperquadric& bodyJ, const SuperquadricContactPoint& start) {
+        add(pair, a, b, {bodyI.centre, bodyI.quadric, bodyI.shape->boundingRadius()},
+            {centreJ, bodyJ.quadric, bodyJ.shape->boundingRadius()}, start);
+    }
+    void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Body& bodyI, const Body& bodyJ,
+             const SuperquadricContactPoint& start) {
         const int l = count++;
         k[l] = static_cast<std::uint32_t>(pair), i[l] = a, j[l] = b;
         cix[l] = bodyI.centre.x(), ciy[l] = bodyI.centre.y(), ciz[l] = bodyI.centre.z();
-        cjx[l] = centreJ.x(), cjy[l] = centreJ.y(), cjz[l] = centreJ.z();
+        cjx[l] = bodyJ.centre.x(), cjy[l] = bodyJ.centre.y(), cjz[l] = bodyJ.centre.z();
         const Mat3 &A = bodyI.quadric, &B = bodyJ.quadric;
         qi0[l] = A(0, 0), qi1[l] = A(1, 1), qi2[l] = A(2, 2), qi3[l] = A(0, 1), qi4[l] = A(0, 2), qi5[l] = A(1, 2);
         qj0[l] = B(0, 0), qj1[l] = B(1, 1), qj2[l] = B(2, 2), qj3[l] = B(0, 1), qj4[l] = B(0, 2), qj5[l] = B(1, 2);
         x0[l] = start.point.x(), y0[l] = start.point.y(), z0[l] = start.point.z(), mu0[l] = start.multiplier;
-        scale[l] = std::min(bodyI.shape->boundingRadius(), bodyJ.shape->boundingRadius());
+        scale[l] = std::min(bodyI.boundingRadius, bodyJ.boundingRadius);
     }
 
     // F = d.Q d - 1 and grad F = 2 Q d at x (TwoEllipsoids::at), Q symmetric (xx yy zz xy xz yz).

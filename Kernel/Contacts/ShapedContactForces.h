@@ -17,12 +17,15 @@ void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std
                                        double dy, double dz) {
     const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
     ContactHistory history = list.history.get(k);
-    // A lasting contact of two ellipsoids: into the batch (EllipsoidContactBatch.h; laws
-    // without the effective radius, which would need the curvatures).
+    // A lasting contact of an ellipsoid with an ellipsoid or a sphere: into the batch
+    // (EllipsoidContactBatch.h; laws without the effective radius, which would need the
+    // curvatures). A sphere is the ellipsoid Q = I / r^2 there, as the scalar path's sphere-shaped
+    // partner (ShapedContactGeometry.h, placed) is; two round bodies have the closed form.
     if constexpr (!Law::usesEffectiveRadius) {
-        if (history.warmMultiplier > 0 && isEllipsoid(i) && isEllipsoid(j) && !(isSphere(i) && isSphere(j))) {
+        if (history.warmMultiplier > 0 && isEllipsoidOrSphere(i) && isEllipsoidOrSphere(j) && !(isRound(i) && isRound(j))) {
             const std::vector<PlacedSuperquadric>& frames = list.shapedFrameScratch;
-            ellipsoids_.add(k, i, j, frames[i], xj, frames[j],
+            Mat3 sphereI, sphereJ;
+            ellipsoids_.add(k, i, j, batchBody(frames, i, p_.position[i], sphereI), batchBody(frames, j, xj, sphereJ),
                             {p_.position[i] + history.warmPoint, history.warmMultiplier});
             if (ellipsoids_.full()) flushEllipsoids(list);
             return;
@@ -56,10 +59,27 @@ inline bool ContactForceLoopInLanes<Law>::shapedPairStaysApart(PairList& list, s
     return gapBound > 0;
 }
 
-// (Shaped particles only; two spheres have the closed form of findSuperquadricContact.)
+// A plain sphere (no shape) or an ellipsoid; a plain sphere or a sphere-shaped one.
 template <class Law>
-bool ContactForceLoopInLanes<Law>::isEllipsoid(std::uint32_t i) const {
-    return p_.shape[i] >= 0 && (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isEllipsoid();
+bool ContactForceLoopInLanes<Law>::isEllipsoidOrSphere(std::uint32_t i) const {
+    return p_.shape[i] < 0 || (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isEllipsoid();
+}
+template <class Law>
+bool ContactForceLoopInLanes<Law>::isRound(std::uint32_t i) const {
+    return p_.shape[i] < 0 || (*shapes_)[static_cast<std::size_t>(p_.shape[i])].isSphere();
+}
+
+// Particle i (at `centre`: its own position or j's image) for the batch: an ellipsoid's placed
+// frame, or a plain sphere's quadric I / r^2 (in `sphere`), formed as the frame of
+// Superquadric::sphere(r) would form it (diag((1/r)^2)), with its bounding radius r.
+template <class Law>
+EllipsoidContactBatch::Body ContactForceLoopInLanes<Law>::batchBody(const std::vector<PlacedSuperquadric>& frames,
+                                                                    std::uint32_t i, const Vec3& centre, Mat3& sphere) const {
+    if (p_.shape[i] >= 0) return {centre, frames[i].quadric, frames[i].shape->boundingRadius()};
+    const double inverse = 1 / p_.radius[i];
+    sphere = Mat3::Zero();
+    sphere.diagonal().setConstant(inverse * inverse);
+    return {centre, sphere, p_.radius[i]};
 }
 
 // The batched lasting ellipsoid contacts: a lane the batch could not finish goes to the
