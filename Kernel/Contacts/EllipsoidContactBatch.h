@@ -1,5 +1,6 @@
-// Lasting contacts of two ellipsoids (a sphere counts as one: Q = I / r^2), gathered in batches and taken one Newton iteration forward
-// lane by lane, in loops of plain numbers that the compiler vectorises: the warm-started exact
+// Lasting contacts of two ellipsoids (a sphere counts as one: Q = I / r^2), gathered in batches
+// and taken one Newton iteration forward lane by lane, in loops of plain numbers that the
+// compiler vectorises: the warm-started exact
 // stage of Theory/Superquadrics.md for the common case, as ContactBatch (ContactBatch.h) does the
 // sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
 // residual, normal, the two distances); one at a time, the core cannot overlap it with the next

@@ -34,7 +34,7 @@ struct ContactBranch {
 // contacts of particles beyond the frame and for contact points that do not lie on the particle's
 // surface (the files of different runs). With `wanted`, a line whose contact point it declines is
 // skipped before its branch is formed (a caller that needs only the branches near some points: a
-// branch lies within a bounding radius of its contact point).
+// branch's ends lie within a bounding radius and an overlap of its contact point).
 void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contacts, const CoarseGrainingSetup& setup,
                           const std::string& dataPath, const std::string& fstatPath,
                           const std::function<void(const ContactBranch&)>& visit,
