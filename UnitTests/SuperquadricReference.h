@@ -135,7 +135,7 @@ inline Configuration randomConfiguration(Case kind, std::mt19937_64& random) {
         u = Ri * Vec3(between(-0.1, 0.1), between(-0.1, 0.1), 1).normalized();
         break;
     case Case::sphereOnEllipsoid:
-        a = Superquadric::sphere(between(0.3, 1));
+        a = Superquadric::sphere(between(0.3, 1));  // (smaller spheres: a limit, Superquadrics.md "Not done yet")
         b = Superquadric::ellipsoid(between(0.1, 1), 1, between(0.1, 1));
         break;
     case Case::needles:  // long axes crossing at right angles (up to a milliradian)

@@ -72,7 +72,7 @@ Timing time(const std::vector<Prepared>& set, const SuperquadricContactSettings&
 int main(int argc, char** argv) {
     int configurations = 1000, seed = 1;
     CommandLine flags;
-    flags.add("configurations", "N", "random configurations per class (6 classes)",
+    flags.add("configurations", "N", "random configurations per class (7 classes)",
               [&](const std::string& v) { configurations = CommandLine::toInt("--configurations", v); });
     flags.add("seed", "N", "random seed", [&](const std::string& v) { seed = CommandLine::toInt("--seed", v); });
     try {
@@ -88,11 +88,12 @@ int main(int argc, char** argv) {
     std::mt19937_64 random(static_cast<std::uint64_t>(seed));
     const reference::Case kinds[] = {reference::Case::spheres,       reference::Case::ellipsoids,
                                      reference::Case::blocky,        reference::Case::parallelFaces,
-                                     reference::Case::edgeOnFace,    reference::Case::needles};
+                                     reference::Case::edgeOnFace,    reference::Case::needles,
+                                     reference::Case::sphereOnEllipsoid};
     std::vector<std::vector<Prepared>> sets;
     const Clock::time_point begin = Clock::now();
     Clock::time_point lastReport = begin;
-    const long total = 6L * configurations;
+    const long total = static_cast<long>(std::size(kinds)) * configurations;
     for (reference::Case kind : kinds) {
         std::vector<Prepared>& set = sets.emplace_back();
         for (int k = 0; k < configurations; ++k) {

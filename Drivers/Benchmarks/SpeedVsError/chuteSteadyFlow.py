@@ -15,7 +15,8 @@ Each run gives the steady mean velocity, flow height and mass flux with their st
 from the reference with the combined standard error of both; its cost the number of steps per
 time unit (the wall time is printed too, but a shared host makes it noisy). Every run has its own
 folder under --work and is skipped when its result exists, so a killed study resumes where it
-stopped (a run killed midway starts again). --jobs runs that many at once. Writes OUT.csv and
+stopped (a run killed midway starts again; each run's progress is in its folder's run.log).
+--jobs runs that many at once. Writes OUT.csv and
 OUT.png (|error| against cost with error bars, the Pareto front of each study marked).
   chuteSteadyFlow.py DRIVER [--out PREFIX] [--work DIR] [--jobs 2] [--steps 10,15,...]
                      [--reference 500] [--softer 1,3,10,...] [-- DRIVER FLAGS]
@@ -28,11 +29,12 @@ import csv
 import math
 import os
 import re
+import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from speedVsError import pareto, run_driver  # noqa: E402
+from speedVsError import pareto  # noqa: E402
 
 tool = "chuteSteadyFlow.py"
 QUANTITIES = ("velocity", "height", "flux")
@@ -48,9 +50,10 @@ def run_setting(driver, folder, flags):
     os.makedirs(folder, exist_ok=True)
     log = os.path.join(folder, "run.log")
     if not (os.path.exists(log) and STEADY.search(open(log).read())):
-        said = run_driver(tool, driver, flags, folder)
+        # (Into run.log as it runs: the driver's progress lines show how far a long run is.)
         with open(log, "w") as f:
-            f.write(said)
+            if subprocess.run([driver] + flags, stdout=f, stderr=subprocess.STDOUT, cwd=folder).returncode != 0:
+                sys.exit(f"{tool}: {driver} {' '.join(flags)} failed: see {log}")
     said = open(log).read()
     steady, finished, step = STEADY.search(said), FINISHED.search(said), STEP.search(said)
     if not (steady and finished and step):
