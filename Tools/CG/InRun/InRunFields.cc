@@ -53,8 +53,13 @@ void InRunFields::startRun(Simulation& simulation) {
         CoarseGrainingSetup setup;
         setup.shape = o.shape;
         setup.coordinates = Coordinates::fromName(o.coordinates);
-        if (setup.coordinates.isCylindrical())
-            throw InputError("coordinates " + o.coordinates + ": cylindrical coordinates are not yet available during a run (use talus-cg on the files)");
+        if (setup.coordinates.isCylindrical()) {
+            if (o.axis < 0 || o.axis > 2)
+                throw InputError("coordinates " + o.coordinates + ": give the drum axis (axis 0, 1 or 2: x, y or z) through axisPoint");
+            if (o.points.empty() && !(o.lo && o.hi))
+                throw InputError("coordinates " + o.coordinates + ": give the grid's lo and hi (r in the first slot, the coordinate along the axis in the third) or points");
+            setup.coordinates.setAxis(o.axis, o.axisPoint);
+        }
         setup.width = o.widths ? WidthMatrix::diagonal((*o.widths)[0], (*o.widths)[1], (*o.widths)[2])
                                : WidthMatrix::isotropic(o.width);
         const Domain& domain = simulation.scene().domain();

@@ -55,6 +55,10 @@ struct InRunOptions {
     // file (the driver reads the fields itself).
     std::string name{};
     std::string coordinates = "XYZ";  // as talus-cg --coordinates (Fields/Coordinates.h)
+    // Cylindrical coordinates (RZ, R): the drum axis along x, y or z (0, 1, 2) through axisPoint;
+    // a grid then needs lo and hi: r in their first slot, the coordinate along the axis in the third.
+    int axis = -1;
+    Vec3 axisPoint{0, 0, 0};
     KernelShape shape = KernelShape::Lucy;
     double width = 1;                 // isotropic width w (Theory/CoarseGraining.md)
     std::optional<std::array<double, 3>> widths{};  // per axis, instead of `width`

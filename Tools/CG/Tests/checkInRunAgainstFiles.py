@@ -30,6 +30,13 @@ kernel at particle i and the sums over the particles:
       frame (forces are mostly compressive, |ft| <= 0.5 fn), so the bound is taken as 1e-8 times
       the largest |component| of the field in the frame.
   Stress: the kinetic and contact bounds added.
+  Cylindrical coordinates (RZ, R): a particle's radial and azimuthal velocities u_r, u_t come
+      from its two lab components across the axis (each printed to 5e-10 of itself: an error of
+      at most 5e-10 sqrt(2) |u|, |u|^2 = u_r^2 + u_t^2), and they enter the angular average with
+      the weights <W cos phi>, <W sin phi>, at most <W> in size. So Cauchy-Schwarz runs over the
+      weights <W> and |u|^2: K_RR and K_ThetaTheta in the bounds above are replaced by
+      2 (K_RR + K_ThetaTheta) (= 2 sum m |u|^2 <W>); the axial component is bounded as a lab
+      one. AngularVelocity = VelocityTheta / r: its bound divided by r.
 Positions printed with 15 digits (|x| <= 11 here: 6e-14) move each kernel value by at most
 |dW/dx| 6e-14 <= 1.8 W(0) / w 6e-14 (Lucy's largest slope is 16/9 W(0) / w, Gauss's 0.61),
 2.2e-13 W(0) for w = 0.5: an absolute 1e-12 times the frame's largest |value| of the column,
@@ -59,6 +66,14 @@ def read(path):
     return names, rows
 
 
+def pair(suffix, axes):
+    """The two components a tensor column's suffix names ('XZ', 'RTheta', 'ThetaAxial', ...)."""
+    for first in axes:
+        if suffix.startswith(first) and suffix[len(first):] in axes:
+            return first, suffix[len(first):]
+    sys.exit(f'FAIL: no components in {suffix!r}')
+
+
 def blocks(names, rows):
     """Rows grouped by the time column (one block for a time average, which has none)."""
     if 't' not in names:
@@ -81,7 +96,9 @@ def main():
     if sorted(a) != sorted(b):
         sys.exit(f'FAIL: the frames differ: in-run {sorted(a)}, files {sorted(b)}')
     col = {n: k for k, n in enumerate(names)}
-    axes = 'XYZ'
+    # The components of vectors and tensors: lab axes, or the local cylindrical basis (r, theta,
+    # along the axis) of coordinates RZ and R.
+    axes = ('R', 'Theta', 'Axial') if 'MomentumR' in col else ('X', 'Y', 'Z')
     worst, worst_where, density_rel, contacts_seen = 0.0, '', 0.0, False
     for time in sorted(a):
         ra, rb = a[time], b[time]
@@ -100,7 +117,7 @@ def main():
                 family_max[fam] = max((abs(r[k]) for r in rb for k in cols), default=0.0)
         contacts_seen = contacts_seen or family_max.get('ContactStress', 0) > 0
         for x, y in zip(ra, rb):
-            for n in ('x', 'y', 'z'):
+            for n in ('r', 'x', 'y', 'z'):
                 if n in col and x[col[n]] != y[col[n]]:
                     sys.exit(f'FAIL: t = {time}: the points differ')
             rho = y[col['Density']]
@@ -108,27 +125,31 @@ def main():
             for i, c in enumerate(axes):
                 p = y[col['Momentum' + c]]
                 K[c] = y[col['KineticStress' + c + c]] + (p * p / rho if rho > 0 else 0.0)
+            if 'R' in K:  # (cylindrical: the bounds of the components across the axis, below)
+                K['R'] = K['Theta'] = 2 * (K['R'] + K['Theta'])
             for name, k in col.items():
-                if name in ('t', 'x', 'y', 'z'):
+                if name in ('t', 'r', 'x', 'y', 'z'):
                     continue
                 F = y[k]
                 if name in ('Density', 'VolumeFraction'):
                     bound = 0.0  # (exact inputs: positions only)
                 elif name.startswith('Momentum'):
-                    c = name[-1]
+                    c = name[len('Momentum'):]
                     bound = 5e-10 * math.sqrt(max(rho * K[c], 0.0))
+                elif name == 'AngularVelocity':  # (VelocityTheta / r, at r > 0)
+                    bound = 5e-10 * math.sqrt(max(rho * K['Theta'], 0.0)) / rho / y[col['r']] if rho > 0 else 0.0
                 elif name.startswith('Velocity'):
-                    c = name[-1]
+                    c = name[len('Velocity'):]
                     bound = 5e-10 * math.sqrt(max(rho * K[c], 0.0)) / rho if rho > 0 else 0.0
                 elif name.startswith('KineticStress'):
-                    c1, c2 = name[-2], name[-1]
+                    c1, c2 = pair(name[len('KineticStress'):], axes)
                     bound = 2e-9 * math.sqrt(max(K[c1] * K[c2], 0.0))
                 elif name.startswith('ContactStress'):
                     bound = 1e-8 * family_max['ContactStress']
                 elif name.startswith('InteractionForce'):
                     bound = 1e-8 * family_max['InteractionForce']
                 elif name.startswith('Stress'):
-                    c1, c2 = name[-2], name[-1]
+                    c1, c2 = pair(name[len('Stress'):], axes)
                     bound = 2e-9 * math.sqrt(max(K[c1] * K[c2], 0.0)) + 1e-8 * family_max['ContactStress']
                 elif name.startswith('Concentration') or name.startswith('Density'):
                     bound = 0.0
