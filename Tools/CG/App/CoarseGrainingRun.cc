@@ -11,6 +11,7 @@
 #include "App/RunInputs.h"
 #include "App/WidthScanRun.h"
 #include "Fields/CoarseGrainer.h"
+#include "App/VtkFieldWriter.h"
 #include "Fields/DepthAverage.h"
 #include "Fields/DerivedFields.h"
 #include "Fields/EvaluationPoints.h"
@@ -125,6 +126,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     };
     std::unique_ptr<FieldWriter> fieldWriter;
     std::unique_ptr<CsvWriter> depthWriter;
+    std::unique_ptr<VtkFieldWriter> depthVtkWriter;  // (--output-format vtk)
     FieldSums layout = grainer.layout();
     int framesUsed = 0;
     // --time-smoothing (Fields/TimeSmoothing.h): the smoothed fields of the output times that no
@@ -152,7 +154,13 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
         if (options.depthAverage) {
             std::vector<std::vector<double>> rows;
             const DepthAverageCoverage coverage = depthAverage(layout, rowSums, pointsPerColumn, dz, options.bulkDensity, rows);
-            for (std::size_t c = 0; c < rows.size(); ++c) depthWriter->writeRow(time, points[c * pointsPerColumn], rows[c]);
+            if (depthVtkWriter) {
+                std::vector<double> table;
+                for (const std::vector<double>& r : rows) table.insert(table.end(), r.begin(), r.end());
+                depthVtkWriter->writeValues(frameFirstTime, time, table);
+            } else {
+                for (std::size_t c = 0; c < rows.size(); ++c) depthWriter->writeRow(time, points[c * pointsPerColumn], rows[c]);
+            }
             if (coverage.topDensityRatio > 1e-3 && !coverageWarned) {
                 coverageWarned = true;
                 log << "talus-cg: warning: --depth-average: at the top of the z range the density is " << str(coverage.topDensityRatio)
@@ -246,7 +254,25 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                                    "; velocity and concentration mass-weighted (Fields/DepthAverage.h)");
                 std::vector<int> axes = setup.coordinates.kernelAxes();
                 axes.pop_back();  // z, integrated out
-                depthWriter = std::make_unique<CsvWriter>(outputPath, axes, !options.timeAverage, depthAveragedColumns(layout), comments);
+                if (format == OutputFormat::Vtk) {
+                    // The columns' base points, one point along z at z = 0 (a cell of height 1 about it).
+                    FieldOutputSetup output;
+                    output.path = outputPath;
+                    output.coordinates = setup.coordinates;
+                    for (std::size_t p = 0; p < points.size(); p += static_cast<std::size_t>(pointsPerColumn))
+                        output.points.push_back({points[p][0], points[p][1], 0.0});
+                    output.grid = true;
+                    output.count = {grid.count[0], grid.count[1], 1};
+                    output.lo = {grid.lo[0], grid.lo[1], -0.5};
+                    output.hi = {grid.hi[0], grid.hi[1], 0.5};
+                    output.timeAverage = options.timeAverage;
+                    output.shape = setup.shape;
+                    output.width = setup.width;
+                    output.comments = comments;
+                    depthVtkWriter = std::make_unique<VtkFieldWriter>(output, depthAveragedColumns(layout));
+                } else {
+                    depthWriter = std::make_unique<CsvWriter>(outputPath, axes, !options.timeAverage, depthAveragedColumns(layout), comments);
+                }
             } else {
                 FieldOutputSetup output;
                 output.path = outputPath;
@@ -320,6 +346,7 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
     }
     if (fieldWriter) fieldWriter->close();
     if (depthWriter) depthWriter->close();
+    if (depthVtkWriter) depthVtkWriter->close();
     if (mixingWriter) mixingWriter->close();
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     log << "talus-cg: " << framesUsed << " frames (t = " << str(firstTime) << " to " << str(lastTime) << ")"

@@ -308,8 +308,11 @@ ProgramOptions parseOptions(int argc, const char* const* argv) {
     if (o.timeSmoothing && o.widthScan) throw InputError("--time-smoothing: not used by --width-scan");
     if (o.bulkDensity && !o.depthAverage) throw InputError("--bulk-density: only used with --depth-average");
     if (!o.mixingPath.empty() && !o.mixingSpecies) throw InputError("--mixing-output: needs --mixing K");
-    if (o.outputFormat != "csv" && (o.depthAverage || o.mixingSpecies)) {
-        throw InputError("--output-format " + o.outputFormat + ": depth averages and mixing indices are written as csv only");
+    if (o.outputFormat != "csv" && o.mixingSpecies) {
+        throw InputError("--output-format " + o.outputFormat + ": mixing indices are written as csv only");
+    }
+    if (o.outputFormat != "csv" && o.outputFormat != "vtk" && o.depthAverage) {
+        throw InputError("--output-format " + o.outputFormat + ": depth averages are written as csv or vtk");
     }
     const bool scanOption = o.scanRange[0] || o.scanRange[1] || o.scanRange[2] || !o.scanPoints.empty() ||
                             !o.scanField.empty();

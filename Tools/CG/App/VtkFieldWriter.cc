@@ -32,6 +32,14 @@ std::string VtkFieldWriter::framePath(const std::string& pvdPath, std::size_t in
     return pvdPath.substr(0, pvdPath.size() - 4) + suffix;
 }
 
+VtkFieldWriter::VtkFieldWriter(const FieldOutputSetup& setup, std::vector<OutputColumn> columns)
+    : VtkFieldWriter(setup) {
+    columns_ = std::move(columns);
+    fieldsOfSums_ = false;
+    arrays_.clear();
+    for (std::size_t c = 0; c < columns_.size(); ++c) arrays_.push_back({columns_[c].name, {static_cast<int>(c)}, {}});
+}
+
 VtkFieldWriter::VtkFieldWriter(const FieldOutputSetup& setup)
     : setup_(setup), columns_(derivedColumns(setup.layout)), arrays_(fieldArrays(setup.layout)) {
     if (!setup_.path.ends_with(".pvd")) {
@@ -50,6 +58,18 @@ std::size_t VtkFieldWriter::pointOfVtkId(std::size_t id) const {
 }
 
 void VtkFieldWriter::writeFrame(double firstTime, double time, const std::vector<double>& sums) {
+    // The derived fields of every point.
+    const std::size_t n = setup_.points.size(), fields = columns_.size();
+    std::vector<double> row, table(n * fields);
+    for (std::size_t p = 0; p < n; ++p) {
+        row.clear();
+        appendDerivedFields(setup_.layout, sums.data() + p * setup_.layout.count(), row);
+        for (std::size_t f = 0; f < fields; ++f) table[p * fields + f] = row[f];
+    }
+    writeValues(firstTime, time, table);
+}
+
+void VtkFieldWriter::writeValues(double firstTime, double time, const std::vector<double>& table) {
     const std::string path = framePath(setup_.path, times_.size(), setup_.grid);
     std::ofstream out(path, std::ios::binary);
     if (!out) throw InputError("-o: cannot write " + path);
@@ -102,7 +122,11 @@ void VtkFieldWriter::writeFrame(double firstTime, double time, const std::vector
         appended("UInt8", "types", 1, 1);
         out << "/>\n      </Cells>\n";
     }
-    out << "      <PointData Scalars=\"Density\" Vectors=\"Velocity\">\n";
+    if (fieldsOfSums_) {  // (ParaView's default colouring and glyphs)
+        out << "      <PointData Scalars=\"Density\" Vectors=\"Velocity\">\n";
+    } else {
+        out << "      <PointData>\n";
+    }
     for (const FieldArray& a : arrays_) {
         appended("Float64", a.name, a.columns.size(), sizeof(double));
         for (std::size_t c = 0; c < a.componentNames.size(); ++c) {
@@ -131,14 +155,8 @@ void VtkFieldWriter::writeFrame(double firstTime, double time, const std::vector
         const std::vector<std::uint8_t> types(n, 1);
         writeBlock(types.data(), n);
     }
-    // The derived fields of every point, then each array in VTK's order of the points.
+    // Each array in VTK's order of the points.
     const std::size_t fields = columns_.size();
-    std::vector<double> row, table(n * fields);
-    for (std::size_t p = 0; p < n; ++p) {
-        row.clear();
-        appendDerivedFields(setup_.layout, sums.data() + p * setup_.layout.count(), row);
-        for (std::size_t f = 0; f < fields; ++f) table[p * fields + f] = row[f];
-    }
     std::vector<double> block;
     for (const FieldArray& a : arrays_) {
         block.clear();

@@ -15,6 +15,9 @@
 // order XX XY XZ YX ... ZZ (KineticStress, symmetric, filled out from its 6 CSV columns;
 // ContactStress and Stress as they are). In cylindrical coordinates the image axes are (r, -, s)
 // and the components (R, Theta, Axial), named in each array's ComponentName attributes.
+// Depth averages (--depth-average --output-format vtk): the image of the columns' base points,
+// one point along z (at z = 0), each column of the CSV (Height, DepthAveragedVelocityX, ...) a
+// scalar array.
 //   NAME.cg_000000.vtu, ...  (a point list) <VTKFile type="UnstructuredGrid">: the points as
 //                            given (Float64), one vertex cell (type 1) each, the same PointData
 //                            arrays in the list's order
@@ -33,8 +36,12 @@ public:
     // Checks that setup.path is a .pvd name (throws InputError naming -o); the first file is
     // written by writeFrame.
     explicit VtkFieldWriter(const FieldOutputSetup& setup);
+    // Values derived elsewhere (depth averages): `columns` per point, each a scalar array.
+    VtkFieldWriter(const FieldOutputSetup& setup, std::vector<OutputColumn> columns);
 
     void writeFrame(double firstTime, double time, const std::vector<double>& sums) override;
+    // One frame of values: table[p * columns + c], p in the order of setup.points.
+    void writeValues(double firstTime, double time, const std::vector<double>& table);
     // Writes the .pvd collection of the frames written.
     void close() override;
 
@@ -49,6 +56,7 @@ private:
     FieldOutputSetup setup_;
     std::vector<OutputColumn> columns_;
     std::vector<FieldArray> arrays_;
+    bool fieldsOfSums_ = true;  // the fields of FieldSums (writeFrame), not a table of other values
     std::vector<double> times_;
 };
 
