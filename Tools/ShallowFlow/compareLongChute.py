@@ -11,7 +11,10 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
 
 1. The inflow: talus-cg depth averages (coordinates XZ, base excluded) of the maser box over
    the frames after the maser's activation give h_in, u_in and phi_in (the small spheres' share of
-   the solids), averaged over the box's interior and the frames.
+   the solids), averaged over the box's interior and the frames; and the basal slip a_s, from the
+   shape factor alpha = m_A int rho u^2 dz / (int rho u dz)^2 of the time-averaged velocity
+   profile in the box's interior columns, through the model's own relation alpha = 1 + (1 -
+   a_s)^2 / 3 (its linear profile, Documentation/ShallowFlow.md; --basal-slip gives a_s instead).
 2. The model: talus-shallow with that inflow, the friction law's parameters as given after "--"
    (default: its own, table 3.1), at the frames' times t'. It starts as the particles do: at the
    activation MaserFedChute seeds the first maser length of the chute with a copy of the maser's
@@ -96,6 +99,41 @@ def depth_averages(args, t, x_range, points, folder, t_last=None):
     return rows["x"], rows["Height"], rows["DepthAveragedVelocityX"], phi
 
 
+def slip_from_profile(dz, rho, p):
+    """The shape factor alpha = m_A int rho u^2 dz / (int rho u dz)^2 of one column (rho and the
+    momentum p = rho u at points dz apart; u^2 rho = p^2 / rho) and the basal slip a_s of the
+    model's linear profile with that alpha, a_s = 1 - sqrt(3 (alpha - 1)) (1 for alpha <= 1)."""
+    mass = np.sum(rho) * dz
+    flux = np.sum(p) * dz
+    energy = np.sum(np.where(rho > 0, p * p / np.where(rho > 0, rho, 1.0), 0.0)) * dz
+    alpha = mass * energy / (flux * flux)
+    return alpha, 1.0 - math.sqrt(3.0 * max(alpha - 1.0, 0.0))
+
+
+def measured_slip(args, t_first, t_last, folder):
+    """alpha and a_s of the maser box's interior (columns farther than a width from its ends),
+    from talus-cg's XZ fields time-averaged over the frames t_first..t_last (base excluded)."""
+    out = os.path.join(folder, "maser-profile.csv")
+    columns = max(4, int(args.maser_length))
+    command = [args.talus_cg, args.run, "--coordinates", "XZ", "--widths", str(args.widths[0]), "1", str(args.widths[1]),
+               "-x", "0", str(args.maser_length), "-z", str(args.z_range[0]), str(args.z_range[1]),
+               "-n", str(columns), str(args.z_points), "--time-average", "--fixed", "exclude",
+               "--fixed-species", args.base_species, "--periodic", "y", "--stress", "off",
+               "--time-min", repr(t_first - 1e-6), "--time-max", repr(t_last + 1e-6), "-o", out]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        fail("talus-cg failed: " + " ".join(command) + "\n" + done.stderr)
+    rows = read_csv(out)
+    dz = (args.z_range[1] - args.z_range[0]) / args.z_points
+    alphas = []
+    for x in np.unique(rows["x"]):
+        if args.widths[0] < x < args.maser_length - args.widths[0]:
+            column = rows["x"] == x
+            alphas.append(slip_from_profile(dz, rows["Density"][column], rows["MomentumX"][column])[0])
+    alpha = float(np.mean(alphas))
+    return alpha, 1.0 - math.sqrt(3.0 * max(alpha - 1.0, 0.0))
+
+
 def read_csv(path):
     """A CSV file with '#' comment lines before its names line: a dict of columns."""
     with open(path) as f:
@@ -167,6 +205,8 @@ def main():
                         help="dL in the run's units (default 1.1150: size ratio 2^(1/3) at mean diameter 1)")
     parser.add_argument("--maser-length", type=float, required=True, help="the maser box's length, run units")
     parser.add_argument("--chute-length", type=float, required=True, help="the open chute's length, run units")
+    parser.add_argument("--basal-slip", type=float, default=None,
+                        help="a_s for the model (default: from the maser's velocity profile)")
     parser.add_argument("--seeded-length", type=float, default=None,
                         help="the chute's length seeded at the activation, run units (default: the maser length; 0: none)")
     parser.add_argument("--small-species", default="1,4", help="species of the small spheres (default 1,4: chute, maser)")
@@ -198,6 +238,11 @@ def main():
         inside = (x > w) & (x < args.maser_length - w)
         h_in, u_in, phi_in = h[inside].mean(), u[inside].mean(), phi[inside].mean()
         print(f"inflow from the maser ({len(after)} frames): h = {h_in / dl:.4g} dL, u = {u_in / tu:.4g}, phi = {phi_in:.4g}")
+        if args.basal_slip is None:
+            alpha, slip = measured_slip(args, after[0], after[-1], folder)
+            print(f"velocity profile in the maser: alpha = {alpha:.4g}, so a_s = {slip:.4g}")
+        else:
+            slip = args.basal_slip
 
         # 2. The model at the frames' times, from the chute as the activation left it.
         times = [(t - activated) / tu for t in chosen]
@@ -209,7 +254,7 @@ def main():
         command = [args.talus_shallow, "--length", repr(length), "--initial", start,
                    "--cells", str(cells), "--end-time", repr(max(times)),
                    "--output-times", ",".join(repr(t) for t in times), "--inflow-height", repr(h_in / dl),
-                   "--inflow-velocity", repr(u_in / tu), "--inflow-concentration", repr(phi_in),
+                   "--inflow-velocity", repr(u_in / tu), "--inflow-concentration", repr(phi_in), "--basal-slip", repr(slip),
                    "--output", prefix] + args.shallow
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:

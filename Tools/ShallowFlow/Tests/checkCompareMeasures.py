@@ -6,7 +6,10 @@ front at x = 120 (h = 0.3, phi = 1), which must be neither the front nor the sho
 bouncing far ahead (h = 0.8 around x = 160, beyond a 25-long stretch below 0.5) must not be the
 front either, while a dip below 0.5 shorter than that inside the flow does not end it. And the
 model's start (write_start): the inflow state in the cells whose centres lie within the seeded
-length, nothing beyond, one line per cell at its centre. Prints "compare measures ok"."""
+length, nothing beyond, one line per cell at its centre. And the basal slip from a velocity
+profile (slip_from_profile): a column of uniform density with the model's linear profile
+u = a_s U + 2 (1 - a_s) U z / h gives back a_s (alpha = 1 + (1 - a_s)^2 / 3 by hand), a plug
+flow a_s = 1, and empty points above the flow change nothing. Prints "compare measures ok"."""
 import math
 import os
 import sys
@@ -49,6 +52,15 @@ with tempfile.TemporaryDirectory() as folder:
     elif [r[0] for r in rows[:2]] != [1.25, 3.75] or [r[1] for r in rows[7:9]] != [15.5, 0.0] or \
             rows[7][1:] != [15.5, 4.1, 0.5] or any(r[1:] != [0.0, 0.0, 0.0] for r in rows[8:]):
         bad.append(f"start file: rows 0-1 {rows[:2]}, 7-8 {rows[7:9]}")
+dz = 0.01
+z = np.arange(0.5 * dz, 12.0, dz)  # points up to 12, the flow up to h = 10
+inside = z < 10.0
+for slip in (0.17, 0.5, 1.0):
+    rho = np.where(inside, 2.0, 0.0)
+    u = slip * 3.0 + 2 * (1 - slip) * 3.0 * z / 10.0
+    alpha, measured = c.slip_from_profile(dz, rho, rho * u)
+    if not (math.isclose(alpha, 1 + (1 - slip) ** 2 / 3, rel_tol=1e-5) and abs(measured - slip) < 1e-3):
+        bad.append(f"slip {slip}: alpha {alpha}, a_s {measured}")
 if bad:
     sys.exit("compare measures: " + "; ".join(bad))
 print("compare measures ok")
