@@ -23,8 +23,8 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
 3. The particles: the depth averages along the chute at the frames nearest to --times (kernel
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
-4. Per time, for both: the front (the last x' where h reaches 0.5 in the flow connected to the
-   inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front),
+4. Per time, for both: the front (the last x' where h reaches 0.5, or --front-height, in the
+   flow connected to the inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front),
    the shock (the last x' where phi reaches 0.25 among those where h is at least 1), the head's
    height (the largest h) and length (front - shock: the part of the flow that holds large
    particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
@@ -175,11 +175,11 @@ def connected_front(x, h, level, gap):
     return crossing_after(x, h, k, level)
 
 
-def measures(x, h, phi, front_gap=FRONT_GAP):
+def measures(x, h, phi, front_gap=FRONT_GAP, front_height=FRONT_HEIGHT):
     """Front, shock, head height and length. The front is that of the flow connected to the
     inflow (connected_front). The shock is sought where h is at least one large diameter: near
     the particles' front a few grains make phi anything from 0 to 1."""
-    front = connected_front(x, h, FRONT_HEIGHT, front_gap)
+    front = connected_front(x, h, front_height, front_gap)
     shock = last_crossing(x, np.where(h >= 1.0, phi, 0.0), SHOCK_CONCENTRATION)
     return {"front": front, "shock": shock, "head_height": float(np.max(h)), "head_length": front - shock}
 
@@ -205,6 +205,9 @@ def main():
                         help="dL in the run's units (default 1.1150: size ratio 2^(1/3) at mean diameter 1)")
     parser.add_argument("--maser-length", type=float, required=True, help="the maser box's length, run units")
     parser.add_argument("--chute-length", type=float, required=True, help="the open chute's length, run units")
+    parser.add_argument("--front-height", type=float, default=FRONT_HEIGHT,
+                        help=f"the level (in dL) that marks the front (default {FRONT_HEIGHT}: the thinnest flow; "
+                             "1-4 dL leave out the dilute grains rolling ahead of the dense flow)")
     parser.add_argument("--basal-slip", type=float, default=None,
                         help="a_s for the model (default: from the maser's velocity profile)")
     parser.add_argument("--seeded-length", type=float, default=None,
@@ -269,7 +272,8 @@ def main():
             xs, hs, phis = (x - args.maser_length) / dl, h / dl, phi
             nearest = model["t"][np.argmin(np.abs(model["t"] - t_thesis))]  # (the time as the model printed it)
             m = {k: v[model["t"] == nearest] for k, v in model.items()}
-            dpm, cont = measures(xs, hs, phis), measures(m["x"], m["h"], m["phi"])
+            dpm = measures(xs, hs, phis, front_height=args.front_height)
+            cont = measures(m["x"], m["h"], m["phi"], front_height=args.front_height)
             results.append({"t": t_thesis, **{f"{k}_particles": v for k, v in dpm.items()},
                             **{f"{k}_model": v for k, v in cont.items()}})
             profiles.append((t_thesis, xs, hs, hs * phis, m["x"], m["h"], m["hphi"]))
