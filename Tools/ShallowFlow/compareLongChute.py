@@ -24,11 +24,11 @@ diameter dL (--large-diameter, in the run's units) and sqrt(dL/g): x' = (x - mas
    widths --widths: wide along x, narrow in z, as anisotropic coarse graining of shallow flows
    takes them), h and phi against x'.
 4. Per time, for both: the front (the last x' where h reaches 0.5, or --front-height, in the
-   flow connected to the inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below 0.5, are not its front),
-   the shock (the last x' where phi reaches 0.25 among those where h is at least 1), the head's
-   height (the largest h) and length (front - shock: the part of the flow that holds large
-   particles only). PREFIX.csv holds them, PREFIX-profiles.png overlays the
-   profiles, PREFIX-fronts.png the positions against time.
+   flow connected to the inflow: grains bouncing ahead of it, beyond a stretch of 25 dL below
+   that level, are not its front), the shock (the last x' where phi reaches 0.25 among those
+   where h is at least 1), the head's height (the largest h) and length (front - shock: the part
+   of the flow that holds large particles only). PREFIX.csv holds them, PREFIX-profiles.png
+   overlays the profiles, PREFIX-fronts.png the positions against time.
 """
 import argparse
 import csv
