@@ -52,9 +52,8 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                                              turn * c.j.rotation);
                 }
                 if (kind == reference::Case::sphereOnEllipsoid) {
-                    const double r = c.shapeI.a(), inverse = 1 / r;
-                    Mat3 sphere = Mat3::Zero();
-                    sphere.diagonal().setConstant(inverse * inverse);
+                    const double r = c.shapeI.a();
+                    const Mat3 sphere = EllipsoidContactBatch::sphereQuadric(r);
                     batch.add(0, 0, 1, {c.i.centre, sphere, r}, {c.j.centre, c.j.quadric, c.shapeJ.boundingRadius()}, start);
                 } else {
                     batch.add(0, 0, 1, c.i, c.j.centre, c.j, start);

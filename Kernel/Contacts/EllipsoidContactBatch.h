@@ -1,8 +1,7 @@
 // Lasting contacts of two ellipsoids (a sphere counts as one: Q = I / r^2), gathered in batches
 // and taken one Newton iteration forward lane by lane, in loops of plain numbers that the
-// compiler vectorises: the warm-started exact
-// stage of Theory/Superquadrics.md for the common case, as ContactBatch (ContactBatch.h) does the
-// sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
+// compiler vectorises: the warm-started exact stage of Theory/Superquadrics.md for the common
+// case, as ContactBatch (ContactBatch.h) does the sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
 // residual, normal, the two distances); one at a time, the core cannot overlap it with the next
 // contact's (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
 //
@@ -95,6 +94,15 @@ struct EllipsoidContactBatch {
         }
     }
 
+    // A plain sphere's quadric I / r^2, formed as the frame of Superquadric::sphere(r) forms it
+    // (diag((1/r)^2): SuperquadricContact.h, PlacedSuperquadric), so that a lane's answer is the
+    // scalar path's to the bit of its inputs.
+    static Mat3 sphereQuadric(double radius) {
+        const double inverse = 1 / radius;
+        Mat3 q = Mat3::Zero();
+        q.diagonal().setConstant(inverse * inverse);
+        return q;
+    }
     // A body as the batch sees it: its centre, its quadric Q and its bounding radius.
     struct Body {
         const Vec3& centre;

@@ -70,15 +70,12 @@ bool ContactForceLoopInLanes<Law>::isRound(std::uint32_t i) const {
 }
 
 // Particle i (at `centre`: its own position or j's image) for the batch: an ellipsoid's placed
-// frame, or a plain sphere's quadric I / r^2 (in `sphere`), formed as the frame of
-// Superquadric::sphere(r) would form it (diag((1/r)^2)), with its bounding radius r.
+// frame, or a plain sphere's quadric (kept in `sphere`) with its bounding radius r.
 template <class Law>
 EllipsoidContactBatch::Body ContactForceLoopInLanes<Law>::batchBody(const std::vector<PlacedSuperquadric>& frames,
                                                                     std::uint32_t i, const Vec3& centre, Mat3& sphere) const {
     if (p_.shape[i] >= 0) return {centre, frames[i].quadric, frames[i].shape->boundingRadius()};
-    const double inverse = 1 / p_.radius[i];
-    sphere = Mat3::Zero();
-    sphere.diagonal().setConstant(inverse * inverse);
+    sphere = EllipsoidContactBatch::sphereQuadric(p_.radius[i]);
     return {centre, sphere, p_.radius[i]};
 }
 

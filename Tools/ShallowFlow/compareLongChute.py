@@ -80,50 +80,53 @@ def frame_times(run):
                     fail(f"{run}.data: the frame at t = {time} is incomplete")
 
 
-def depth_averages(args, t, x_range, points, folder, t_last=None):
-    """talus-cg's depth averages of the frame at t (or of every frame from t to t_last, rows one
-    block per frame): x, the height, the velocity along x, phi."""
-    out = os.path.join(folder, f"depth-{t:.6f}.csv")
+def coarse_grained(args, x_range, points, t_first, t_last, how, out):
+    """talus-cg's XZ fields of the run's frames t_first..t_last (base excluded, Lucy widths
+    --widths, --z-points over --z-range) with the options `how` (--depth-average, --time-average),
+    read from `out`: a dict of columns."""
     command = [args.talus_cg, args.run, "--coordinates", "XZ", "--widths", str(args.widths[0]), "1", str(args.widths[1]),
                "-x", str(x_range[0]), str(x_range[1]), "-z", str(args.z_range[0]), str(args.z_range[1]),
-               "-n", str(points), str(args.z_points), "--depth-average", "--fixed", "exclude",
-               "--fixed-species", args.base_species, "--periodic", "y",
-               "--stress", "off", "--time-min", repr(t - 1e-6), "--time-max", repr((t if t_last is None else t_last) + 1e-6),
-               "-o", out]
+               "-n", str(points), str(args.z_points)] + how + [
+               "--fixed", "exclude", "--fixed-species", args.base_species, "--periodic", "y",
+               "--stress", "off", "--time-min", repr(t_first - 1e-6), "--time-max", repr(t_last + 1e-6), "-o", out]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         fail("talus-cg failed: " + " ".join(command) + "\n" + done.stderr)
-    rows = read_csv(out)
+    return read_csv(out)
+
+
+def depth_averages(args, t, x_range, points, folder, t_last=None):
+    """talus-cg's depth averages of the frame at t (or of every frame from t to t_last, rows one
+    block per frame): x, the height, the velocity along x, phi."""
+    rows = coarse_grained(args, x_range, points, t, t if t_last is None else t_last, ["--depth-average"],
+                          os.path.join(folder, f"depth-{t:.6f}.csv"))
     phi = sum(rows[f"DepthAveragedConcentration_s{s}"] for s in args.small_species
               if f"DepthAveragedConcentration_s{s}" in rows)
     return rows["x"], rows["Height"], rows["DepthAveragedVelocityX"], phi
 
 
+def slip_of_shape_factor(alpha):
+    """The basal slip a_s of the model's linear profile with shape factor alpha = 1 + (1 - a_s)^2 / 3
+    (1 for alpha <= 1)."""
+    return 1.0 - math.sqrt(3.0 * max(alpha - 1.0, 0.0))
+
+
 def slip_from_profile(dz, rho, p):
     """The shape factor alpha = m_A int rho u^2 dz / (int rho u dz)^2 of one column (rho and the
-    momentum p = rho u at points dz apart; u^2 rho = p^2 / rho) and the basal slip a_s of the
-    model's linear profile with that alpha, a_s = 1 - sqrt(3 (alpha - 1)) (1 for alpha <= 1)."""
+    momentum p = rho u at points dz apart; u^2 rho = p^2 / rho) and its basal slip a_s
+    (slip_of_shape_factor)."""
     mass = np.sum(rho) * dz
     flux = np.sum(p) * dz
     energy = np.sum(np.where(rho > 0, p * p / np.where(rho > 0, rho, 1.0), 0.0)) * dz
     alpha = mass * energy / (flux * flux)
-    return alpha, 1.0 - math.sqrt(3.0 * max(alpha - 1.0, 0.0))
+    return alpha, slip_of_shape_factor(alpha)
 
 
 def measured_slip(args, t_first, t_last, folder):
     """alpha and a_s of the maser box's interior (columns farther than a width from its ends),
     from talus-cg's XZ fields time-averaged over the frames t_first..t_last (base excluded)."""
-    out = os.path.join(folder, "maser-profile.csv")
-    columns = max(4, int(args.maser_length))
-    command = [args.talus_cg, args.run, "--coordinates", "XZ", "--widths", str(args.widths[0]), "1", str(args.widths[1]),
-               "-x", "0", str(args.maser_length), "-z", str(args.z_range[0]), str(args.z_range[1]),
-               "-n", str(columns), str(args.z_points), "--time-average", "--fixed", "exclude",
-               "--fixed-species", args.base_species, "--periodic", "y", "--stress", "off",
-               "--time-min", repr(t_first - 1e-6), "--time-max", repr(t_last + 1e-6), "-o", out]
-    done = subprocess.run(command, capture_output=True, text=True)
-    if done.returncode != 0:
-        fail("talus-cg failed: " + " ".join(command) + "\n" + done.stderr)
-    rows = read_csv(out)
+    rows = coarse_grained(args, (0, args.maser_length), max(4, int(args.maser_length)), t_first, t_last,
+                          ["--time-average"], os.path.join(folder, "maser-profile.csv"))
     dz = (args.z_range[1] - args.z_range[0]) / args.z_points
     alphas = []
     for x in np.unique(rows["x"]):
@@ -131,7 +134,7 @@ def measured_slip(args, t_first, t_last, folder):
             column = rows["x"] == x
             alphas.append(slip_from_profile(dz, rows["Density"][column], rows["MomentumX"][column])[0])
     alpha = float(np.mean(alphas))
-    return alpha, 1.0 - math.sqrt(3.0 * max(alpha - 1.0, 0.0))
+    return alpha, slip_of_shape_factor(alpha)
 
 
 def read_csv(path):

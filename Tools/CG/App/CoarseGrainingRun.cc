@@ -9,9 +9,9 @@
 #include "App/CsvWriter.h"
 #include "App/FieldWriter.h"
 #include "App/RunInputs.h"
+#include "App/VtkFieldWriter.h"
 #include "App/WidthScanRun.h"
 #include "Fields/CoarseGrainer.h"
-#include "App/VtkFieldWriter.h"
 #include "Fields/DepthAverage.h"
 #include "Fields/DerivedFields.h"
 #include "Fields/EvaluationPoints.h"
@@ -247,47 +247,41 @@ int runCoarseGraining(const ProgramOptions& options, std::ostream& log) {
                                          " by " + kernelShapeName(options.timeShape) + " of width " + str(*options.timeSmoothing) +
                                          ", weights normalised at each output time (Fields/TimeSmoothing.h); one block per output time"
                                    : "; one block of rows per frame"));
+            // What every writer of the fields needs (the depth averages' VTK image: see below).
+            FieldOutputSetup output;
+            output.path = outputPath;
+            output.coordinates = setup.coordinates;
+            output.layout = layout;
+            output.points = points;
+            output.grid = options.pointsPath.empty();
+            output.count = grid.count;
+            output.lo = grid.lo;
+            output.hi = grid.hi;
+            output.timeAverage = options.timeAverage;
+            output.shape = setup.shape;
+            output.width = setup.width;
             if (options.depthAverage) {
                 comments.push_back("depth averages over z (midpoint rule, dz = " + str(dz) + "): " +
                                    (options.bulkDensity ? "height = mass per area / bulk density " + str(*options.bulkDensity)
                                                         : std::string("bulk density = mass-weighted mean density")) +
                                    "; velocity and concentration mass-weighted (Fields/DepthAverage.h)");
+            }
+            output.comments = comments;
+            if (!options.depthAverage) {
+                fieldWriter = makeFieldWriter(format, output);
+            } else if (format == OutputFormat::Vtk) {
+                // The columns' base points, one point along z at z = 0 (a cell of height 1 about it).
+                output.points.clear();
+                for (std::size_t p = 0; p < points.size(); p += static_cast<std::size_t>(pointsPerColumn))
+                    output.points.push_back({points[p][0], points[p][1], 0.0});
+                output.count[2] = 1;
+                output.lo[2] = -0.5;
+                output.hi[2] = 0.5;
+                depthVtkWriter = std::make_unique<VtkFieldWriter>(output, depthAveragedColumns(layout));
+            } else {
                 std::vector<int> axes = setup.coordinates.kernelAxes();
                 axes.pop_back();  // z, integrated out
-                if (format == OutputFormat::Vtk) {
-                    // The columns' base points, one point along z at z = 0 (a cell of height 1 about it).
-                    FieldOutputSetup output;
-                    output.path = outputPath;
-                    output.coordinates = setup.coordinates;
-                    for (std::size_t p = 0; p < points.size(); p += static_cast<std::size_t>(pointsPerColumn))
-                        output.points.push_back({points[p][0], points[p][1], 0.0});
-                    output.grid = true;
-                    output.count = {grid.count[0], grid.count[1], 1};
-                    output.lo = {grid.lo[0], grid.lo[1], -0.5};
-                    output.hi = {grid.hi[0], grid.hi[1], 0.5};
-                    output.timeAverage = options.timeAverage;
-                    output.shape = setup.shape;
-                    output.width = setup.width;
-                    output.comments = comments;
-                    depthVtkWriter = std::make_unique<VtkFieldWriter>(output, depthAveragedColumns(layout));
-                } else {
-                    depthWriter = std::make_unique<CsvWriter>(outputPath, axes, !options.timeAverage, depthAveragedColumns(layout), comments);
-                }
-            } else {
-                FieldOutputSetup output;
-                output.path = outputPath;
-                output.coordinates = setup.coordinates;
-                output.layout = layout;
-                output.points = points;
-                output.grid = options.pointsPath.empty();
-                output.count = grid.count;
-                output.lo = grid.lo;
-                output.hi = grid.hi;
-                output.timeAverage = options.timeAverage;
-                output.shape = setup.shape;
-                output.width = setup.width;
-                output.comments = comments;
-                fieldWriter = makeFieldWriter(format, output);
+                depthWriter = std::make_unique<CsvWriter>(outputPath, axes, !options.timeAverage, depthAveragedColumns(layout), comments);
             }
             if (options.mixingSpecies) {
                 std::vector<std::string> mixingComments = comments;
