@@ -36,6 +36,11 @@ MixingIndices mixingIndices(const ParticleStore& p, std::size_t sphereSpecies, d
                                   static_cast<int>(sphereSpecies));
 }
 
+const char* whereTheSpheresAre(const MixingIndices& indices) {
+    if (std::isnan(indices.segregation)) return "one kind only";
+    return indices.speciesAtCore ? "spheres at the core" : "spheres at the periphery";
+}
+
 double surfaceAngle(const ParticleStore& p, double binWidth, double centralFraction) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < p.size(); ++i)

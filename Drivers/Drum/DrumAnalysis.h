@@ -29,6 +29,9 @@ using cg::MixingIndices;
 MixingIndices mixingIndices(const ParticleStore& particles, std::size_t sphereSpecies, double extent, int cells,
                             double width);
 
+// "spheres at the core", "spheres at the periphery", or "one kind only" (S is NaN).
+const char* whereTheSpheresAre(const MixingIndices& indices);
+
 // Dynamic angle of repose, in degrees, of the free surface of a bed turning counter-clockwise
 // in the (x, z) plane: the surface rises towards +x. Method: the bed's mobile particles are
 // sorted into columns of width `binWidth` along x; a column's surface particle is the one with the

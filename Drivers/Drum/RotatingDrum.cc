@@ -18,7 +18,8 @@ RotatingDrum::RotatingDrum() {
     run().addFlag("length", "periodic length of the drum along its axis y", length);
     run().addFlag("aspect", "aspect ratio R of the ellipsoids (a = R^(2/3)/2, b = c = R^(-1/3)/2)", aspect);
     run().addFlag("fill", "fraction of the drum's cross-section the bed fills, in (0, 1)", fill);
-    run().addFlag("particles", "number of particles, half spheres, half ellipsoids (0: from --fill)", particleCount);
+    run().addFlag("particles", "number of particles (0: from --fill)", particleCount);
+    run().addFlag("sphere-fraction", "the fraction of the particles that are spheres, the rest ellipsoids", sphereFraction);
     run().addFlag("froude", "Froude number F = w^2 r / g of the rotation", froude);
     run().addTextFlag("wall", "particles (a wrapped rough layer of d = 0.5) or smooth (the cylinder wall)", wallType);
     run().addFlag("seed", "seed of the wall layer and of the insertion", seed);
@@ -41,6 +42,7 @@ void RotatingDrum::checkFlags() const {
     require(fill > 0 && fill < 1, "--fill must lie in (0, 1), got " + str(fill));
     require(wallType == "particles" || wallType == "smooth", "--wall must be particles or smooth, got '" + wallType + "'");
     require(particleCount >= 0, "--particles must not be negative, got " + std::to_string(particleCount));
+    require(sphereFraction >= 0 && sphereFraction <= 1, "--sphere-fraction must lie in [0, 1], got " + str(sphereFraction));
     require(std::isfinite(froude) && froude > 0 && froude < 1,
             "--froude must lie in (0, 1) (F >= 1 centrifuges the bed), got " + str(froude));
     require(sampleInterval > 0, "--sample-interval must be positive, got " + str(sampleInterval));
@@ -69,12 +71,11 @@ void RotatingDrum::setupInitialConditions() {
         shape_ = scene().addShape(Superquadric::ellipsoid(std::cbrt(aspect * aspect) / 2, 0.5 / std::cbrt(aspect), 0.5 / std::cbrt(aspect)));
     // The drum turns later (startRotation); its motion exists from the start, at rest.
     const int motion = static_cast<int>(scene().addMotion(PrescribedMotion{}));
-    if (wallType == "smooth") {
+    innerRadius_ = radius;  // (a wall of particles narrows it: addParticleWall)
+    if (wallType == "smooth")
         scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), radius, wallSpecies, motion);
-        innerRadius_ = radius;
-    } else {
+    else
         addParticleWall(wallSpecies, motion);
-    }
 
     const double crossSection = pi * innerRadius_ * innerRadius_;
     targetCount_ = particleCount > 0 ? particleCount
@@ -96,7 +97,6 @@ void RotatingDrum::addParticleWall(std::size_t wallSpecies, int motion) {
     flat.setChuteGeometry({.length = 2 * pi * radius, .width = length, .height = 1, .periodicEnds = true});
     flat.scene().addSpecies("wall", 1, LinearSpringDashpot::fromCollision(collisionTime, restitution, 0.5));
     flat.addBase(ChuteBase::disordered, wallDiameter, 0, static_cast<std::uint64_t>(seed));
-    innerRadius_ = radius;
     for (std::size_t i = 0; i < flat.scene().particles().size(); ++i) {
         const Vec3& x = flat.scene().particles().position[i];  // (all fixed: the base alone)
         const double angle = x.x() / radius, r = radius + x.z();
@@ -113,8 +113,8 @@ int RotatingDrum::insertRemaining() {
     const Filling drum(Cylinder(Vec3::Zero(), /*axis y*/ 1, length, innerRadius_), 1000, Filling::CandidateMargin::largestRadius);
     const int ellipsoidShape = aspect > 1 ? static_cast<int>(shape_) : -1;
     std::vector<int> inserted = {insertedSpheres_, insertedEllipsoids_};
-    const int placed = static_cast<int>(drum.fillInTurn(*this, {{.species = 0, .target = targetCount_ / 2 + targetCount_ % 2},
-        {.species = 1, .shape = ellipsoidShape, .target = targetCount_ / 2}}, inserted).inserted);
+    const int placed = static_cast<int>(drum.fillInTurn(*this, {{.species = 0, .target = targetSpheres()},
+        {.species = 1, .shape = ellipsoidShape, .target = targetCount_ - targetSpheres()}}, inserted).inserted);
     insertedSpheres_ = inserted[0], insertedEllipsoids_ = inserted[1], lastInsertion_ = time();
     say(*this, "%s: insertion round %d at t = %g: placed %d, %d of %d in (%d spheres, %d ellipsoids)\n", settings().name.c_str(),
         ++rounds_, time(), placed, particlesInserted(), targetCount_, insertedSpheres_, insertedEllipsoids_);
@@ -135,8 +135,8 @@ void RotatingDrum::startRotation() {
     rotationStart_ = time();
     const int missing = targetCount_ - particlesInserted();
     const std::string missed = ", " + std::to_string(missing) + " particles could not be inserted: " +
-        std::to_string(targetCount_ / 2 + targetCount_ % 2 - insertedSpheres_) + " spheres, " +
-        std::to_string(targetCount_ / 2 - insertedEllipsoids_) + " ellipsoids";
+        std::to_string(targetSpheres() - insertedSpheres_) + " spheres, " +
+        std::to_string(targetCount_ - targetSpheres() - insertedEllipsoids_) + " ellipsoids";
     say(*this, "%s: bed at rest at t = %g (kinetic energy per particle %.3g); rotating at w = %.6g (F = %g, one turn in "
         "%.4g)%s\n", settings().name.c_str(), time(), bedEnergy() / particlesInserted(), w, froude, 2 * pi / w, missing ? missed.c_str() : "");
 }
@@ -183,9 +183,9 @@ void RotatingDrum::writeSample() {
 
 void RotatingDrum::actionsAfterSolve() {
     const drum::MixingIndices mixing = mixingOf(gatherParticles(*this));
-    say(*this, "%s: at t = %g after %.3g rotations: M = %.8f, S = %.8f (spheres at the %s); mean angle of repose "
+    say(*this, "%s: at t = %g after %.3g rotations: M = %.8f, S = %.8f (%s); mean angle of repose "
         "after the first turn %.2f degrees (%d samples); %d of %d particles in the drum\n", settings().name.c_str(), time(),
-        rotations(), mixing.mixing, mixing.segregation, mixing.speciesAtCore ? "core" : "periphery",
+        rotations(), mixing.mixing, mixing.segregation, drum::whereTheSpheresAre(mixing),
         angleSamples_ > 0 ? angleSum_ / angleSamples_ : NAN, angleSamples_, particlesInserted(), targetCount_);
 }
 

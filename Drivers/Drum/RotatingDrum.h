@@ -1,7 +1,7 @@
 // The rotating drum of Theory/RotatingDrum.md (Denissen 2019, sec. 5.2): spheres and prolate
 // ellipsoids of equal volume mixing or segregating in a drum turning about its horizontal axis y.
 //
-// Methods. Half of N particles are spheres of diameter 1, half prolate ellipsoids of semi-axes
+// Methods. Half of N particles (--sphere-fraction) are spheres of diameter 1, the rest prolate ellipsoids of semi-axes
 // a = R^(2/3)/2, b = c = R^(-1/3)/2 (aspect ratio R, --aspect; the same volume pi/6), all of
 // density 6/pi (mass 1). Contacts are linear spring-dashpots with tc = 0.05 and e = 0.1 for two
 // particles (reduced mass 1/2), kt = 2/7 kn, gt = gn and sliding friction 0.5; dt = tc/50. The
@@ -38,7 +38,7 @@ public:
     // Flags (the thesis's full scale is --radius 15, Theory/RotatingDrum.md; the defaults are a
     // scaled-down drum).
     double radius = 6, length = 6, aspect = 2, fill = 0.4, froude = 0.01;
-    double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1, turnsToRun = 0;
+    double sampleInterval = 1, settledEnergy = 1e-4, cgWidth = 1, turnsToRun = 0, sphereFraction = 0.5;
     int particleCount = 0, seed = 1, insertionRounds = 20;
     std::string wallType = "particles";
 
@@ -57,6 +57,8 @@ public:
     double rotations() const { return rotating() ? angularSpeed() * (time() - rotationStart_) / (2 * pi) : 0.0; }
     int particlesToInsert() const { return targetCount_; }
     int particlesInserted() const { return insertedSpheres_ + insertedEllipsoids_; }
+    // Of the particles to insert, the spheres (half of an odd count rounded up).
+    int targetSpheres() const { return static_cast<int>(std::lround(targetCount_ * sphereFraction)); }
     // Distance from the axis within which the bed's bounding spheres must lie.
     double innerRadius() const { return innerRadius_; }
     std::size_t sphereSpecies() const { return 0; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "Fields/CoarseGrainer.h"
@@ -36,7 +37,7 @@ MixingIndices mixingIndices(const FieldSums& layout, const std::vector<Vec3>& po
     }
     if (!(mass > 0)) throw InputError("--mixing: no mass at the evaluation points, the mixing index is undefined");
     MixingIndices result;
-    result.mixing = -entropy / (std::numbers::ln2 * mass);
+    result.mixing = entropy < 0 ? -entropy / (std::numbers::ln2 * mass) : 0.0;  // (m <= 0; not -0 for one kind)
     for (int k = 0; k < 3; ++k) result.centre[k] = coordinates.resolves(k) ? moment[k] / mass : 0.0;
     double speciesDistance = 0, materialDistance = 0;
     for (std::size_t p = 0; p < points.size(); ++p) {
@@ -53,6 +54,9 @@ MixingIndices mixingIndices(const FieldSums& layout, const std::vector<Vec3>& po
     result.speciesDistance = speciesMass > 0 ? speciesDistance / speciesMass : 0.0;
     result.speciesAtCore = speciesMass > 0 && result.speciesDistance < result.materialDistance;
     result.segregation = result.speciesAtCore ? result.mixing - 1 : 1 - result.mixing;
+    // One kind alone (the species has no mass at the points, or all of it): M = 0, but there is
+    // no mixture whose kinds could be at the core or the periphery.
+    if (!(speciesMass > 0) || speciesMass == mass) result.segregation = std::numeric_limits<double>::quiet_NaN();
     return result;
 }
 

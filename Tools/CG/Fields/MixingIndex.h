@@ -17,7 +17,8 @@
 // in the two species (m(phi) = m(1 - phi)); only the sign of S depends on k.
 //
 // M is normalised by the state phi = 1/2 (the thesis's eq. 5.7): a perfectly mixed mixture of
-// another composition phi_0 has M = -m(phi_0)/ln 2 < 1.
+// another composition phi_0 has M = -m(phi_0)/ln 2 < 1. One kind alone (species k has no mass
+// at the points, or all of it) has M = 0 and S undefined: NaN.
 #pragma once
 
 #include <array>

@@ -70,6 +70,20 @@ TEST(MixingIndex, PerfectlyMixedIsOne) {
     }
 }
 
+// One kind alone: phi = 0 or 1 everywhere, so M = 0; no kind can be at the core or the periphery
+// of a mixture that is not there, so S is NaN (not the 1 of "the periphery"), for either species.
+TEST(MixingIndex, OneKindAloneHasNoSegregation) {
+    std::vector<Vec3> x;
+    std::vector<double> r;
+    for (int i = 0; i < 5; ++i) x.push_back({1.0 + i, 3, 3}), r.push_back(0.3);
+    const ParticleFrame frame = makeFrame(x, r, DomainBox{{0, 0, 0}, {6, 6, 6}}, {}, std::vector<int>(5, 0));
+    for (int species : {0, 1}) {
+        const MixingIndices m = indicesOf(frame, "XZ", 1.0, {12, 1, 12}, {0, 0, 0}, {6, 6, 6}, species);
+        EXPECT_EQ(m.mixing, 0) << species;
+        EXPECT_TRUE(std::isnan(m.segregation)) << species;
+    }
+}
+
 TEST(MixingIndex, UniformCompositionThreeQuarters) {
     const ParticleFrame frame = twinPacking(200, 3);
     const double expected = -(0.25 * std::log(0.25) + 0.75 * std::log(0.75)) / std::numbers::ln2;
