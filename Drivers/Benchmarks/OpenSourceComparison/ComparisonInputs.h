@@ -40,14 +40,23 @@ struct StartParticle {
 
 // A start file: one header line, then "radius x y z" per line, read with the kernel's strict
 // numbers (IO/InputNumbers.h); a word that is not a finite number, a line of other than four
-// words or a radius that is not positive is an error naming the file and the line.
-inline std::vector<StartParticle> readStartParticles(const std::string& path) {
+// words or a radius that is not positive is an error naming the file and the line. The
+// penetration's beds end with a line of six numbers that describes the steel sphere, not a bead
+// (MercuryDPM's driver for the comparison drops it too): `lastLineIsNotABead` skips the last line
+// that has words, whatever it holds.
+inline std::vector<StartParticle> readStartParticles(const std::string& path, bool lastLineIsNotABead = false) {
     std::ifstream in(path);
     require(static_cast<bool>(in), "cannot open the start file '" + path + "' (give its path with --start-file)");
     InputPlace place("start file " + path);
     std::vector<StartParticle> particles;
-    for (std::string line; std::getline(in, line); ++place.line) {
-        std::istringstream fields(line);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::size_t last = lines.size();
+    if (lastLineIsNotABead)
+        while (last > 1 && lines[last - 1].find_first_not_of(" \t\r") == std::string::npos) --last;
+    for (std::size_t k = 0; k < lines.size(); ++k, ++place.line) {
+        if (lastLineIsNotABead && k + 1 == last) continue;
+        std::istringstream fields(lines[k]);
         std::vector<std::string> words;
         for (std::string word; fields >> word;) words.push_back(word);
         if (place.line == 1 || words.empty()) continue;  // (the header)

@@ -2,9 +2,12 @@
 """The open-source comparison's published inputs in LIGGGHTS's formats: a start file (a header,
 then "radius x y z" per line, m) as a data file for read_data (atom style granular: id type
 diameter density x y z; type 1 = M1, d = 2 mm, type 2 = M2, d = 4 mm), and a wall file (a header,
-then nine numbers per line: three corners, m) as an ASCII STL file for fix mesh/surface.
+then nine numbers per line: three corners, m) as an ASCII STL file for fix mesh/surface. With
+--penetration the start file is a penetration bed: its last line describes the steel sphere, not a
+bead, and is replaced by the sphere as the last atom (type 3, steel, d = 20 mm at (0, 0, 0.06) m;
+its velocity is the input script's to set), as Talus's ComparisonPenetration places it.
 
-    comparisonInputs.py data START.txt OUT.data [--box xlo xhi ylo yhi zlo zhi]
+    comparisonInputs.py data START.txt OUT.data [--box xlo xhi ylo yhi zlo zhi] [--penetration]
     comparisonInputs.py stl WALLS.txt OUT.stl
 """
 import argparse
@@ -12,31 +15,33 @@ import math
 import sys
 
 
-def numbers(path, count):
+def numbers(path, count, skip_last=False):
     with open(path) as f:
-        next(f)  # the header
-        for number, line in enumerate(f, 2):
-            if not line.strip():
-                continue
-            try:
-                values = [float(v) for v in line.split()]
-            except ValueError:
-                sys.exit(f"{path}:{number}: expected {count} numbers, got '{line.strip()}'")
-            if len(values) != count or not all(math.isfinite(v) for v in values):
-                sys.exit(f"{path}:{number}: expected {count} finite numbers, got '{line.strip()}'")
-            yield values
+        lines = f.readlines()
+    last = max((k for k, line in enumerate(lines) if line.strip()), default=0)
+    for k, line in enumerate(lines[1:], 1):  # (after the header)
+        if not line.strip() or (skip_last and k == last):
+            continue
+        try:
+            values = [float(v) for v in line.split()]
+        except ValueError:
+            sys.exit(f"{path}:{k + 1}: expected {count} numbers, got '{line.strip()}'")
+        if len(values) != count or not all(math.isfinite(v) for v in values):
+            sys.exit(f"{path}:{k + 1}: expected {count} finite numbers, got '{line.strip()}'")
+        yield values
 
 
-def write_data(start, out, box):
-    particles = list(numbers(start, 4))
-    density = {1: 2500.0, 2: 2000.0}
+def write_data(start, out, box, penetration):
+    particles = [(r, x, y, z, 1 if r < 1.5e-3 else 2) for r, x, y, z in numbers(start, 4, skip_last=penetration)]
+    if penetration:
+        particles.append((0.01, 0.0, 0.0, 0.06, 3))
+    density = {1: 2500.0, 2: 2000.0, 3: 7200.0}
     with open(out, "w") as f:
         f.write(f"LIGGGHTS data file from {start}\n\n{len(particles)} atoms\n3 atom types\n\n")
         for axis, (lo, hi) in zip("xyz", zip(box[0::2], box[1::2])):
             f.write(f"{lo} {hi} {axis}lo {axis}hi\n")
         f.write("\nAtoms\n\n")
-        for i, (r, x, y, z) in enumerate(particles, 1):
-            kind = 1 if r < 1.5e-3 else 2
+        for i, (r, x, y, z, kind) in enumerate(particles, 1):
             f.write(f"{i} {kind} {2 * r!r} {density[kind]!r} {x!r} {y!r} {z!r}\n")
     print(f"wrote {out}: {len(particles)} particles")
 
@@ -68,9 +73,10 @@ def main():
     parser.add_argument("input")
     parser.add_argument("output")
     parser.add_argument("--box", type=float, nargs=6, default=[-0.11, 0.11, -0.035, 0.035, -0.11, 0.11])
+    parser.add_argument("--penetration", action="store_true", help="a penetration bed: its last line is the steel sphere")
     args = parser.parse_args()
     if args.kind == "data":
-        write_data(args.input, args.output, args.box)
+        write_data(args.input, args.output, args.box, args.penetration)
     else:
         write_stl(args.input, args.output)
 
