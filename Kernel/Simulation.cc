@@ -286,7 +286,8 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
     ContactRecords* records = recordContacts ? &work.records : nullptr;
     ParticleStore& p = state_.particles;
     PairList& list = state_.pairList;
-    std::vector<CarriedHistory> carried;
+    std::vector<CarriedHistory>& carried = work.carriedHistories;  // (on ranks; kept for its memory)
+    carried.clear();
     bool rebuild;
     std::unique_ptr<AnyContactForceLoop> begun;  // on ranks: the interior pairs done while the ghosts travelled
     if (ranks_->isSplit()) {
@@ -308,7 +309,7 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
         startForcesWithGravity(p, state_.gravity);
     }
     if (rebuild && ranks_->isSplit())
-        list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, std::move(carried));
+        list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, carried);
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep);
     const bool idOrdered = state_.settings.idOrderedSums;

@@ -87,22 +87,29 @@ bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& part
 
 std::vector<CarriedHistory> PairList::carriedHistories(const ParticleStore& particles, bool firstOwned) const {
     std::vector<CarriedHistory> carried;
+    carriedHistoriesInto(carried, particles, firstOwned);
+    return carried;
+}
+
+void PairList::carriedHistoriesInto(std::vector<CarriedHistory>& carried, const ParticleStore& particles,
+                                    bool firstOwned) const {
+    carried.clear();
     const std::size_t firstGhost = firstOwned ? particles.owned() : particles.size();
     auto owned = [firstGhost](const ParticlePair& pair) { return pair.i < firstGhost; };
     carryPairs(pairs, history, particles, owned, carried);
     carryPairs(oneWayPairs, oneWayHistory, particles, owned, carried);
     carryWallPairs(wallPairs, wallHistory, particles, [](const WallCandidate&) { return true; }, carried);
     std::sort(carried.begin(), carried.end());
-    return carried;
 }
 
 void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                        HGrid& grid, double dt) {
-    rebuild(particles, domain, walls, grid, dt, carriedHistories(particles));
+    carriedHistoriesInto(carried_, particles);
+    rebuild(particles, domain, walls, grid, dt, carried_);
 }
 
 void PairList::rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
-                       HGrid& grid, double dt, std::vector<CarriedHistory> carried) {
+                       HGrid& grid, double dt, const std::vector<CarriedHistory>& carried) {
     // New candidates, with the history they had (`carried`: by global ids, sorted).
     pairs.clear();
     reach = reachOfNextBuild(dt);

@@ -165,7 +165,7 @@ public:
     // The same with the histories given (carriedHistories before the particles changed slots,
     // sorted, as an MPI split hands them over).
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
-                 HGrid& grid, double dt, std::vector<CarriedHistory> carried);
+                 HGrid& grid, double dt, const std::vector<CarriedHistory>& carried);
 
     // Particles added (in the slot after the owned particles, at the given position, which
     // becomes their reference) or moved by a jump (a maser's wrap, which moves their reference
@@ -191,6 +191,11 @@ public:
     // sorted. firstOwned: only of the pairs whose first particle is owned (not a ghost), so that
     // ranks together give each pair once.
     std::vector<CarriedHistory> carriedHistories(const ParticleStore& particles, bool firstOwned = false) const;
+    // The same into `carried` (cleared first): a buffer kept from build to build keeps its memory,
+    // where a new one takes fresh pages from the system, each a page fault, at every build
+    // (Documentation/Performance.md, "Memory kept between list builds").
+    void carriedHistoriesInto(std::vector<CarriedHistory>& carried, const ParticleStore& particles,
+                              bool firstOwned = false) const;
     // Forgets every listed pair and history (the particles are about to change slots).
     void clear();
 
@@ -225,6 +230,7 @@ public:
 
 private:
     std::vector<std::uint32_t> noted_;  // slots for relist()
+    std::vector<CarriedHistory> carried_;  // the histories a build carries over (scratch, kept for its memory)
 
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
     std::size_t putInteriorPairsFirst(const ParticleStore& particles, const Domain& domain);

@@ -60,6 +60,9 @@ struct StepWorkspace {
     // measures it), for whether a wave has room.
     double lastDisplacement = 0;
     PositionWatch positions;
+    // The contact histories a list build on ranks carries over (filled by the rank context; kept
+    // from build to build for its memory, as PairList keeps its own).
+    std::vector<CarriedHistory> carriedHistories;
 };
 
 }  // namespace talus

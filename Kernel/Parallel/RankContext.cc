@@ -134,7 +134,7 @@ bool RankContext::updateNeighbourhood(SimulationState& s, bool& positionsChanged
     list.maxSpeed = agreed[1];
     if (agreed[0] == 0) return false;
     renumberNewParticles(s);
-    carried = list.carriedHistories(p);
+    list.carriedHistoriesInto(carried, p);
     carried.insert(carried.end(), pendingHistories_.begin(), pendingHistories_.end());
     pendingHistories_.clear();
     list.clear();
