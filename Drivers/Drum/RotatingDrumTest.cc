@@ -206,6 +206,7 @@ TEST(RotatingDrum, BadFlagsAreNamed) {
     EXPECT_NE(errorOf({"--particles", "5000"}).find("do not fit into the drum"), std::string::npos);
     EXPECT_NE(errorOf({"--froude", "1"}).find("--froude must lie in (0, 1) (F >= 1 centrifuges the bed)"), std::string::npos);
     EXPECT_NE(errorOf({"--rotations", "-1"}).find("--rotations must not be negative"), std::string::npos);
+    EXPECT_NE(errorOf({"--sphere-fraction", "1.5"}).find("--sphere-fraction must lie in [0, 1]"), std::string::npos);
 }
 
 namespace {
