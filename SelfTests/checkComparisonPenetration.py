@@ -6,7 +6,10 @@ the restitution of Hertz's law with the Tsuji-Antypov damping for steel on steel
 Documentation/Theory/ContactLaws.md eq. (16)-(20a)), found here by integrating that law's one-body
 equation of motion with fine Runge-Kutta steps (the law's restitution is not e itself).
 
-    checkComparisonPenetration.py DRIVER
+    checkComparisonPenetration.py DRIVER [plotComparisonPenetration.py]
+
+With the plot script given, its table's row of the run is checked too: the sphere leaves free
+flight at the first sample after the impact, and its lowest height is the run's.
 """
 import math
 import subprocess
@@ -67,6 +70,16 @@ t, height, vz = rows[-1]
 rebound = vz + g * (t - hit)
 ratio = rebound / speed
 print(f"rebound: {rebound:.5f} m/s from {speed:.5f} m/s, restitution {ratio:.5f}; the law's {restitution:.5f}")
-ok = flights >= 50 and worst < 1e-9 and vz > 0 and abs(ratio - restitution) < 2e-3
+# The plot script's table: the sphere leaves free flight at the first sample after the impact.
+if len(sys.argv) > 2:
+    table = subprocess.run([sys.executable, sys.argv[2], "bounce=bounce.penetration", "-o", "bounce.png"],
+                           check=True, capture_output=True, text=True).stdout
+    row = [line for line in table.splitlines() if line.startswith("| bounce |")][0].split("|")
+    leaves, lowest = float(row[2]), float(row[3])
+    print(f"plot script: leaves free flight at {leaves} s, lowest height {lowest} m")
+    ok_plot = hit < leaves <= hit + 5e-4 + 1e-12 and abs(lowest - min(r[1] for r in rows)) < 1e-5
+else:
+    ok_plot = True
+ok = flights >= 50 and worst < 1e-9 and vz > 0 and abs(ratio - restitution) < 2e-3 and ok_plot
 print("penetration driver: free flight and rebound agree" if ok else "penetration driver: MISMATCH")
 sys.exit(0 if ok else 1)

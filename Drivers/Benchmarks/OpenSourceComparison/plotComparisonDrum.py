@@ -7,7 +7,6 @@ last half of each run (the steady rotation) on standard output.
     plotComparisonDrum.py RUN.zones [LABEL=OTHER.zones ...] -o drum.png
 """
 import argparse
-import sys
 
 import matplotlib
 
@@ -15,24 +14,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from comparisonTables import read_rows  # noqa: E402
+
 
 def read_zones(path):
-    rows = []
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            if line.startswith("#") or not line.strip():
-                continue
-            fields = line.split()
-            try:
-                values = [float(v) for v in fields]
-            except ValueError:
-                sys.exit(f"{path}:{number}: expected numbers, got '{line.strip()}'")
-            if len(values) != 5 or not all(np.isfinite(values)):
-                sys.exit(f"{path}:{number}: expected five finite numbers (t and four counts), got '{line.strip()}'")
-            rows.append(values)
-    if len(rows) < 2:
-        sys.exit(f"{path}: fewer than two rows of zone counts")
-    return np.array(rows)
+    return read_rows(path, 5, "t and four counts")
 
 
 def main():

@@ -9,7 +9,6 @@ vertical velocity at the last row.
     plotComparisonPenetration.py LABEL=RUN.penetration [LABEL=OTHER.heights ...] -o penetration.png
 """
 import argparse
-import sys
 
 import matplotlib
 
@@ -17,25 +16,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from comparisonTables import read_rows  # noqa: E402
+
 GRAVITY = 9.8
 
 
 def read_heights(path):
-    rows = []
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            if line.startswith("#") or not line.strip():
-                continue
-            try:
-                values = [float(v) for v in line.split()]
-            except ValueError:
-                sys.exit(f"{path}:{number}: expected numbers, got '{line.strip()}'")
-            if len(values) != 3 or not all(np.isfinite(values)):
-                sys.exit(f"{path}:{number}: expected three finite numbers (t, height, vz), got '{line.strip()}'")
-            rows.append(values)
-    if len(rows) < 2:
-        sys.exit(f"{path}: fewer than two rows of heights")
-    return np.array(rows)
+    return read_rows(path, 3, "t, height, vz")
 
 
 def summary(h):
