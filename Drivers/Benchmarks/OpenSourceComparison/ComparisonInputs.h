@@ -43,7 +43,7 @@ struct StartParticle {
 // words or a radius that is not positive is an error naming the file and the line. The
 // penetration's beds end with a line of six numbers that describes the steel sphere, not a bead
 // (MercuryDPM's driver for the comparison drops it too): `lastLineIsNotABead` skips the last line
-// that has words, whatever it holds.
+// that has words, and requires it to have six (a bed without it would lose a bead silently).
 inline std::vector<StartParticle> readStartParticles(const std::string& path, bool lastLineIsNotABead = false) {
     std::ifstream in(path);
     require(static_cast<bool>(in), "cannot open the start file '" + path + "' (give its path with --start-file)");
@@ -55,10 +55,15 @@ inline std::vector<StartParticle> readStartParticles(const std::string& path, bo
     if (lastLineIsNotABead)
         while (last > 1 && lines[last - 1].find_first_not_of(" \t\r") == std::string::npos) --last;
     for (std::size_t k = 0; k < lines.size(); ++k, ++place.line) {
-        if (lastLineIsNotABead && k + 1 == last) continue;
         std::istringstream fields(lines[k]);
         std::vector<std::string> words;
         for (std::string word; fields >> word;) words.push_back(word);
+        if (lastLineIsNotABead && k + 1 == last) {
+            if (words.size() != 6)
+                place.fail("the last line describes the steel sphere (six numbers, as in the published beds), found " +
+                           std::to_string(words.size()) + " words");
+            continue;
+        }
         if (place.line == 1 || words.empty()) continue;  // (the header)
         if (words.size() != 4) place.fail("a particle is 4 numbers (radius x y z), found " + std::to_string(words.size()) + " words");
         StartParticle p{place.real(words[0], "the radius"), Vec3::Zero()};
