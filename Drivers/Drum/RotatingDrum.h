@@ -1,26 +1,27 @@
 // The rotating drum of Theory/RotatingDrum.md (Denissen 2019, sec. 5.2): spheres and prolate
 // ellipsoids of equal volume mixing or segregating in a drum turning about its horizontal axis y.
 //
-// Methods. Half of N particles (--sphere-fraction) are spheres of diameter 1, the rest prolate ellipsoids of semi-axes
-// a = R^(2/3)/2, b = c = R^(-1/3)/2 (aspect ratio R, --aspect; the same volume pi/6), all of
-// density 6/pi (mass 1). Contacts are linear spring-dashpots with tc = 0.05 and e = 0.1 for two
-// particles (reduced mass 1/2), kt = 2/7 kn, gt = gn and sliding friction 0.5; dt = tc/50. The
-// drum (radius r, --radius) is periodic along its axis y (length L, --length). Its wall is one
-// layer of fixed spheres of diameter 0.5, a disordered flat rough base of length 2 pi r (the
-// chute's, Chute::addBase) wrapped onto the cylinder: angle x/r, X = (r + z) cos(x/r),
-// Z = (r + z) sin(x/r) (Theory/RotatingDrum.md eq. (2); the thesis drops the /r); or, with --wall
+// Methods. Half of N particles (--sphere-fraction) are spheres of diameter 1, the rest prolate
+// ellipsoids of semi-axes a = R^(2/3)/2, b = c = R^(-1/3)/2 (aspect ratio R, --aspect; the same
+// volume pi/6), all of density 6/pi (mass 1). Contacts are linear spring-dashpots with tc = 0.05
+// and e = 0.1 for two particles (reduced mass 1/2), kt = 2/7 kn, gt = gn and sliding friction 0.5;
+// dt = tc/50. The drum (radius r, --radius) is periodic along its axis y (length L, --length). Its
+// wall is one layer of fixed spheres of diameter 0.5, a disordered flat rough base of length 2 pi
+// r (the chute's, Chute::addBase) wrapped onto the cylinder: angle x/r, X = (r + z) cos(x/r), Z =
+// (r + z) sin(x/r) (Theory/RotatingDrum.md eq. (2); the thesis drops the /r); or, with --wall
 // smooth, the plain cylinder wall of radius r. N follows from --fill, the fraction of the drum's
-// cross-section the bed fills (taken at packing fraction 0.6), unless --particles is given. Filling
-// (Theory/RotatingDrum.md "Filling"): the particles are placed one by one at random places in the
-// drum where their bounding spheres overlap nothing; after 1000 failed tries in a row the bed
-// settles and the rest are tried again, up to --insertion-rounds rounds. When all are in (or the
-// rounds are used up: the run says how many of each kind are missing) and the bed is at rest, the
-// drum starts turning at Froude number F = w^2 r / g (--froude): the wall moves as a prescribed
-// rotation about y, every wall particle along its circle with velocity (-w r sin th, 0, w r cos th)
-// and angular velocity w. Every --sample-interval the run appends to NAME.series: time, rotations,
-// kinetic energy, the mixing and segregation indices M and S of the sphere fraction
-// (DrumAnalysis.h) and the dynamic angle of repose. With --rotations N the run ends at the first
-// sample after N turns (the filling's length is not known beforehand), else at --end-time.
+// cross-section the bed fills (taken at packing fraction 0.6), unless --particles is given.
+// Filling (Theory/RotatingDrum.md "Filling"): the particles are placed one by one at random places
+// in the drum where their bounding spheres overlap nothing; after 1000 failed tries in a row the
+// bed settles and the rest are tried again, up to --insertion-rounds rounds. When all are in (or
+// the rounds are used up: the run says how many of each kind are missing) and the bed is at rest,
+// the drum starts turning at Froude number F = w^2 r / g (--froude): the wall moves as a
+// prescribed rotation about y, every wall particle along its circle with velocity (-w r sin th, 0,
+// w r cos th) and angular velocity w. Every --sample-interval the run appends to NAME.series:
+// time, rotations, kinetic energy, the mixing and segregation indices M and S of the sphere
+// fraction (DrumAnalysis.h) and the dynamic angle of repose. With --rotations N the run ends at
+// the first sample after N turns (the filling's length is not known beforehand), else at
+// --end-time.
 #pragma once
 
 #include <cmath>

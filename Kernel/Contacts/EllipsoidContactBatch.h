@@ -1,9 +1,10 @@
 // Lasting contacts of two ellipsoids (a sphere counts as one: Q = I / r^2), gathered in batches
 // and taken one Newton iteration forward lane by lane, in loops of plain numbers that the
 // compiler vectorises: the warm-started exact stage of Theory/Superquadrics.md for the common
-// case, as ContactBatch (ContactBatch.h) does the sphere contacts. A contact costs one long chain of dependent arithmetic (residual, Newton step,
-// residual, normal, the two distances); one at a time, the core cannot overlap it with the next
-// contact's (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
+// case, as ContactBatch (ContactBatch.h) does the sphere contacts. A contact costs one long chain
+// of dependent arithmetic (residual, Newton step, residual, normal, the two distances); one at a
+// time, the core cannot overlap it with the next contact's
+// (Documentation/Superquadrics/Superquadrics.md), lanes side by side it can.
 //
 // The arithmetic is that of the scalar solve (SuperquadricContact.cc, TwoEllipsoids): the first
 // iteration of solveFor from the warm start, its full step, and its convergence test (or, a
