@@ -10,9 +10,10 @@ namespace talus::formats::restart {
 
 // The first line: "Talus restart VERSION". 2: the run line ends with the reorder flag; 3: kept
 // values; 4: the one-way periodic box (maser) and its pairs; 5: shapes; 6: the interior pair
-// count; 7: the summation line (the order of the force sums).
+// count; 7: the summation line (the order of the force sums); 8: revolved walls (a wall line ends
+// with the profile, the next segment's direction and the start-joined flag).
 inline constexpr const char* magicWords[] = {"Talus", "restart"};
-inline constexpr int version = 7;
+inline constexpr int version = 8;
 
 // The section keys, in the order of the file.
 namespace key {
@@ -57,14 +58,20 @@ enum DomainField : int {
 // A species item: `name density law parameters...`.
 enum SpeciesField : int { speciesName, density, law, speciesFieldsAtLeast };
 
-// A wall item: `normal(3) point(3) species motion radius`; a cylinder (radius > 0) has its axis
-// direction as the normal and a point of its axis as the point.
+// A wall item: `normal(3) point(3) species motion radius profile(4) next(2) startJoined`; a
+// cylinder (radius > 0) and a revolved segment (a profile of non-zero length) have their axis
+// direction as the normal and a point of their axis as the point (Kernel/Walls/Wall.h). Before
+// version 8 the line ended with the radius.
 enum WallField : int {
     wallNormal,
     wallPoint = wallNormal + 3,
     wallSpecies = wallPoint + 3,
     wallMotion,
     wallRadius,
+    wallProfile,
+    wallFieldsBeforeVersion8 = wallProfile,
+    wallNext = wallProfile + 4,
+    wallStartJoined = wallNext + 2,
     wallFields,
 };
 

@@ -51,6 +51,10 @@ void richScene(SceneSimulation& s) {
     s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), steel);
     s.scene().addWall(-Vec3::UnitZ(), Vec3(0, 0, top + 0.495), glass, lidMotion);
     s.scene().addCylinderWall(Vec3(0.5, 0, 0), Vec3(0.1, 0, 1), 40, steel);  // a drum around it all, out of reach
+    // A turning cone beside the block, pressed 1% into its nearest sphere (the one at (0.98, 0.02, 0.495):
+    // 1.62 from the axis, where the cone's radius is 1.125), and a closed profile out of reach.
+    s.scene().addRevolvedWall(Vec3(2.6, 0, 0), Vec3::UnitZ(), {{1.13, 0}, {1.1, 3}, {0.5, 4}}, sand, lidMotion);
+    s.scene().addRevolvedWall(Vec3(0, 0, 8), Vec3::UnitX(), {{0.5, 0}, {1, 0.5}, {0.5, 1}, {0.5, 0}}, glass);
     for (int k = 0; k < 4; ++k)  // a row of fixed spheres along one side of the block
         s.scene().addFixedParticle(Vec3(-1 + spacing * (k - 1), 2 + spacing, bottom), 0.5, steel, k == 3 ? conveyor : -1);
 
@@ -136,6 +140,10 @@ void expectSameState(const SimulationState& a, const SimulationState& b) {
         EXPECT_EQ(a.walls[k].species, b.walls[k].species);
         EXPECT_EQ(a.walls[k].motion, b.walls[k].motion);
         EXPECT_TRUE(sameBits(a.walls[k].radius, b.walls[k].radius));
+        EXPECT_TRUE(sameBits(std::vector<double>(a.walls[k].profile.begin(), a.walls[k].profile.end()),
+                             std::vector<double>(b.walls[k].profile.begin(), b.walls[k].profile.end())));
+        EXPECT_TRUE(sameBits(a.walls[k].next[0], b.walls[k].next[0]) && sameBits(a.walls[k].next[1], b.walls[k].next[1]));
+        EXPECT_EQ(a.walls[k].startJoined, b.walls[k].startJoined);
     }
     expectSameParticles(a.particles, b.particles);
     EXPECT_EQ(a.nextId, b.nextId);

@@ -215,6 +215,10 @@ public:
     // rebuild.
     void followRemoval(std::uint32_t removed, std::uint32_t last);
 
+    // Wall `removed` is gone and the walls after it moved down one index (Scene::removeWall): its
+    // candidates are dropped and the others follow their walls. Forces a rebuild.
+    void followWallRemoval(std::uint32_t removed);
+
     // Scenes with superquadrics: every history keeps its contact's warm start.
     void enableWarmStarts() {
         history.enableWarmStarts();

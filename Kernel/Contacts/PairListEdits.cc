@@ -211,4 +211,15 @@ void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
     valid = false;
 }
 
+void PairList::followWallRemoval(std::uint32_t removed) {
+    keepIf(wallPairs, wallHistory, [&](WallCandidate& candidate) {
+        if (candidate.wall == removed) return false;
+        if (candidate.wall > removed) --candidate.wall;
+        return true;
+    });
+    referencePosition.clear();
+    sweepPointsByDrift.reset();
+    valid = false;
+}
+
 }  // namespace talus

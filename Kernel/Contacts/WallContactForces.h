@@ -63,22 +63,29 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
                                            const std::vector<PrescribedMotion>& motions) {
     const std::uint32_t i = list.wallPairs[k].particle;
     const Wall& wall = walls[list.wallPairs[k].wall];
-    const double distance = wall.signedDistance(p_.position[i]);
     if (shapes_ && p_.isShaped(i)) [[unlikely]] {
         // (A shaped particle lies within its bounding sphere, p_.radius: a sphere clear of the wall
         // by more than rounding leaves a pair that was apart apart, with nothing to solve.)
+        const double distance = wall.signedDistance(p_.position[i]);
         if (!(list.wallHistory.state(k) == ContactHistory::apart && distance - p_.radius[i] > 1e-9 * p_.radius[i]))
             shapedWall(list, k, i, wall, motions);
         return;
     }
+    const Wall::Gap gap = wall.gapTo(p_.position[i]);
+    const double distance = gap.distance;
     const bool touching = distance < p_.radius[i];
     // (A moving wall may close in faster than the particles: no shortcut for it.)
     if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
         distance - p_.radius[i] >= closing_)
         return;
+    if (!gap.counts) [[unlikely]] {
+        // A revolved segment's joint that the next segment counts (Walls/Wall.h): no contact here.
+        if (list.wallHistory.state(k) != ContactHistory::apart) list.wallHistory.set(k, ContactHistory{});
+        return;
+    }
     ContactHistory history = list.wallHistory.get(k);
     const double overlap = p_.radius[i] - distance;
-    const Vec3 normal = wall.normalAt(p_.position[i]);
+    const Vec3& normal = gap.normal;
     const Vec3 contactPoint = p_.position[i] - (p_.radius[i] - 0.5 * overlap) * normal;
     const Vec3 wallVelocity =
         wall.motion >= 0 ? motions[wall.motion].pointVelocity(contactPoint) : Vec3::Zero();
@@ -88,9 +95,11 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
     c.inverseDistance = 0;  // a wall: the spring is projected, not rotated (ContactKinematics.h)
     c.inverseReducedMass = p_.invMass[i];
     c.otherAcceleration = (previousForce_[i].dot(c.normal) - history.lastNormalForce) * p_.invMass[i];
-    // Hertz: a plane leaves the sphere's radius; the inside of a drum, curved along one
-    // direction only, the mean curvature of the gap, 1/r - 1/(2R) (Theory/Superquadrics.md eq. (12)).
-    c.effectiveRadius = wall.isCylinder() ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius) : p_.radius[i];
+    // Hertz: a plane leaves the sphere's radius; a wall curved along one direction (the inside of
+    // a drum, a cone) the mean curvature of the gap, 1/r - kappa/2 (Theory/ContactLaws.md eq. (6b)).
+    c.effectiveRadius = wall.isCylinder()   ? 1 / (1 / p_.radius[i] - 0.5 / wall.radius)
+                        : gap.curvature != 0 ? 1 / (1 / p_.radius[i] - 0.5 * gap.curvature)
+                                             : p_.radius[i];
     if constexpr (Law::rollingResistance)
         setRolling(c, p_.angularVelocity[i] - (wall.motion >= 0 ? motions[wall.motion].angularVelocity : Vec3::Zero()),
                    p_.radius[i]);

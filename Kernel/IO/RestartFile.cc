@@ -216,6 +216,8 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         for (const Wall& wall : s.walls) {
             w.key(item) << wall.normal << wall.point << std::uint64_t(wall.species) << std::int64_t(wall.motion)
                         << wall.radius;
+            for (double v : wall.profile) w << v;
+            w << wall.next[0] << wall.next[1] << std::uint64_t(wall.startJoined);
             w.end();
         }
         const ParticleStore& p = s.particles;
@@ -275,8 +277,10 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     if (!in) throw Error("cannot open restart file " + path);
     Reader r(in, path);
     for (const char* word : formats::restart::magicWords) r.expect(word);
-    if (const auto v = r.count("format version"); v != formatVersion)
-        r.fail("format version " + std::to_string(v) + " is not supported (this build reads version " +
+    // (Version 7 differs only in its wall lines, which had no revolved segments.)
+    const auto version = r.count("format version");
+    if (version != formatVersion && version != 7)
+        r.fail("format version " + std::to_string(version) + " is not supported (this build reads versions 7 and " +
                std::to_string(formatVersion) + ")");
     SimulationState t;  // filled completely before it replaces s
     RunSettings& c = t.settings;
@@ -374,6 +378,12 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         w.motion = motionIndex("wall motion");
         w.radius = r.real("wall radius");
         if (!(w.radius >= 0)) r.fail("wall radius must be 0 (a plane) or positive (a cylinder)");
+        if (version < 8) continue;
+        for (double& v : w.profile) v = r.real("wall profile");
+        if (w.isRevolved() && (w.profile[0] < 0 || w.profile[2] < 0))
+            r.fail("a revolved wall's distances from the axis must not be negative");
+        for (double& v : w.next) v = r.real("wall next segment direction");
+        w.startJoined = r.flag("wall start-joined flag");
     }
     r.expect(key::shapes);
     const bool shapes = r.flag("shapes flag");

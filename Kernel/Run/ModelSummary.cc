@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace talus {
 
@@ -64,8 +65,12 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
         present[p.species[i]] = true;
     }
     for (const Wall& w : s.walls) present[w.species] = true;
-    std::size_t cylinders = 0;
-    for (const Wall& w : s.walls) cylinders += w.isCylinder();
+    std::size_t cylinders = 0, revolved = 0;
+    for (const Wall& w : s.walls) {
+        cylinders += w.isCylinder();
+        revolved += w.isRevolved();
+    }
+    const std::size_t planes = s.walls.size() - cylinders - revolved;
 
     std::ostringstream out;
     out << "models ";
@@ -86,8 +91,13 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
     if (s.walls.empty())
         out << "none";
     else {
-        if (s.walls.size() > cylinders) out << counted(s.walls.size() - cylinders, "plane");
-        if (cylinders > 0) out << (s.walls.size() > cylinders ? ", " : "") << counted(cylinders, "cylinder");
+        const char* separator = "";
+        for (const auto& [count, kind] : {std::pair{planes, "plane"}, std::pair{cylinders, "cylinder"},
+                                          std::pair{revolved, "revolved segment"}})
+            if (count > 0) {
+                out << separator << counted(count, kind);
+                separator = ", ";
+            }
     }
     if (s.domain.anyPeriodic()) {
         out << "; periodic along";

@@ -163,6 +163,44 @@ std::size_t Scene::addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirect
     return w;
 }
 
+std::size_t Scene::addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirection,
+                                   const std::vector<std::array<double, 2>>& profile, std::size_t species,
+                                   int motion) {
+    require(profile.size() >= 2, "revolved wall: the profile needs at least two points, got " +
+                                     std::to_string(profile.size()));
+    for (std::size_t k = 0; k < profile.size(); ++k) {
+        const std::string point = "revolved wall: profile point " + std::to_string(k) + " (" +
+                                  str(profile[k][0]) + ", " + str(profile[k][1]) + ")";
+        require(std::isfinite(profile[k][0]) && std::isfinite(profile[k][1]), point + " is not finite");
+        require(profile[k][0] >= 0, point + ": the distance from the axis must not be negative");
+        require(k == 0 || profile[k] != profile[k - 1], point + " repeats the point before it");
+    }
+    const std::size_t segments = profile.size() - 1;
+    const bool closed = profile.front() == profile.back();
+    require(!closed || segments >= 2, "revolved wall: a closed profile needs at least two segments");
+    auto direction = [&](std::size_t s) {  // of segment s, unit, in (rho, z)
+        const double dRho = profile[s + 1][0] - profile[s][0], dZ = profile[s + 1][1] - profile[s][1];
+        const double length = std::hypot(dRho, dZ);
+        return std::array<double, 2>{dRho / length, dZ / length};
+    };
+    const std::size_t first = state_.walls.size();
+    for (std::size_t s = 0; s < segments; ++s) {
+        const std::size_t w = addWall(axisDirection, axisPoint, species, motion);
+        Wall& wall = state_.walls[w];
+        wall.profile = {profile[s][0], profile[s][1], profile[s + 1][0], profile[s + 1][1]};
+        wall.startJoined = s > 0 || closed;
+        if (s + 1 < segments) wall.next = direction(s + 1);
+        else if (closed) wall.next = direction(0);
+    }
+    return first;
+}
+
+void Scene::removeWall(std::size_t index) {
+    require(index < state_.walls.size(), "removeWall: wall " + std::to_string(index) + " does not exist");
+    state_.walls.erase(state_.walls.begin() + static_cast<std::ptrdiff_t>(index));
+    state_.pairList.followWallRemoval(static_cast<std::uint32_t>(index));
+}
+
 std::size_t Scene::addWall(const Vec3& normal, const Vec3& point, std::size_t species, int motion) {
     require(isFinite(normal) && normal.norm() > 0, "wall: the normal must be a non-zero vector");
     require(isFinite(point), "wall: the point is not finite");

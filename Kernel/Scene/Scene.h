@@ -6,6 +6,7 @@
 // what splitting the scene over ranks changes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -86,6 +87,21 @@ public:
     // axis and whose angular velocity is along it (addMotion).
     std::size_t addCylinderWall(const Vec3& axisPoint, const Vec3& axisDirection, double radius, std::size_t species,
                                 int motion = -1);
+    // A surface of revolution (Walls/Wall.h, Theory/ContactLaws.md "Surfaces of revolution"): the
+    // profile, points (rho, z) of distance from the axis and height along it from axisPoint,
+    // turned about the axis through axisPoint along axisDirection, as one wall per segment, joined
+    // at the inner points; the first and last points are open rims, unless they are the same
+    // point (a closed profile). Both sides of it are walls. A silo of radius R with a cone to an
+    // orifice of radius r0 at z = 0, open at the top at height H:
+    //   scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(), {{r0, 0}, {R, h}, {R, H}}, steel);
+    // Returns the first segment's wall index; the others follow it. It may turn about its axis
+    // with a motion (addMotion) whose centre is on the axis and whose angular velocity is along it.
+    std::size_t addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirection,
+                                const std::vector<std::array<double, 2>>& profile, std::size_t species,
+                                int motion = -1);
+    // Removes wall `index` (a silo's lid opened); the walls after it move down one index. Its
+    // contacts end, the others keep their histories.
+    void removeWall(std::size_t index);
     const std::vector<Wall>& walls() const { return state_.walls; }
     std::size_t addMotion(const PrescribedMotion& motion);
     // A motion's velocities may change during a run (a drum spun up); the moving walls and fixed

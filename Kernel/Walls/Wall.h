@@ -1,10 +1,20 @@
-// A wall: an infinite plane of any orientation, or the inside of an infinite cylinder (the
-// mantle of a rotating drum, Theory/RotatingDrum.md). Both are described by a point, a unit vector
-// and a radius:
-//   plane (radius 0): `normal` points into the half-space the particles occupy; a sphere of
-//     radius r at x touches the wall when (x - point) . normal < r;
+// A wall: an infinite plane of any orientation, the inside of an infinite cylinder (the mantle
+// of a rotating drum, Theory/RotatingDrum.md), or one segment of a surface of revolution (a
+// silo's cone, Theory/ContactLaws.md "Surfaces of revolution"). All are described by a point, a unit
+// vector and their own numbers:
+//   plane (radius 0, no profile): `normal` points into the half-space the particles occupy; a
+//     sphere of radius r at x touches the wall when (x - point) . normal < r;
 //   cylinder (radius R > 0): `point` lies on the axis and `normal` is the axis direction; the
-//     particles are inside, and a sphere at distance rho from the axis touches when R - rho < r.
+//     particles are inside, and a sphere at distance rho from the axis touches when R - rho < r;
+//   revolved segment (`profile` of non-zero length): `point` lies on the axis and `normal` is the
+//     axis direction; the segment from (rho, z) = (profile[0], profile[1]) to (profile[2],
+//     profile[3]), in distance rho from the axis and height z along it from `point`, turned about
+//     the axis: a frustum of a cone, an annulus or a finite cylinder. Particles may meet either
+//     side; the distance is to the segment's nearest point, ends included. Its ends are open rims
+//     (circles a particle may touch) or joints with the neighbouring segments of one profile
+//     (Scene::addRevolvedWall): a joint is one place of the surface, so the segment it ends counts
+//     it, and only where the segment after it (direction `next` from the joint) is nearest there
+//     too, and the segment it starts (startJoined) never does.
 // signedDistance is the distance from the wall, positive on the particles' side, and normalAt
 // the unit normal of the wall nearest to x, pointing to the particles' side (for a cylinder:
 // towards the axis). A non-spherical particle meets the tangent plane of the wall nearest to its
@@ -13,8 +23,11 @@
 // its normal (a drum turning about its own axis keeps both, and its surface moves with the motion).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "Math/Vector.h"
 
@@ -26,15 +39,54 @@ struct Wall {
     std::uint32_t species = 0;
     std::int32_t motion = -1;
     double radius = 0;            // 0: a plane; > 0: the inside of a cylinder of this radius
+    // A revolved segment: its ends (rho0, z0, rho1, z1); all 0 for a plane or a cylinder.
+    std::array<double, 4> profile{};
+    // A revolved segment's end 1: (0, 0) an open rim, else the unit direction (drho, dz) of the
+    // next segment from the joint.
+    std::array<double, 2> next{};
+    bool startJoined = false;     // a revolved segment's end 0 is a joint (which it leaves)
 
     bool isCylinder() const { return radius > 0; }
+    bool isRevolved() const { return profile[0] != profile[2] || profile[1] != profile[3]; }
 
+    // The point of a revolved segment nearest to x, and whether a contact there counts.
+    struct RevolvedPoint {
+        Vec3 point, normal;   // normal: unit, from the point towards x
+        double distance;
+        double hoopCurvature;  // of the surface along the circle through the point, seen from x's side
+        bool counts;
+    };
+    RevolvedPoint revolvedPointNearest(const Vec3& x) const;
+
+    // Plane and cylinder: the signed distance, positive on the particles' side. Revolved segment:
+    // the distance to its nearest point, counted or not (the rule for listing candidates).
     double signedDistance(const Vec3& x) const {
+        if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).distance;
         if (!isCylinder()) return (x - point).dot(normal);
         return radius - fromAxis(x).norm();
     }
 
+    // Where a sphere centred at x meets the wall: the distance, the unit normal from the wall
+    // towards x, the wall's curvature along its principal direction of curvature there (concave
+    // seen from x: positive; a plane's other direction and a generator of a surface of revolution
+    // are straight), and whether a contact there counts (a revolved segment's joint, above).
+    struct Gap {
+        double distance;
+        Vec3 normal;
+        double curvature;
+        bool counts;
+    };
+    Gap gapTo(const Vec3& x) const {
+        if (isRevolved()) [[unlikely]] {
+            const RevolvedPoint q = revolvedPointNearest(x);
+            return {q.distance, q.normal, q.hoopCurvature, q.counts};
+        }
+        if (!isCylinder()) return {(x - point).dot(normal), normal, 0, true};
+        return {signedDistance(x), normalAt(x), 1 / radius, true};
+    }
+
     Vec3 normalAt(const Vec3& x) const {
+        if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).normal;
         if (!isCylinder()) return normal;
         const Vec3 out = fromAxis(x);
         const double rho = out.norm();
@@ -42,8 +94,13 @@ struct Wall {
         return rho > 0 ? Vec3(-out / rho) : Vec3(normal.unitOrthogonal());
     }
 
-    // Signed distance of y from the tangent plane of the wall at the point nearest to x.
+    // Signed distance of y from the tangent plane of the wall at the point nearest to x (infinite
+    // for a revolved segment whose nearest point to x does not count).
     double tangentPlaneDistance(const Vec3& y, const Vec3& x) const {
+        if (isRevolved()) [[unlikely]] {
+            const RevolvedPoint q = revolvedPointNearest(x);
+            return q.counts ? q.normal.dot(y - q.point) : std::numeric_limits<double>::infinity();
+        }
         if (!isCylinder()) return signedDistance(y);
         return radius + normalAt(x).dot(y - point);
     }
@@ -55,5 +112,37 @@ private:
         return d - d.dot(normal) * normal;
     }
 };
+
+// Theory/ContactLaws.md eq. (6a).
+inline Wall::RevolvedPoint Wall::revolvedPointNearest(const Vec3& x) const {
+    const Vec3 d = x - point;
+    const double z = d.dot(normal);
+    const Vec3 radial = d - z * normal;
+    const double rho = radial.norm();
+    // On the axis every direction is as near: any one perpendicular to it.
+    const Vec3 outward = rho > 0 ? Vec3(radial / rho) : Vec3(normal.unitOrthogonal());
+    const double sRho = profile[2] - profile[0], sZ = profile[3] - profile[1];
+    const double t = std::clamp(((rho - profile[0]) * sRho + (z - profile[1]) * sZ) / (sRho * sRho + sZ * sZ), 0.0, 1.0);
+    const double cRho = profile[0] + t * sRho, cZ = profile[1] + t * sZ;
+    const double gRho = rho - cRho, gZ = z - cZ;
+    RevolvedPoint q;
+    q.distance = std::hypot(gRho, gZ);
+    // (A centre on the surface takes the segment's normal on the side of increasing rho x dz.)
+    const double nRho = q.distance > 0 ? gRho / q.distance : sZ / std::hypot(sRho, sZ);
+    const double nZ = q.distance > 0 ? gZ / q.distance : -sRho / std::hypot(sRho, sZ);
+    q.normal = nRho * outward + nZ * normal;
+    q.point = point + cZ * normal + cRho * outward;
+    if (t <= 0)
+        q.counts = !startJoined;
+    else if (t >= 1)
+        q.counts = (next[0] == 0 && next[1] == 0) || gRho * next[0] + gZ * next[1] <= 0;
+    else
+        q.counts = true;
+    // Meusnier (Theory/ContactLaws.md eq. (6b)): the circle of radius cRho through the point
+    // curves the surface by -nRho / cRho along it, concave (positive) where x is on the axis's side. A rim or a point on the axis
+    // is met as a corner: no curvature of its own.
+    q.hoopCurvature = (t > 0 && t < 1 && cRho > 0) ? -nRho / cRho : 0;
+    return q;
+}
 
 }  // namespace talus

@@ -159,13 +159,15 @@ RestartInfo readTalusRestart(TextFile& file) {
             sawSpecies = true;
         } else if (fields[0] == restart::key::walls && fields.size() == 2) {
             // restart.md: per wall normal (3; a cylinder's axis direction), point (3; a point of
-            // its axis), species, motion index, radius (0: a plane).
+            // its axis), species, motion index, radius (0: a plane); from version 8 a revolved
+            // segment's profile and joints, which coarse graining does not use.
             const long count = parseCount(fields[1], file, "the wall count");
             for (long w = 0; w < count; ++w) {
                 if (!file.nextLine(line)) file.failAtLine(file.lineNumber() + 1, "file ends inside the wall list (truncated file?)");
                 splitFields(line, fields);
-                if (fields.size() != restart::wallFields)
-                    file.fail("expected " + std::to_string(restart::wallFields) + " fields for a wall, found " +
+                if (fields.size() != restart::wallFields && fields.size() != restart::wallFieldsBeforeVersion8)
+                    file.fail("expected " + std::to_string(restart::wallFields) + " fields for a wall (" +
+                              std::to_string(restart::wallFieldsBeforeVersion8) + " before version 8), found " +
                               std::to_string(fields.size()));
                 CylinderWall wall;
                 for (int k = 0; k < 3; ++k) {
