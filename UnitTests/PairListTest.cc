@@ -84,105 +84,113 @@ TEST(PairList, SkinChangesNoPhysics) {
 }
 
 // Removing a particle (ParticleStore::removeBySwap moves the last one into its slot) keeps every
-// other pair's history under the same two ids, drops the removed particle's pairs, and the next
-// rebuild carries the springs over: without following the removal, a rebuild read the ids of
-// stale slots and gave springs to the wrong pairs (or read past the end).
+// other pair's history under the same two ids and drops the removed particle's pairs; the list
+// follows the removal without a build, or (--relist off) the next build carries the springs over:
+// without following the removal, a rebuild read the ids of stale slots and gave springs to the
+// wrong pairs (or read past the end). Both ways.
 TEST(PairList, RemovalKeepsTheOtherPairsHistories) {
-    using Key = std::pair<std::uint64_t, std::uint64_t>;
-    auto histories = [](const TestScene& s) {
-        std::map<Key, ContactHistory> byIds;
-        const PairList& l = s.state().pairList;
-        const ParticleStore& p = s.scene().particles();
-        for (std::size_t k = 0; k < l.pairs.size(); ++k) {
-            const std::uint64_t a = p.id[l.pairs[k].i], b = p.id[l.pairs[k].j];
-            ContactHistory h = l.history.get(k);
-            if (a > b && h.isTouching()) h.spring = -h.spring;  // as seen from the smaller id
-            byIds[{std::min(a, b), std::max(a, b)}] = h;
-        }
-        return byIds;
-    };
-    std::map<Key, ContactHistory> before;
-    std::size_t kept = 0, touching = 0, carried = 0, sticking = 0, springsBeyondTheirBound = 0;
-    const double dt = 1e-4;
-    TestScene s;
-    s.setup = chuteScene;
-    s.afterStep = [&](TestScene& s) {
-        if (s.step() == 300) {
-            before = histories(s);
-            // A mobile particle in a middle slot.
-            std::size_t slot = s.scene().particles().size() / 2;
-            while (s.scene().particles().fixed[slot]) ++slot;
-            const std::uint64_t removedId = s.scene().particles().id[slot];
-            s.scene().removeParticle(slot);
-            const auto after = histories(s);
-            for (const auto& [key, h] : before) {
-                if (key.first == removedId || key.second == removedId) {
-                    EXPECT_EQ(after.count(key), 0u);
-                    continue;
-                }
-                ASSERT_EQ(after.count(key), 1u);
-                EXPECT_EQ(after.at(key), h);
-                ++kept;
-                touching += h.isTouching() && !h.spring.isZero(0);
-            }
-            EXPECT_EQ(after.size(), kept);
-        }
-        // Step 301: the removal made the list invalid, so this step built it anew from the ids,
-        // and every pair that touched at step 300 and still touches must have got its own spring
-        // s0 back, advanced by one step of the law. That step is forward Euler,
-        // s* = s0 + dt (vt - n (s0 . v) / r) (Species/ContactKinematics.h), with the relative
-        // velocity v of the centres and the tangential velocity vt at the half step (recomputed
-        // below from the end-of-step velocities and forces), so |s* - s0| <= g, where
-        // g = dt (|vt| + |v| |s0| / r). A sliding pair's spring is then moved onto the Coulomb
-        // limit, s = s* + (1 - mu fn / |f*|) f* / kt for the trial force f* = -(kt s* + gt vt): a
-        // move of (|f*| - mu fn) / kt, at most (|kt s0 + gt vt| + kt g - mu fn) / kt. So
-        // |s - s0| <= g + max(0, that), times 1 + 1e-9 for round-off. A spring given to the wrong
-        // pair, turned the wrong way or lost differs by about its own length, many times the
-        // bound for most pairs (measured: 34 of the 40 springs are longer than twice their bound;
-        // 39 pairs stick, their |s - s0| is 0.988 to 1.000 of g. The springs are 1.5e-5 to 1.1e-3
-        // long: a check of |s - s0| < 1e-3 let them all be halved at the rebuild).
-        if (s.step() == 301) {
+    for (const bool relist : {true, false}) {
+        SCOPED_TRACE(relist ? "list kept" : "list rebuilt");
+        using Key = std::pair<std::uint64_t, std::uint64_t>;
+        auto histories = [](const TestScene& s) {
+            std::map<Key, ContactHistory> byIds;
+            const PairList& l = s.state().pairList;
             const ParticleStore& p = s.scene().particles();
-            const PeriodicImage image(s.scene().domain());
-            const LinearSpringDashpot law = chuteLaw();
-            const double kt = law.tangentialStiffness;
-            // The half-step velocities the force loop saw: v(n+1) - (dt/2) F(n+1)/m, w likewise.
-            const auto halfStepVelocity = [&](std::size_t i) {
-                return std::pair<Vec3, Vec3>{p.velocity[i] - 0.5 * dt * p.invMass[i] * p.force[i],
-                                             p.angularVelocity[i] - 0.5 * dt * p.invInertia[i] * p.torque[i]};
-            };
-            for (const auto& [key, h] : histories(s)) {
-                if (!h.isTouching() || !before.count(key) || !before.at(key).isTouching()) continue;
-                const std::size_t i = s.scene().slotOf(key.first), j = s.scene().slotOf(key.second);
-                const auto [vi, wi] = halfStepVelocity(i);
-                const auto [vj, wj] = halfStepVelocity(j);
-                const Vec3 d = image.nearest(p.position[i] - p.position[j]);
-                const double r = d.norm();
-                // The contact point's tangential velocity (Theory/ContactLaws.md eq. (4)): arms
-                // ri - dn/2 and rj - dn/2 along n, vt = v - (v.n) n - (ai wi + aj wj) x n.
-                const Vec3 n = d / r, v = vi - vj;
-                const double halfOverlap = 0.5 * (p.radius[i] + p.radius[j] - r);
-                const Vec3 vt =
-                    v - v.dot(n) * n - ((p.radius[i] - halfOverlap) * wi + (p.radius[j] - halfOverlap) * wj).cross(n);
-                const Vec3& carriedSpring = before.at(key).spring;
-                const double growth = dt * (vt.norm() + v.norm() * carriedSpring.norm() / r);
-                const double trialForce = (kt * carriedSpring + law.tangentialDamping * vt).norm() + kt * growth;
-                const double slip = std::max(0.0, trialForce - law.friction * h.lastNormalForce) / kt;
-                const double bound = (growth + slip) * (1 + 1e-9);
-                EXPECT_LE((h.spring - carriedSpring).norm(), bound)
-                    << key.first << "-" << key.second << ": spring " << carriedSpring.norm() << " carried";
-                ++carried;
-                sticking += slip == 0;
-                springsBeyondTheirBound += carriedSpring.norm() > 2 * bound;
+            for (std::size_t k = 0; k < l.pairs.size(); ++k) {
+                const std::uint64_t a = p.id[l.pairs[k].i], b = p.id[l.pairs[k].j];
+                ContactHistory h = l.history.get(k);
+                if (a > b && h.isTouching()) h.spring = -h.spring;  // as seen from the smaller id
+                byIds[{std::min(a, b), std::max(a, b)}] = h;
             }
-        }
-    };
-    s.runFor(dt, 302 * dt);
-    std::printf("[ measured ] %zu springs carried over the rebuild, %zu of them sticking, %zu longer than twice "
-                "their bound\n", carried, sticking, springsBeyondTheirBound);
-    EXPECT_GT(touching, 20u);
-    EXPECT_GT(carried, 20u);
-    EXPECT_GT(springsBeyondTheirBound, 20u) << "the bounds should tell a carried spring from a lost one";
+            return byIds;
+        };
+        std::map<Key, ContactHistory> before;
+        std::size_t kept = 0, touching = 0, carried = 0, sticking = 0, springsBeyondTheirBound = 0;
+        const double dt = 1e-4;
+        TestScene s;
+        s.setup = chuteScene;
+        s.settings().relist = relist;
+        std::uint64_t buildsAtRemoval = 0;
+        s.afterStep = [&](TestScene& s) {
+            if (s.step() == 300) {
+                buildsAtRemoval = s.state().pairList.builds;
+                before = histories(s);
+                // A mobile particle in a middle slot.
+                std::size_t slot = s.scene().particles().size() / 2;
+                while (s.scene().particles().fixed[slot]) ++slot;
+                const std::uint64_t removedId = s.scene().particles().id[slot];
+                s.scene().removeParticle(slot);
+                const auto after = histories(s);
+                for (const auto& [key, h] : before) {
+                    if (key.first == removedId || key.second == removedId) {
+                        EXPECT_EQ(after.count(key), 0u);
+                        continue;
+                    }
+                    ASSERT_EQ(after.count(key), 1u);
+                    EXPECT_EQ(after.at(key), h);
+                    ++kept;
+                    touching += h.isTouching() && !h.spring.isZero(0);
+                }
+                EXPECT_EQ(after.size(), kept);
+            }
+            // Step 301: the list followed the removal, or (relist off) this step built it anew from
+            // the ids, and every pair that touched at step 300 and still touches must have its own
+            // spring s0, advanced by one step of the law. That step is forward Euler,
+            // s* = s0 + dt (vt - n (s0 . v) / r) (Species/ContactKinematics.h), with the relative
+            // velocity v of the centres and the tangential velocity vt at the half step (recomputed
+            // below from the end-of-step velocities and forces), so |s* - s0| <= g, where
+            // g = dt (|vt| + |v| |s0| / r). A sliding pair's spring is then moved onto the Coulomb
+            // limit, s = s* + (1 - mu fn / |f*|) f* / kt for the trial force f* = -(kt s* + gt vt): a
+            // move of (|f*| - mu fn) / kt, at most (|kt s0 + gt vt| + kt g - mu fn) / kt. So
+            // |s - s0| <= g + max(0, that), times 1 + 1e-9 for round-off. A spring given to the wrong
+            // pair, turned the wrong way or lost differs by about its own length, many times the
+            // bound for most pairs (measured: 34 of the 40 springs are longer than twice their bound;
+            // 39 pairs stick, their |s - s0| is 0.988 to 1.000 of g. The springs are 1.5e-5 to 1.1e-3
+            // long: a check of |s - s0| < 1e-3 let them all be halved at the rebuild).
+            if (s.step() == 301) {
+                EXPECT_EQ(s.state().pairList.builds - buildsAtRemoval, relist ? 0u : 1u);
+                const ParticleStore& p = s.scene().particles();
+                const PeriodicImage image(s.scene().domain());
+                const LinearSpringDashpot law = chuteLaw();
+                const double kt = law.tangentialStiffness;
+                // The half-step velocities the force loop saw: v(n+1) - (dt/2) F(n+1)/m, w likewise.
+                const auto halfStepVelocity = [&](std::size_t i) {
+                    return std::pair<Vec3, Vec3>{p.velocity[i] - 0.5 * dt * p.invMass[i] * p.force[i],
+                                                 p.angularVelocity[i] - 0.5 * dt * p.invInertia[i] * p.torque[i]};
+                };
+                for (const auto& [key, h] : histories(s)) {
+                    if (!h.isTouching() || !before.count(key) || !before.at(key).isTouching()) continue;
+                    const std::size_t i = s.scene().slotOf(key.first), j = s.scene().slotOf(key.second);
+                    const auto [vi, wi] = halfStepVelocity(i);
+                    const auto [vj, wj] = halfStepVelocity(j);
+                    const Vec3 d = image.nearest(p.position[i] - p.position[j]);
+                    const double r = d.norm();
+                    // The contact point's tangential velocity (Theory/ContactLaws.md eq. (4)): arms
+                    // ri - dn/2 and rj - dn/2 along n, vt = v - (v.n) n - (ai wi + aj wj) x n.
+                    const Vec3 n = d / r, v = vi - vj;
+                    const double halfOverlap = 0.5 * (p.radius[i] + p.radius[j] - r);
+                    const Vec3 vt =
+                        v - v.dot(n) * n - ((p.radius[i] - halfOverlap) * wi + (p.radius[j] - halfOverlap) * wj).cross(n);
+                    const Vec3& carriedSpring = before.at(key).spring;
+                    const double growth = dt * (vt.norm() + v.norm() * carriedSpring.norm() / r);
+                    const double trialForce = (kt * carriedSpring + law.tangentialDamping * vt).norm() + kt * growth;
+                    const double slip = std::max(0.0, trialForce - law.friction * h.lastNormalForce) / kt;
+                    const double bound = (growth + slip) * (1 + 1e-9);
+                    EXPECT_LE((h.spring - carriedSpring).norm(), bound)
+                        << key.first << "-" << key.second << ": spring " << carriedSpring.norm() << " carried";
+                    ++carried;
+                    sticking += slip == 0;
+                    springsBeyondTheirBound += carriedSpring.norm() > 2 * bound;
+                }
+            }
+        };
+        s.runFor(dt, 302 * dt);
+        std::printf("[ measured ] %s: %zu springs carried over the removal, %zu of them sticking, %zu longer than twice "
+                    "their bound\n", relist ? "list kept" : "list rebuilt", carried, sticking, springsBeyondTheirBound);
+        EXPECT_GT(touching, 20u);
+        EXPECT_GT(carried, 20u);
+        EXPECT_GT(springsBeyondTheirBound, 20u) << "the bounds should tell a carried spring from a lost one";
+    }
 }
 
 // The pairs a build puts first (PairList::interiorPairs) are swept without the nearest periodic

@@ -71,8 +71,8 @@ struct NearPairs {
     double skin = 0;
     double moved = 0;
     bool made = false;
-    // The list it was made from: a build or a relisting changes the pairs and unmakes it.
-    std::uint64_t builds = 0, relisted = 0;
+    // The list it was made from: a build or an edit (PairList::edits) changes the pairs and unmakes it.
+    std::uint64_t builds = 0, edits = 0;
     std::size_t listed = 0;
     std::uint64_t makes = 0;  // times made (for the run's report)
 };
@@ -186,6 +186,10 @@ public:
     static constexpr std::size_t defaultMaxRelisted = 64;
     std::size_t maxRelisted = defaultMaxRelisted;  // 0: every change to the particles forces a rebuild (--relist off)
     std::uint64_t relistedParticles = 0;
+    std::uint64_t removedParticles = 0;  // removals followed without a rebuild (followRemoval)
+    // Changes to the listed pairs between builds (relistings, removals): what was made of the
+    // pairs before one (a near list, a wave schedule) is stale.
+    std::uint64_t edits = 0;
 
     // The histories worth keeping (touching, approaching, or with a spring or warm start), by ids,
     // sorted. firstOwned: only of the pairs whose first particle is owned (not a ghost), so that
@@ -211,8 +215,9 @@ public:
 
     // The particle in slot `removed` is gone and the last one, `last`, took its slot
     // (ParticleStore::removeBySwap): the removed particle's pairs are dropped and the moved
-    // one's follow it, so that a rebuild still finds every history by the right ids. Forces that
-    // rebuild.
+    // one's follow it, with its reference position. The list stays valid: a removal takes no
+    // pair a build would list (with maxRelisted 0, --relist off, or pairs ordered by ids it forces
+    // a rebuild instead).
     void followRemoval(std::uint32_t removed, std::uint32_t last);
 
     // Wall `removed` is gone and the walls after it moved down one index (Scene::removeWall): its

@@ -140,6 +140,7 @@ void PairList::relist(const ParticleStore& particles, const Domain& domain, cons
     restorePairs(oneWayPairs, firstOneWay, oneWayHistory, particles, lookup);
     restoreWallPairs(wallPairs, firstWall, wallHistory, particles, lookup);
     relistedParticles += noted.size();
+    ++edits;
 }
 
 void PairList::clear() {
@@ -168,55 +169,37 @@ void PairList::followPermutation(const std::vector<std::size_t>& order) {
     valid = false;
 }
 
-namespace {
-
-// Keeps the entries (and their histories) for which `keep` returns true; `keep` may change them.
-template <class Entry, class Keep>
-void keepIf(std::vector<Entry>& list, ContactHistories& histories, Keep keep) {
-    std::vector<Entry> kept;
-    ContactHistories keptHistories = histories.emptyLike();
-    kept.reserve(list.size());
-    for (std::size_t k = 0; k < list.size(); ++k) {
-        Entry entry = list[k];
-        if (!keep(entry)) continue;
-        kept.push_back(entry);
-        keptHistories.push_back(histories.get(k));
-    }
-    list.swap(kept);
-    histories = std::move(keptHistories);
-}
-
-}  // namespace
-
 void PairList::followRemoval(std::uint32_t removed, std::uint32_t last) {
     auto follow = [&](std::uint32_t& slot) {
         if (slot == last) slot = removed;
     };
-    auto keepPair = [&](ParticlePair& pair) {
-        if (pair.i == removed || pair.j == removed) return false;
-        follow(pair.i);
-        follow(pair.j);
-        return true;
-    };
-    keepIf(pairs, history, keepPair);
-    interiorPairs = 0;
-    keepIf(oneWayPairs, oneWayHistory, keepPair);
-    keepIf(wallPairs, wallHistory, [&](WallCandidate& candidate) {
-        if (candidate.particle == removed) return false;
-        follow(candidate.particle);
-        return true;
-    });
-    referencePosition.clear();
+    auto involves = [&](const ParticlePair& pair) { return pair.i == removed || pair.j == removed; };
+    interiorPairs -= dropEntries(pairs, history, involves, interiorPairs);
+    dropEntries(oneWayPairs, oneWayHistory, involves);
+    dropEntries(wallPairs, wallHistory, [&](const WallCandidate& c) { return c.particle == removed; });
+    for (ParticlePair& pair : pairs) follow(pair.i), follow(pair.j);
+    for (ParticlePair& pair : oneWayPairs) follow(pair.i), follow(pair.j);
+    for (WallCandidate& candidate : wallPairs) follow(candidate.particle);
+    std::erase(noted_, removed);
+    for (std::uint32_t& noted : noted_) follow(noted);
     sweepPointsByDrift.reset();
-    valid = false;
+    ++edits;
+    // (The reference positions end with the last particle's, when the store holds no ghosts. Sums
+    // by ids keep each particle's pairs by place, IdOrderedForceSums: they need a build.)
+    if (valid && maxRelisted > 0 && !orientById && referencePosition.size() == std::size_t{last} + 1) {
+        referencePosition[removed] = referencePosition[last];
+        referencePosition.pop_back();
+        ++removedParticles;
+    } else {
+        referencePosition.clear();
+        valid = false;
+    }
 }
 
 void PairList::followWallRemoval(std::uint32_t removed) {
-    keepIf(wallPairs, wallHistory, [&](WallCandidate& candidate) {
-        if (candidate.wall == removed) return false;
-        if (candidate.wall > removed) --candidate.wall;
-        return true;
-    });
+    dropEntries(wallPairs, wallHistory, [&](const WallCandidate& c) { return c.wall == removed; });
+    for (WallCandidate& candidate : wallPairs) candidate.wall -= candidate.wall > removed;
+    ++edits;
     referencePosition.clear();
     sweepPointsByDrift.reset();
     valid = false;

@@ -94,11 +94,11 @@ constexpr double sweepRadiusMargin = 1 + 1e-12, sweepReachMargin = 1.000001;  //
 // The sum of growths a near list of this skin holds for (a billionth under half the skin).
 inline double nearAllowance(double skin) { return 0.5 * skin * (1 - 1e-9); }
 
-// The near list is made, of the list as it is now (a build or a relisting changes its pairs),
+// The near list is made, of the list as it is now (a build or an edit changes its pairs),
 // with this skin.
 inline bool nearPairsAreCurrent(const PairList& list, double skin) {
     const NearPairs& near = list.near;
-    return near.made && near.builds == list.builds && near.relisted == list.relistedParticles &&
+    return near.made && near.builds == list.builds && near.edits == list.edits &&
            near.listed == list.pairs.size() && near.skin == skin;
 }
 

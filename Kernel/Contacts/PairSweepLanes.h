@@ -301,7 +301,7 @@ inline void makeNearPairs(PairList& list, const Vec3* position, std::size_t part
     near.moved = 0;
     near.made = true;
     near.builds = list.builds;
-    near.relisted = list.relistedParticles;
+    near.edits = list.edits;
     near.listed = list.pairs.size();
     ++near.makes;
 }

@@ -75,6 +75,7 @@ void WaveStepper::makeSchedule(StepHost& host) {
                                 s.particles.size(), &refusal_, list.wallPairs, &order)) {
         list.reorderPairs(order);
         scheduleBuild_ = list.builds;
+        scheduleEdits_ = list.edits;
     }
     largestRadius_ = 0;
     for (double r : s.particles.radius) largestRadius_ = std::max(largestRadius_, r);
@@ -168,7 +169,8 @@ std::string_view WaveStepper::whyNot(const StepHost& host) const {
     if (s.settings.idOrderedSums) return "waves do not run with --id-ordered-sums";
     if (scheduleBuild_ == 0 || scheduleBuild_ != list.builds || schedule_.levels() != s.settings.stepper.waveSteps)
         return refusal_.empty() ? std::string_view("the neighbour list has no wave schedule") : std::string_view(refusal_);
-    if (!list.comparable(s.particles)) return "particles were added or removed since the list's build";
+    if (!list.comparable(s.particles) || list.edits != scheduleEdits_)
+        return "particles were added or removed since the list's build";
     if (!list.oneWayPairs.empty()) return "pairs cross a one-way periodic face";
     return {};
 }
