@@ -27,7 +27,7 @@ class ComparisonSilo : public Simulation {
 public:
     std::string orifice = "small", material = "M1";
     int particles = 100000;
-    double openTime = 0.5, sampleInterval = 0.01, fillingPacking = 0.3;
+    double openTime = 0.5, sampleInterval = 0.01, fillingPacking = 0.2;
     int soft = 0;
 
     // The inner face of the published silo (Silo/walls-*-orifice.txt): the orifice plane's height
