@@ -1,7 +1,7 @@
 // A wall: an infinite plane of any orientation, the inside of an infinite cylinder (the mantle
 // of a rotating drum, Theory/RotatingDrum.md), or one segment of a surface of revolution (a
-// silo's cone, Theory/ContactLaws.md "Surfaces of revolution"). All are described by a point, a unit
-// vector and their own numbers:
+// silo's cone, Theory/ContactLaws.md "Surfaces of revolution"). All are described by a point, a
+// unit vector and their own numbers:
 //   plane (radius 0, no profile): `normal` points into the half-space the particles occupy; a
 //     sphere of radius r at x touches the wall when (x - point) . normal < r;
 //   cylinder (radius R > 0): `point` lies on the axis and `normal` is the axis direction; the
@@ -67,9 +67,10 @@ struct Wall {
     }
 
     // Where a sphere centred at x meets the wall: the distance, the unit normal from the wall
-    // towards x, the wall's curvature along its principal direction of curvature there (concave
-    // seen from x: positive; a plane's other direction and a generator of a surface of revolution
-    // are straight), and whether a contact there counts (a revolved segment's joint, above).
+    // towards x, the wall's curvature at its nearest point along the one direction it curves in
+    // (0 for a plane; cylinders and surfaces of revolution are straight along their generators),
+    // positive where it is concave seen from x, and whether a contact there counts (a revolved
+    // segment's joint, above).
     struct Gap {
         double distance;
         Vec3 normal;
