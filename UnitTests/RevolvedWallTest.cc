@@ -227,6 +227,29 @@ TEST(RevolvedWall, ASphereOnAFloorOfManyRingsFeelsItsWeightOnce) {
     }
 }
 
+// An ellipsoid lying on a floor of revolution (an annulus) meets the tangent plane at the point
+// nearest its centre, as on a plane wall (Theory/Superquadrics.md "Walls"): its lowest point sinks
+// m g / kn below the floor, as a sphere's does.
+TEST(RevolvedWall, AnEllipsoidRestsOnAnAnnulusAsOnAPlane) {
+    const Superquadric shape = Superquadric::ellipsoid(0.6, 0.5, 0.3);  // lying along x, 0.3 high
+    const double mass = 6 / pi * shape.volume();
+    const LinearSpringDashpot law = LinearSpringDashpot::fromCollision(0.005, 0.3, mass).withFriction(0.5);
+    SceneSimulation s;
+    s.setup = [&](SceneSimulation& sim) {
+        sim.scene().setGravity(Vec3(0, 0, -1));
+        sim.scene().setDomain(Vec3(-4, -4, -1), Vec3(4, 4, 3));
+        const auto species = sim.scene().addSpecies("grains", 6 / pi, law);
+        sim.scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(), {{0.5, 0}, {3, 0}}, species);
+        sim.scene().addSuperquadric(Vec3(0, 1.5, 0.3), sim.scene().addShape(shape), species);
+    };
+    s.runFor(1e-4, 4);
+    const double expected = 0.3 - mass / law.normalStiffness;
+    std::printf("[ measured ] ellipsoid on an annulus: z = %.10f against %.10f\n", s.scene().particles().position[0].z(),
+                expected);
+    EXPECT_NEAR(s.scene().particles().position[0].z(), expected, 1e-8);
+    EXPECT_LT(s.scene().particles().velocity[0].norm(), 1e-6);
+}
+
 // Opening a lid (Scene::removeWall): the sphere it held falls free from that step, and a second
 // sphere sliding on the floor, whose wall moves down one index then, keeps its tangential spring:
 // it goes on exactly as in a run that never had the lid.
