@@ -123,7 +123,7 @@ void readParticles(TextFile& file, std::vector<std::string_view>& fields, bool s
     }
 }
 
-// Talus restart formats 4 to 7 (restart.md; the fields by the names of Formats/RestartFormat.h):
+// Talus restart formats 4 to 8 (restart.md; the fields by the names of Formats/RestartFormat.h):
 // `domain lo(3) hi(3) px py pz`, `species S` + S lines `name density law...`, `walls W` + W
 // lines, `shapes FLAG Q` + Q lines, `particles N nextId` + N lines.
 RestartInfo readTalusRestart(TextFile& file) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "CGTestHelpers.h"
+#include "Formats/RestartFormat.h"
 #include "Fields/CoarseGrainer.h"
 #include "IO/DataFileReader.h"
 #include "IO/FstatFileReader.h"
@@ -235,6 +236,7 @@ TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
         write(c.path, c.text);
         EXPECT_EQ(errorOf([&] { readAllFstatFrames(c.path); }), c.expected);
     }
+    const std::string newer = std::to_string(talus::formats::restart::version + 1);
     const std::string talus = "Talus restart 6\nname x\ntime 0.5 10\ndomain 0 0 0 1 1 1 1 0 0\nspecies 1\n  a 1 law\n";
     // One ellipsoid of semi-axes 0.5 0.25 0.25 (density 1: mass 4/3 pi / 32) and a particle line of it
     // (34 fields: restart.md) with the given shape index.
@@ -275,7 +277,9 @@ TEST(BadFiles, NonFiniteNumbersCountsAndBoxes) {
         {"mercurykind.restart", "MercuryDPM 1\nParticles 1\nClumpParticle id 0 invMass 1\n",
          "mercurykind.restart line 3: particle of an unknown kind 'ClumpParticle' (BaseParticle, SphericalParticle, LiquidFilmParticle "
          "or ThermalParticle)"},
-        {"version.restart", "Talus restart 8\n", "version.restart line 1: format version 8 is newer than this talus-cg reads (up to 7)"},
+        {"version.restart", "Talus restart " + newer + "\n",
+         "version.restart line 1: format version " + newer + " is newer than this talus-cg reads (up to " +
+             std::to_string(talus::formats::restart::version) + ")"},
         {"nanradius.restart", talus + "shapes 0 0\nparticles 1 1\n   0 0.5 0.5 0.5 0 0 0 0 0 0 0 0 0 0 0 0 nan 1 1 10 0 0 -1\n",
          "nanradius.restart line 9: 'nan' for the radius is not a finite number"},
     };
