@@ -140,8 +140,8 @@ inline Wall::RevolvedPoint Wall::revolvedPointNearest(const Vec3& x) const {
     else
         q.counts = true;
     // Meusnier (Theory/ContactLaws.md eq. (6b)): the circle of radius cRho through the point
-    // curves the surface by -nRho / cRho along it, concave (positive) where x is on the axis's side. A rim or a point on the axis
-    // is met as a corner: no curvature of its own.
+    // curves the surface by -nRho / cRho along it, concave (positive) where x is on the axis's
+    // side. A rim or a point on the axis is met as a corner: no curvature of its own.
     q.hoopCurvature = (t > 0 && t < 1 && cRho > 0) ? -nRho / cRho : 0;
     return q;
 }

@@ -44,7 +44,8 @@ public:
         run().addFlag("open-time", "when the lid is taken away (s): the filling settles until then", openTime);
         run().addFlag("sample-interval", "time between the discharged masses written to NAME.discharge (s)", sampleInterval);
         run().addFlag("filling-packing", "solid fraction of the column the spheres are dropped from", fillingPacking);
-        run().addFlag("soft", "1: the soft materials (E 2e6 and 1e6 Pa) for a larger step, as the drum's soft variant", soft);
+        run().addFlag("soft", "1: the soft materials (E 2e6 and 1e6 Pa) for a larger step, as the drum's soft variant",
+                      soft);
         run().keepInRestart("silo.opened", opened_);
         discharge_.setPrecision(15);  // (the self-test adds the two masses up to round-off)
     }
@@ -58,7 +59,8 @@ public:
         require(particles > 0, "--particles must be positive, got " + std::to_string(particles));
         require(openTime >= 0, "--open-time must not be negative, got " + str(openTime));
         require(sampleInterval > 0, "--sample-interval must be positive, got " + str(sampleInterval));
-        require(fillingPacking > 0 && fillingPacking < 0.5, "--filling-packing must be in (0, 0.5), got " + str(fillingPacking));
+        require(fillingPacking > 0 && fillingPacking < 0.5,
+                "--filling-packing must be in (0, 0.5), got " + str(fillingPacking));
         scene().setGravity(Vec3(0, 0, -gravity));
         // The column the spheres are dropped from: inside the cylinder, from the cone's top up.
         const double columnRadius = siloRadius - 0.5 * diameter, sphereVolume = pi / 6 * std::pow(diameter, 3);
@@ -74,13 +76,13 @@ public:
         const std::vector<std::size_t> species = comparison::materials(soft).addTo(scene().species(), impactSpeed);
         const std::size_t grains = species[material == "M1" ? 0 : 1], steel = species[2];
         scene().addWall(Vec3::UnitZ(), Vec3(0, 0, orificeHeight()), steel);
+        const double rim = coneTop() + siloHeight;
         scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(),
-                                {{orificeRadius(), orificeHeight()}, {siloRadius, coneTop()}, {siloRadius, coneTop() + siloHeight}},
-                                steel);
+                                {{orificeRadius(), orificeHeight()}, {siloRadius, coneTop()}, {siloRadius, rim}}, steel);
         outlet_.setPlane(-Vec3::UnitZ(), Vec3(0, 0, orificeHeight() - outletDrop));
         const Filling column(Cylinder(Vec3(0, 0, coneTop()), 2, columnHeight, columnRadius));
-        const InsertionReport report =
-            column.fill(*this, SizeDistribution::byNumber().add(grains, 0.5 * diameter), InsertionReport::Target::count, particles);
+        const SizeDistribution spheres = SizeDistribution::byNumber().add(grains, 0.5 * diameter);
+        const InsertionReport report = column.fill(*this, spheres, InsertionReport::Target::count, particles);
         require(report.complete, "the filling column holds fewer spheres than --particles: " + report.describe() +
                                      " (lower --filling-packing)");
         filled_ = report.mass;
