@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "TestHelpers.h"
 
@@ -286,4 +289,33 @@ TEST(RevolvedWall, RemovingAWallEndsItsContactsAndKeepsTheOthers) {
     const double rest = 0.5 - 1 / law.normalStiffness;
     EXPECT_NEAR(withLid[0].z(), rest - 0.5 * 0.7 * 0.7, 2e-3);
     EXPECT_NEAR(withLidVelocity[0].z(), -0.7, 2e-3);
+}
+
+// A profile that is no surface is refused with the point it names: too few points, a point not
+// finite, one on the wrong side of the axis, one repeated; and removing a wall that does not exist.
+TEST(RevolvedWall, BadProfilesAreNamed) {
+    using Profile = std::vector<std::array<double, 2>>;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    struct Case {
+        Profile profile;
+        std::vector<std::string> parts;
+    };
+    for (const Case& c : {Case{{{1, 0}}, {"revolved wall", "at least two points, got 1"}},
+                          Case{{{1, 0}, {nan, 1}}, {"profile point 1", "not finite"}},
+                          Case{{{1, 0}, {-0.5, 1}}, {"profile point 1 (-0.5, 1)", "must not be negative"}},
+                          Case{{{1, 0}, {2, 1}, {2, 1}}, {"profile point 2 (2, 1)", "repeats the point before it"}}}) {
+        SceneSimulation s;
+        s.setup = [&](SceneSimulation& sim) {
+            const auto species = sim.scene().addSpecies("grains", 1, LinearSpringDashpot::fromCollision(0.005, 0.5, 1));
+            sim.scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(), c.profile, species);
+        };
+        expectError([&] { s.runFor(1e-4, 1e-3); }, c.parts);
+    }
+    SceneSimulation s;
+    s.setup = [](SceneSimulation& sim) {
+        const auto species = sim.scene().addSpecies("grains", 1, LinearSpringDashpot::fromCollision(0.005, 0.5, 1));
+        sim.scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(), {{1, 0}, {2, 1}}, species);
+        sim.scene().removeWall(1);
+    };
+    expectError([&] { s.runFor(1e-4, 1e-3); }, {"removeWall", "wall 1 does not exist"});
 }

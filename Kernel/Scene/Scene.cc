@@ -176,8 +176,7 @@ std::size_t Scene::addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirect
         require(k == 0 || profile[k] != profile[k - 1], point + " repeats the point before it");
     }
     const std::size_t segments = profile.size() - 1;
-    const bool closed = profile.front() == profile.back();
-    require(!closed || segments >= 2, "revolved wall: a closed profile needs at least two segments");
+    const bool closed = profile.front() == profile.back();  // (then of two segments at least: no point repeats)
     auto direction = [&](std::size_t s) {  // of segment s, unit, in (rho, z)
         const double dRho = profile[s + 1][0] - profile[s][0], dZ = profile[s + 1][1] - profile[s][1];
         const double length = std::hypot(dRho, dZ);
