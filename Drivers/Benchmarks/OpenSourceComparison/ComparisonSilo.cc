@@ -85,10 +85,9 @@ public:
         const InsertionReport report = column.fill(*this, spheres, InsertionReport::Target::count, particles);
         require(report.complete, "the filling column holds fewer spheres than --particles: " + report.describe() +
                                      " (lower --filling-packing)");
-        filled_ = report.mass;
         say(*this, "silo: %s orifice (radius %.3f m at z = %.7f m), %d spheres of %s (%.4f kg) dropped from a column %.3f m"
                    " high; the lid opens at t = %.3f s\n",
-            orifice.c_str(), orificeRadius(), orificeHeight(), particles, material.c_str(), filled_, columnHeight, openTime);
+            orifice.c_str(), orificeRadius(), orificeHeight(), particles, material.c_str(), report.mass, columnHeight, openTime);
         writeDischarge();
     }
 
@@ -111,7 +110,6 @@ private:
     void writeDischarge() { discharge_.write({time(), outlet_.mass(), totalsOver(*this).mass}); }
 
     int opened_ = 0;
-    double filled_ = 0;
     // (Per species of M1, M2 and steel; the plane is set once the orifice is known.)
     DeletionBoundary& outlet_ = scene().addBoundary<DeletionBoundary>(*this, -Vec3::UnitZ(), Vec3::Zero(), 3, "outlet");
     SamplingClock clock_{*this, "discharge"};
