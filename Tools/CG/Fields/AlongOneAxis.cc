@@ -13,6 +13,7 @@
 #include <numeric>
 
 #include "Fields/CoarseGrainer.h"
+#include "Fields/VectorClones.h"
 #include "Kernels/RadialShapes.h"
 
 namespace talus::cg {
@@ -98,19 +99,43 @@ void segmentWeights(const KernelProfile& profile, const double* along, std::size
         const double gLo = std::copysign(Profile::axialIntegral(std::abs(lo)), lo);
         weight[j] = length > 0 ? factor * (gHi - gLo) : 0.0;
     }
-    for (std::size_t j = 0; j < n; ++j) {  // (a second pass: a count in the first would stop its vector code)
+    // A second pass (a count in the first would stop its vector code) for the short intervals.
+    // (A branch across the axis, e = 0, has the kernel's value there: that function's answer.)
+    auto takeShort = [&](std::size_t j) {  // (true where the clipped interval is short or empty)
         const double u0 = ak * (along[j] - start);
         const double length = std::min(std::max(u0, u0 + e), Profile::cutoff) - std::max(std::min(u0, u0 + e), -Profile::cutoff);
-        // (A branch across the axis, e = 0, has the kernel's value there: that function's answer.)
         if ((length > 0 && length < 1e-3) || e == 0) weight[j] = scale * profile.lineIntegralAlongAxisOf<Profile>(u0, e);
+        return length < 1e-3;
+    };
+    // The clipped interval slides across the support as j grows (the points are sorted): its
+    // length rises, stays at min(|e|, 2 cutoff), falls (each bound rounds monotonically), so
+    // where that plateau is well above 1e-3 the short intervals are the first and last points
+    // up to the first long one from each end.
+    if (std::abs(e) < 2e-3) {
+        for (std::size_t j = 0; j < n; ++j) takeShort(j);
+        return;
     }
+    std::size_t front = 0;
+    while (front < n && takeShort(front)) ++front;
+    for (std::size_t j = n; j > front + 1 && takeShort(j - 1); --j) {}
 }
+
+// A contact's nine terms, held by value: row[t] += w terms[t] then compiles to vector code (an
+// array whose address went to contactTensor might, for all the compiler knows, be the row).
+struct Tensor9 {
+    double t[9];
+    explicit Tensor9(const double (&tensor)[9]) { std::copy(tensor, tensor + 9, t); }
+    void addWeighted(double w, double* __restrict row) const {
+        for (int k = 0; k < 9; ++k) row[k] += w * t[k];
+    }
+};
 
 }  // namespace
 
 template <class Profile>
-void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
-                                              std::vector<double>& sums) const {
+TALUS_CG_VECTOR_CLONES void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points,
+                                                                     const PointsAlongAxis& byAxis,
+                                                                     std::vector<double>& sums) const {
     const std::size_t fields = static_cast<std::size_t>(layout_.count());
     const int k = setup_.coordinates.kernelAxes()[0];
     const double ak = setup_.width.a()[4 * k];
@@ -152,8 +177,9 @@ void CoarseGrainer::scatterParticlesAlongAxis(const std::vector<Vec3>& points, c
 // (KernelProfile::lineIntegralAlongAxis), compiled once per shape; the tensor is formed once per
 // segment.
 template <class Profile>
-void CoarseGrainer::scatterContactsAlongAxis(const std::vector<Vec3>& points, const PointsAlongAxis& byAxis,
-                                             std::vector<double>& sums) const {
+TALUS_CG_VECTOR_CLONES void CoarseGrainer::scatterContactsAlongAxis(const std::vector<Vec3>& points,
+                                                                    const PointsAlongAxis& byAxis,
+                                                                    std::vector<double>& sums) const {
     const std::size_t fields = static_cast<std::size_t>(layout_.count());
     const int k = setup_.coordinates.kernelAxes()[0];
     const double ak = setup_.width.a()[4 * k];
@@ -168,11 +194,11 @@ void CoarseGrainer::scatterContactsAlongAxis(const std::vector<Vec3>& points, co
                                 weight.data());
         double tensor[9];
         contactTensor(c, tensor);
+        const Tensor9 terms(tensor);
         for (std::size_t j = first; j < last; ++j) {
             const double w = weight[j - first];
             if (w == 0) continue;
-            double* row = sums.data() + byAxis.order[j] * fields + layout_.contactStressIndex();
-            for (int t = 0; t < 9; ++t) row[t] += w * tensor[t];
+            terms.addWeighted(w, sums.data() + byAxis.order[j] * fields + layout_.contactStressIndex());
         }
     }
 }

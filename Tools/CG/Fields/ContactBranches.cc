@@ -61,17 +61,19 @@ void forEachContactBranch(const ParticleFrame& frame, const ContactFrame& contac
     auto branchOf = [&](const ContactLine& c, ContactBranch& branch, long& flowing) {
         const Vec3& xi = frame.position[c.i];
         const double ri = frame.radius[c.i];
+        const Vec3 toCentre = minimumImage({xi[0] - c.point[0], xi[1] - c.point[1], xi[2] - c.point[2]});
+        const bool shaped = frame.isShaped(c.i);
         // The contact point lies r_i - dn/2 from the centre of i (fstat.md): a cheap check that
         // the two files describe the same particles.
-        const Vec3 toCentre = minimumImage({xi[0] - c.point[0], xi[1] - c.point[1], xi[2] - c.point[2]});
-        const double distance = std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
+        const auto distance = [&] {
+            return std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]);
+        };
         const double expected = ri - 0.5 * c.overlap;
         const double scaleOfC = std::max({std::abs(c.point[0]), std::abs(c.point[1]), std::abs(c.point[2]), 1.0});
         // (A superquadric's contact point lies within its bounding radius r, give or take the overlap.)
-        const bool shaped = frame.isShaped(c.i);
-        if (shaped ? !(distance <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
-                   : std::abs(distance - expected) > 1e-6 * ri + 1e-8 * scaleOfC) {
-            throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance) +
+        if (!contacts.fromTheRun && (shaped ? !(distance() <= ri + std::abs(c.overlap) + 1e-8 * scaleOfC)
+                                            : std::abs(distance() - expected) > 1e-6 * ri + 1e-8 * scaleOfC)) {
+            throw InputError(lineOf(fstatPath, c.line) + ": the contact point is " + str(distance()) +
                              " from the centre of particle " + std::to_string(c.i) + " in " + dataPath +
                              " (frame t = " + str(frame.time) + "), but " +
                              (shaped ? "its bounding radius is " + str(ri) : "r - dn/2 = " + str(expected)) +

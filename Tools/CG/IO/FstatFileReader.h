@@ -31,6 +31,9 @@ struct ContactFrame {
     // Each contact is one line (a run's own contacts, InRun/InRunFrame.h), so no pair needs its
     // lines grouped; a file may write a pair from both sides (fstat.md).
     bool eachContactOnce = false;
+    // The contacts and particles of one run's step (InRun/InRunFrame.h), consistent by
+    // construction: no line is checked against its particles (a file's are).
+    bool fromTheRun = false;
 };
 
 class FstatFileReader {

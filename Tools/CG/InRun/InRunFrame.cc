@@ -21,35 +21,38 @@ void fillInRunFrame(const SimulationState& state, const ContactRecordList* recor
     frame.box.hi = array(state.domain.hi);
     frame.ghosts = p.ghostCount;
     const std::size_t n = p.size();
-    frame.position.reserve(n);
-    frame.velocity.reserve(n);
-    frame.radius.reserve(n);
-    frame.species.reserve(n);
-    frame.mass.reserve(n);
+    // (Sized, then written by index: a sample copies every particle and contact.)
+    frame.position.resize(n);
+    frame.velocity.resize(n);
+    frame.radius.assign(p.radius.begin(), p.radius.begin() + static_cast<std::ptrdiff_t>(n));
+    frame.species.resize(n);
+    frame.mass.assign(p.mass.begin(), p.mass.begin() + static_cast<std::ptrdiff_t>(n));
     fixed.assign(n, false);
     for (std::size_t i = 0; i < n; ++i) {
-        frame.position.push_back(array(p.position[i]));
-        frame.velocity.push_back(array(p.velocity[i]));
-        frame.radius.push_back(p.radius[i]);
-        frame.species.push_back(static_cast<int>(p.species[i]));
-        frame.mass.push_back(p.mass[i]);
+        frame.position[i] = array(p.position[i]);
+        frame.velocity[i] = array(p.velocity[i]);
+        frame.species[i] = static_cast<int>(p.species[i]);
         fixed[i] = p.fixed[i] != 0;
     }
     contacts.time = state.time;
-    contacts.contacts.clear();
     contacts.eachContactOnce = true;  // (the kernel records a pair once: Contacts/ContactReport.h)
-    if (!records) return;
-    contacts.contacts.reserve(records->size());
+    contacts.fromTheRun = true;
+    if (!records) {
+        contacts.contacts.clear();
+        return;
+    }
+    contacts.contacts.resize(records->size());
+    ContactLine* c = contacts.contacts.data();
     for (const ContactRecord& r : *records) {
-        ContactLine c;
-        c.i = static_cast<long>(r.i);
-        c.j = static_cast<long>(r.j);
-        c.point = array(r.contactPoint);
+        c->i = static_cast<long>(r.i);
+        c->j = static_cast<long>(r.j);
+        c->point = array(r.contactPoint);
         // (the .fstat reader's normal of a wall contact points into the wall)
-        c.normal = array(c.isWall() ? talus::Vec3(-r.normal) : r.normal);
-        c.overlap = r.overlap;
-        c.force = array(r.normalForce * r.normal + r.tangentialForce);  // on i (fstat.md)
-        contacts.contacts.push_back(c);
+        c->normal = array(c->isWall() ? talus::Vec3(-r.normal) : r.normal);
+        c->overlap = r.overlap;
+        c->force = array(r.normalForce * r.normal + r.tangentialForce);  // on i (fstat.md)
+        c->line = 0;
+        ++c;
     }
 }
 

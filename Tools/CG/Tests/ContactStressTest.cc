@@ -178,3 +178,35 @@ TEST(ContactStress, MismatchedFilesAreRejected) {
     contacts.contacts.back().line = 13;
     EXPECT_THROW(grainer.setFrame(frame, &contacts, "a.data", "a.fstat"), InputError);
 }
+
+// Along one axis a grid's points whose clipped piece of the branch is shorter than 1e-3 widths
+// (where the antiderivative's difference loses digits) take the line integral's own answer; they
+// are found at both ends of a contact's run of points, not by a pass over all of them. Points a
+// hair inside both ends of the stressed range must get the same bits on a grid as alone, and the
+// value the line integral gives.
+TEST(ContactStress, ShortPiecesAtBothEndsOfAGridTakeTheLineIntegral) {
+    const DomainBox box{{0, 0, 0}, {4, 2.5, 6}};
+    const ParticleFrame frame = makeFrame({{1, 1, 2}, {1, 1, 2.9}}, {0.5, 0.5}, box);
+    const double f = 3.0, area = 4 * 2.5, width = 0.15;
+    ContactFrame contacts;
+    contacts.contacts.push_back(contactLine(1, 0, {1, 1, 2.45}, {0, 0, 1}, 0.1, {0, 0, f}));
+    const KernelProfile lucy(KernelShape::Lucy, 1);
+    for (double inside : {1e-4, 5e-5}) {  // (1e-4 of a length is 6.7e-4 widths)
+        const double first = 2 - width + inside, last = 2.9 + width - inside;
+        std::vector<double> z;
+        for (int k = 0; k <= 12; ++k) z.push_back(first + (last - first) * k / 12.0);
+        z.back() = last;
+        const Profile grid = depthProfile(KernelShape::Lucy, frame, contacts, width, z);
+        for (std::size_t k = 0; k < z.size(); ++k) {
+            const Profile alone = depthProfile(KernelShape::Lucy, frame, contacts, width, {z[k]});
+            EXPECT_EQ(grid.stressZZ[k], alone.stressZZ[0]) << "z = " << z[k];
+            // sigma_zz = (f b_z / area) times the kernel's mean along the branch, in widths
+            // (1/w per unit length; the mean over s in [0, 1] of u0 + s e, from the centre at 2.9).
+            const double expected =
+                f * 0.9 / area / width * lucy.lineIntegralAlongAxis((z[k] - 2.9) / width, 0.9 / width);
+            EXPECT_NEAR(grid.stressZZ[k], expected, 1e-12 * f / area) << "z = " << z[k];
+        }
+        EXPECT_GT(grid.stressZZ.front(), 0.0);
+        EXPECT_GT(grid.stressZZ.back(), 0.0);
+    }
+}
