@@ -26,6 +26,7 @@ cases = {
     "Hertz impacts at speed 10 (step for speed 1)": ("Benchmarks/HardCases", ["--case", "fast-impact"], "2"),
     "Hertz impacts at speed 10 (--impact-speed 10)": ("Benchmarks/HardCases",
                                                      ["--case", "fast-impact", "--impact-speed", "10"], "2"),
+    "rattlers in a jammed lattice": ("Benchmarks/HardCases", ["--case", "rattlers"], "4"),
 }
 grid = [1, 1.25, 1.5, 1.75, 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 15, 20, 30, 50]
 
