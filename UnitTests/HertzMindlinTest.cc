@@ -217,3 +217,28 @@ TEST(HertzMindlin, ShallowObliqueImpactSticksAsTheIntegratedLaw) {
         EXPECT_LT(errors[1], errors[0] / 1.7) << "vt0/vn0 = " << ratio;
     }
 }
+
+// HertzMindlin::fromCollision solves the elastic duration for E*: integrated independently
+// (HertzImpactReference, no damping), the collision of the given masses and radii at the given
+// speed lasts the given time; at another speed tc scales as v^(-1/5).
+TEST(HertzMindlin, FromCollisionLastsTheGivenTimeAtTheGivenSpeed) {
+    const double tc = 4.97e-3, reducedMass = 0.5, effectiveRadius = 0.25;
+    for (double speed : {0.3, 1.0, 4.0}) {
+        const HertzMindlin law = HertzMindlin::fromCollision(tc, 0.88, reducedMass, effectiveRadius, speed, 0.3);
+        EXPECT_EQ(law.characteristicVelocity, speed);
+        EXPECT_NEAR(law.restitution, 0.88, 0);
+        // Two equal materials: G* / E* = (1 - nu) / (2 (2 - nu)) (Theory/ContactLaws.md eq. (20a)).
+        EXPECT_NEAR(law.effectiveShearModulus / law.effectiveYoungsModulus, (1 - 0.3) / (2 * (2 - 0.3)), 1e-14);
+        for (double at : {speed, 2 * speed}) {
+            HertzImpact impact{};
+            impact.effectiveYoungsModulus = law.effectiveYoungsModulus;
+            impact.effectiveShearModulus = law.effectiveShearModulus;
+            impact.effectiveRadius = effectiveRadius;
+            impact.reducedMass = reducedMass;
+            impact.normalSpeed = at;
+            const double duration = HertzImpactReference(impact).integrate(referenceTolerance).duration;
+            EXPECT_NEAR(duration, tc * std::pow(at / speed, -0.2), 1e-8 * tc) << "law at " << speed << ", impact at " << at;
+        }
+    }
+    EXPECT_THROW(HertzMindlin::fromCollision(tc, 0.88, reducedMass, effectiveRadius, 0, 0.3), Error);
+}

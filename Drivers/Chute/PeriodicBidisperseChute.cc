@@ -10,6 +10,10 @@
 // kn, gt = gn, friction 0.5 (LL), 0.25 (SS), 0.375 (LS); the base is of the large material. With
 // --softer F every stiffness is divided by F and every damping by sqrt(F): each collision lasts
 // sqrt(F) times as long with the same restitution (the softer particles of common practice).
+// With --law hertz the contacts are Hertz-Mindlin instead (Theory/ContactLaws.md eq. (16)-(20)),
+// one material of Poisson ratio 0.3 for every sphere and the base, with the same restitution
+// and friction coefficients, its Young's modulus such that two large spheres meeting at speed 1
+// (sqrt(g d)) collide for the linear law's tc; the other pair types then follow from Hertz's law.
 // dt = 1e-4. Every time unit the run samples the kinetic energy and the mass flux; once both have
 // been on a plateau for the last 200 samples (their trend over them below 2% of their mean) the
 // flow is steady, and from then on the run averages depth profiles and the flow's mean velocity,
@@ -18,6 +22,7 @@
 // starts them afresh.)
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -32,6 +37,7 @@ class PeriodicBidisperseChute : public Chute {
 public:
     double angle = 24, length = 20, width = 10, sampleInterval = 1, tolerance = 0.02, baseDiameter = 1, softer = 1;
     int large = 1000, small = 2000, seed = 1, window = 200;
+    std::string law = "linear";
 
     PeriodicBidisperseChute() {
         run().addFlag("angle", "inclination in degrees", angle);
@@ -42,6 +48,7 @@ public:
         run().addFlag("base-diameter", "diameter of the fixed spheres of the disordered base", baseDiameter);
         run().addFlag("seed", "seed of the base and of the start positions", seed);
         run().addFlag("softer", "divide the stiffnesses by F and the dampings by sqrt(F) (collisions sqrt(F) longer)", softer);
+        run().addTextFlag("law", "linear (the thesis's spring-dashpot) or hertz (Hertz-Mindlin, the same collision at speed 1)", law);
         run().addFlag("sample-interval", "time between samples of the bulk flow", sampleInterval);
         run().addFlag("window", "samples on a plateau that make the flow steady", window);
         run().addFlag("tolerance", "largest relative change of a series' trend over the window", tolerance);
@@ -65,11 +72,21 @@ public:
         const double k = 2e5 / softer, g = 25 / std::sqrt(softer);
         const LinearSpringDashpot largeLaw{k, g, 2.0 / 7.0 * k, g, 0.5};
         const double density = 6 / pi;
-        largeSpecies_ = scene().addSpecies("large", density, largeLaw);
-        smallSpecies_ = scene().addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
-        applyBidisperseRule(scene().species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
-                                        .smallDiameter = smallDiameter, .largeCollisionTime = largeLaw.collisionTime(0.5),
-                                        .restitution = largeLaw.restitution(0.5), .mixedFriction = 0.375});
+        require(law == "linear" || law == "hertz", "--law: linear or hertz, got " + law);
+        require(law == "linear" || softer == 1, "--softer goes with --law linear only");
+        if (law == "hertz") {
+            const HertzMindlin hertz = HertzMindlin::fromCollision(largeLaw.collisionTime(0.5), largeLaw.restitution(0.5),
+                                                                   /*m* of two large*/ 0.5, /*R**/ 0.25, /*speed*/ 1, 0.3);
+            largeSpecies_ = scene().addSpecies("large", density, HertzMindlin(hertz).withFriction(0.5));
+            smallSpecies_ = scene().addSpecies("small", density, HertzMindlin(hertz).withFriction(0.25));
+            scene().species().setPair(largeSpecies_, smallSpecies_, HertzMindlin(hertz).withFriction(0.375));
+        } else {
+            largeSpecies_ = scene().addSpecies("large", density, largeLaw);
+            smallSpecies_ = scene().addSpecies("small", density, LinearSpringDashpot(largeLaw).withFriction(0.25));
+            applyBidisperseRule(scene().species(), {.large = largeSpecies_, .small = smallSpecies_, .largeDiameter = 1,
+                                            .smallDiameter = smallDiameter, .largeCollisionTime = largeLaw.collisionTime(0.5),
+                                            .restitution = largeLaw.restitution(0.5), .mixedFriction = 0.375});
+        }
         addBase(ChuteBase::disordered, baseDiameter, largeSpecies_, static_cast<std::uint64_t>(seed));
         // The spheres start at rest at random places in a loose layer above the base (packing
         // fraction about 0.2, so the insertion never jams).

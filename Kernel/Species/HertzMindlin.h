@@ -65,6 +65,22 @@ struct HertzMindlin {
         return betweenMaterials(youngsModulus, poissonRatio, youngsModulus, poissonRatio, restitution);
     }
 
+    // Two equal materials of Poisson ratio nu whose elastic central collision at `impactSpeed`
+    // lasts `collisionTime` for the given reduced mass and effective radius (collisionTime below,
+    // solved for E*), with restitution e; the time-step check takes that speed.
+    static HertzMindlin fromCollision(double collisionTime, double restitution, double reducedMass,
+                                      double effectiveRadius, double impactSpeed, double poissonRatio) {
+        require(collisionTime > 0 && reducedMass > 0 && effectiveRadius > 0 && impactSpeed > 0,
+                "Hertz-Mindlin from a collision: collision time, reduced mass, effective radius and impact speed must "
+                "be positive");
+        const double maxOverlap = collisionTime * impactSpeed / (2 * 0.4 * std::beta(0.4, 0.5));
+        const double effectiveModulus =
+            15 * reducedMass * impactSpeed * impactSpeed / (16 * std::sqrt(effectiveRadius) * std::pow(maxOverlap, 2.5));
+        HertzMindlin law = fromMaterial(2 * (1 - poissonRatio * poissonRatio) * effectiveModulus, poissonRatio, restitution);
+        law.characteristicVelocity = impactSpeed;
+        return law;
+    }
+
     HertzMindlin& withFriction(double mu) { friction = mu; return *this; }
 
     double beta() const {
