@@ -11,9 +11,10 @@ namespace talus::formats::restart {
 // The first line: "Talus restart VERSION". 2: the run line ends with the reorder flag; 3: kept
 // values; 4: the one-way periodic box (maser) and its pairs; 5: shapes; 6: the interior pair
 // count; 7: the summation line (the order of the force sums); 8: revolved walls (a wall line ends
-// with the profile, the next segment's direction and the start-joined flag).
+// with the profile, the next segment's direction and the start-joined flag); 9: the meshes whose
+// triangles are walls (a section after the walls).
 inline constexpr const char* magicWords[] = {"Talus", "restart"};
-inline constexpr int version = 8;
+inline constexpr int version = 9;
 
 // The section keys, in the order of the file.
 namespace key {
@@ -29,6 +30,7 @@ inline constexpr const char* species = "species";
 inline constexpr const char* pairs = "pairs";
 inline constexpr const char* motions = "motions";
 inline constexpr const char* walls = "walls";
+inline constexpr const char* meshes = "meshes";
 inline constexpr const char* shapes = "shapes";
 inline constexpr const char* particles = "particles";
 inline constexpr const char* pairList = "pairlist";

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "Run/RunSettings.h"
 #include "Shapes/Superquadric.h"
 #include "Species/SpeciesTable.h"
+#include "Walls/MeshWalls.h"
 #include "Walls/Wall.h"
 #include "Walls/PrescribedMotion.h"
 
@@ -37,6 +39,9 @@ struct SimulationState {
     std::vector<Superquadric> shapes;  // of the non-spherical particles (ParticleStore::shape)
     ParticleStore particles;
     std::vector<Wall> walls;
+    // The triangle meshes whose triangles are walls (Walls/MeshWalls.h; each wall of a triangle
+    // points to its mesh here, which a shared pointer keeps where it is).
+    std::vector<std::shared_ptr<MeshWalls>> meshes;
     std::vector<PrescribedMotion> motions;
     PairList pairList;
     std::mt19937_64 random{20260101};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Contacts/PairList.h"
+#include "Walls/MeshWalls.h"
 
 namespace talus::pairListing {
 
@@ -115,6 +116,19 @@ inline void restoreWallPairs(const std::vector<WallCandidate>& list, std::size_t
 inline bool isWallCandidate(const ParticleStore& particles, const Wall& wall, std::uint32_t i, const Vec3& x, double reach) {
     if (particles.fixed[i]) return false;
     return wall.motion >= 0 || wall.signedDistance(x) < particles.radius[i] + reach;
+}
+
+// The same rule for the triangles of a mesh (Walls/MeshWalls.h), which rests: those its grid finds
+// near particle i at x and within the reach, appended as wall candidates.
+inline void addMeshWallCandidates(std::vector<WallCandidate>& candidates, const ParticleStore& particles,
+                                  const std::vector<Wall>& walls, const MeshWalls& mesh, std::uint32_t i,
+                                  const Vec3& x, double reach) {
+    if (particles.fixed[i]) return;
+    const double within = particles.radius[i] + reach;
+    for (const std::uint32_t t : mesh.grid.trianglesNear(x, within)) {
+        const std::uint32_t w = mesh.firstWall + t;
+        if (walls[w].signedDistance(x) < within) candidates.push_back({i, w});
+    }
 }
 
 // The listing rule of the one-way pairs (PairList::oneWayPairs) at positions x: i, a mobile

@@ -129,9 +129,17 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     oneWayHistory.assign(oneWayPairs.size());
     restorePairs(oneWayPairs, 0, oneWayHistory, particles, lookup);
     wallPairs.clear();
-    for (std::uint32_t w = 0; w < walls.size(); ++w)
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+        if (walls[w].isTriangle()) {  // (a mesh's triangles, from its grid: then past them)
+            const MeshWalls& mesh = *walls[w].mesh;
+            for (std::uint32_t i = 0; i < owned; ++i)
+                addMeshWallCandidates(wallPairs, particles, walls, mesh, i, particles.position[i], reach);
+            w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
+            continue;
+        }
         for (std::uint32_t i = 0; i < owned; ++i)
             if (isWallCandidate(particles, walls[w], i, particles.position[i], reach)) wallPairs.push_back({i, w});
+    }
     wallHistory.assign(wallPairs.size());
     restoreWallPairs(wallPairs, 0, wallHistory, particles, lookup);
     noted_.clear();

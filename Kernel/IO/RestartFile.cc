@@ -90,6 +90,40 @@ ContactHistory readHistory(Reader& r, HistoryExtras extras) {
     return h;
 }
 
+// The meshes section (version 9): each mesh rebuilt from its vertices and triangles (the
+// constructor checks them as it checks an STL file's), its triangles' walls pointed to it.
+void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount) {
+    r.expect(key::meshes);
+    const auto meshCount = r.count("mesh count", 1u << 20);
+    for (std::uint64_t k = 0; k < meshCount; ++k) {
+        const auto species = static_cast<std::uint32_t>(r.index("mesh species", speciesCount));
+        const auto firstWall = r.index("mesh first wall", t.walls.size());
+        const auto vertexCount = r.count("mesh vertex count", 1u << 30);
+        const auto triangleCount = r.count("mesh triangle count", t.walls.size() - firstWall);
+        if (triangleCount == 0) r.fail("a mesh without triangles");
+        std::vector<Vec3> vertices(vertexCount);
+        for (Vec3& v : vertices) v = r.vec("mesh vertex");
+        std::vector<TriangleCorners> corners(triangleCount);
+        for (TriangleCorners& c : corners)
+            for (Vec3& corner : c) corner = vertices[r.index("mesh triangle vertex", vertexCount)];
+        std::shared_ptr<MeshWalls> walls;
+        MeshSource source;
+        source.name = "mesh " + std::to_string(k);
+        try {
+            walls = std::make_shared<MeshWalls>(TriangleMesh(corners, source), species, static_cast<std::uint32_t>(firstWall));
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
+        for (std::uint32_t tri = 0; tri < triangleCount; ++tri) {
+            Wall& w = t.walls[firstWall + tri];
+            if (w.mesh != nullptr) r.fail("wall " + std::to_string(firstWall + tri) + " is in two meshes");
+            w.mesh = walls.get();
+            w.triangle = tri;
+        }
+        t.meshes.push_back(std::move(walls));
+    }
+}
+
 }  // namespace
 
 void writeRestartFile(const std::string& path, const SimulationState& s) {
@@ -134,6 +168,20 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             for (double v : wall.profile) w << v;
             w << wall.next[0] << wall.next[1] << std::uint64_t(wall.startJoined);
             w.end();
+        }
+        // The meshes whose triangles are walls: species, first wall, vertex and triangle counts,
+        // then the vertices and each triangle's vertex indices.
+        w.key(key::meshes) << std::uint64_t(s.meshes.size()); w.end();
+        for (const auto& m : s.meshes) {
+            w.key(item) << std::uint64_t(m->species) << std::uint64_t(m->firstWall)
+                        << std::uint64_t(m->mesh.vertexCount()) << std::uint64_t(m->mesh.triangleCount());
+            w.end();
+            for (std::size_t v = 0; v < m->mesh.vertexCount(); ++v) { w.key(item) << m->mesh.vertex(v); w.end(); }
+            for (std::size_t t = 0; t < m->mesh.triangleCount(); ++t) {
+                w.key(item);
+                for (std::uint32_t v : m->mesh.triangle(t)) w << std::uint64_t(v);
+                w.end();
+            }
         }
         const ParticleStore& p = s.particles;
         const bool shapes = p.hasShapes();
@@ -192,10 +240,10 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     if (!in) throw Error("cannot open restart file " + path);
     Reader r(in, path);
     for (const char* word : formats::restart::magicWords) r.expect(word);
-    // (Version 7 differs only in its wall lines, which had no revolved segments.)
+    // (Version 7 differs only in its wall lines, which had no revolved segments; 8 has no meshes.)
     const auto version = r.count("format version");
-    if (version != formatVersion && version != 7)
-        r.fail("format version " + std::to_string(version) + " is not supported (this build reads versions 7 and " +
+    if (version < 7 || version > static_cast<std::uint64_t>(formatVersion))
+        r.fail("format version " + std::to_string(version) + " is not supported (this build reads versions 7 to " +
                std::to_string(formatVersion) + ")");
     SimulationState t;  // filled completely before it replaces s
     RunSettings& c = t.settings;
@@ -300,6 +348,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         for (double& v : w.next) v = r.real("wall next segment direction");
         w.startJoined = r.flag("wall start-joined flag");
     }
+    if (version >= 9) readMeshes(r, t, speciesCount);
     r.expect(key::shapes);
     const bool shapes = r.flag("shapes flag");
     t.shapes.clear();

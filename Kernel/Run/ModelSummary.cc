@@ -65,12 +65,13 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
         present[p.species[i]] = true;
     }
     for (const Wall& w : s.walls) present[w.species] = true;
-    std::size_t cylinders = 0, revolved = 0;
+    std::size_t cylinders = 0, revolved = 0, triangles = 0;
     for (const Wall& w : s.walls) {
         cylinders += w.isCylinder();
         revolved += w.isRevolved();
+        triangles += w.isTriangle();
     }
-    const std::size_t planes = s.walls.size() - cylinders - revolved;
+    const std::size_t planes = s.walls.size() - cylinders - revolved - triangles;
 
     std::ostringstream out;
     out << "models ";
@@ -98,6 +99,9 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
                 out << separator << counted(count, kind);
                 separator = ", ";
             }
+        if (triangles > 0)
+            out << separator << counted(triangles, "triangle") << " in " << s.meshes.size()
+                << (s.meshes.size() == 1 ? " mesh" : " meshes");
     }
     if (s.domain.anyPeriodic()) {
         out << "; periodic along";

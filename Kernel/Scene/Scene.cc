@@ -194,8 +194,31 @@ std::size_t Scene::addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirect
     return first;
 }
 
+std::size_t Scene::addMeshWall(TriangleMesh mesh, std::size_t species) {
+    require(species < state_.species.size(), "mesh wall: species " + std::to_string(species) + " does not exist");
+    require(mesh.triangleCount() > 0, "mesh wall: " + mesh.source().name + " has no triangles");
+    const auto first = static_cast<std::uint32_t>(state_.walls.size());
+    auto walls = std::make_shared<MeshWalls>(std::move(mesh), static_cast<std::uint32_t>(species), first);
+    for (std::uint32_t t = 0; t < walls->mesh.triangleCount(); ++t) {
+        Wall wall;
+        wall.normal = walls->mesh.normal(t);
+        wall.point = walls->mesh.corner(t, 0);
+        wall.species = static_cast<std::uint32_t>(species);
+        wall.mesh = walls.get();
+        wall.triangle = t;
+        state_.walls.push_back(wall);
+    }
+    state_.meshes.push_back(std::move(walls));
+    state_.pairList.valid = false;
+    return first;
+}
+
 void Scene::removeWall(std::size_t index) {
     require(index < state_.walls.size(), "removeWall: wall " + std::to_string(index) + " does not exist");
+    require(!state_.walls[index].isTriangle(), "removeWall: wall " + std::to_string(index) +
+                                                   " is a triangle of a mesh, whose triangles are not removed one by one");
+    for (const auto& m : state_.meshes)
+        if (m->firstWall > index) --m->firstWall;
     state_.walls.erase(state_.walls.begin() + static_cast<std::ptrdiff_t>(index));
     state_.pairList.followWallRemoval(static_cast<std::uint32_t>(index));
 }
@@ -312,6 +335,11 @@ void Scene::validate(double timeStep, double largestStepFraction, double impactS
     state_.species.validate();
     for (const Wall& w : state_.walls)
         require(w.species < state_.species.size(), "wall species " + std::to_string(w.species) + " does not exist");
+    if (!state_.meshes.empty() && state_.particles.hasShapes())
+        for (std::size_t i = 0; i < state_.particles.size(); ++i)
+            require(state_.particles.shape[i] < 0, "a mesh wall (" + state_.meshes[0]->mesh.source().name +
+                                                       ") meets spheres only, but particle id " +
+                                                       std::to_string(state_.particles.id[i]) + " is a superquadric");
     std::string which;
     const double tc = shortestCollisionTime(&which, impactSpeed);
     if (timeStep > largestStepFraction * tc)

@@ -99,8 +99,14 @@ public:
     std::size_t addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirection,
                                 const std::vector<std::array<double, 2>>& profile, std::size_t species,
                                 int motion = -1);
+    // A triangle mesh (Walls/TriangleMesh.h, IO/StlReader.h) as walls, one per triangle (Walls/
+    // MeshWalls.h, Theory/ContactLaws.md "Triangle meshes"): both sides of it are walls; a sphere
+    // meets each face, edge and vertex once however many triangles share it. The mesh rests
+    // (no motion), and meets spheres only. Returns the first triangle's wall index; the others
+    // follow it in the mesh's order.
+    std::size_t addMeshWall(TriangleMesh mesh, std::size_t species);
     // Removes wall `index` (a silo's lid opened); the walls after it move down one index. Its
-    // contacts end, the others keep their histories.
+    // contacts end, the others keep their histories. A mesh's triangles are not removed one by one.
     void removeWall(std::size_t index);
     const std::vector<Wall>& walls() const { return state_.walls; }
     std::size_t addMotion(const PrescribedMotion& motion);

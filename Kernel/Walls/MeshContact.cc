@@ -123,4 +123,21 @@ std::vector<MeshContact> sphereMeshContacts(const TriangleMesh& mesh, const Vec3
     return contacts;
 }
 
+TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x) {
+    const TriangleCorners corners{mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
+    const TrianglePoint nearest = closestPointOnTriangle(x, corners, mesh.tolerance());
+    const Vec3 apart = x - nearest.point;
+    const double distance = apart.norm();
+    const Vec3 normal = distance > 0 ? Vec3(apart / distance) : mesh.normal(t);
+    if (nearest.feature == MeshFeature::face) return {distance, normal, true};
+    // (An edge or a vertex: its triangles asked, as sphereMeshContacts asks them.)
+    const std::uint32_t index =
+        nearest.feature == MeshFeature::edge ? mesh.triangleEdges(t)[nearest.which] : mesh.triangle(t)[nearest.which];
+    const std::span<const std::uint32_t> sharing =
+        nearest.feature == MeshFeature::edge ? mesh.edgeTriangles(index) : mesh.vertexTriangles(index);
+    if (t != *std::min_element(sharing.begin(), sharing.end())) return {distance, normal, false};
+    NearestPoints nearestPoints(mesh, x);
+    return {distance, normal, nearestPoints.allOn(sharing, nearest.feature, index)};
+}
+
 }  // namespace talus

@@ -58,4 +58,18 @@ struct MeshContact {
 std::vector<MeshContact> sphereMeshContacts(const TriangleMesh& mesh, const Vec3& centre, double radius,
                                             std::span<const std::uint32_t> candidates);
 
+// Where a sphere centred at x meets triangle t of `mesh` (a triangle as a wall, Walls/MeshWalls.h):
+// the distance to the triangle's nearest point, the unit normal from that point towards x (the
+// triangle's normal for a centre on it), and whether a contact there is the triangle's to count:
+// a face point always; an edge or a vertex point when every triangle sharing it has its nearest
+// point there too (the rule above) and t is the first of those triangles, so that exactly one
+// triangle counts it. So the triangles that count a contact within a radius of x give the
+// contacts of sphereMeshContacts.
+struct TriangleGap {
+    double distance;
+    Vec3 normal;
+    bool counts;
+};
+TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x);
+
 }  // namespace talus

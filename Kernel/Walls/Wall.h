@@ -21,6 +21,8 @@
 // centre (the linearisation of Theory/Superquadrics.md "Walls"; its error grows with elongation and
 // curvature). A wall may follow a prescribed motion (motion >= 0), which moves its point and turns
 // its normal (a drum turning about its own axis keeps both, and its surface moves with the motion).
+// A triangle of a mesh (Walls/MeshWalls.h) is met at its point nearest to x, counted by the face,
+// edge and vertex rule of Walls/MeshContact.h; it rests.
 #pragma once
 
 #include <algorithm>
@@ -32,6 +34,8 @@
 #include "Math/Vector.h"
 
 namespace talus {
+
+struct MeshWalls;
 
 struct Wall {
     Vec3 normal = Vec3::UnitZ();  // plane: the normal; cylinder: the axis direction
@@ -45,6 +49,12 @@ struct Wall {
     // next segment from the joint.
     std::array<double, 2> next{};
     bool startJoined = false;     // a revolved segment's end 0 is a joint (which it leaves)
+    // A triangle: its mesh and its index there (normal and point: the triangle's normal and first
+    // corner); no mesh for the other kinds.
+    const MeshWalls* mesh = nullptr;
+    std::uint32_t triangle = 0;
+
+    bool isTriangle() const { return mesh != nullptr; }
 
     bool isCylinder() const { return radius > 0; }
     bool isRevolved() const { return profile[0] != profile[2] || profile[1] != profile[3]; }
@@ -58,9 +68,11 @@ struct Wall {
     };
     RevolvedPoint revolvedPointNearest(const Vec3& x) const;
 
-    // Plane and cylinder: the signed distance, positive on the particles' side. Revolved segment:
-    // the distance to its nearest point, counted or not (the rule for listing candidates).
+    // Plane and cylinder: the signed distance, positive on the particles' side. Revolved segment
+    // or triangle: the distance to its nearest point, counted or not (the rule for listing
+    // candidates).
     double signedDistance(const Vec3& x) const {
+        if (isTriangle()) [[unlikely]] return triangleGap(x).distance;
         if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).distance;
         if (!isCylinder()) return (x - point).dot(normal);
         return radius - fromAxis(x).norm();
@@ -78,6 +90,7 @@ struct Wall {
         bool counts;
     };
     Gap gapTo(const Vec3& x) const {
+        if (isTriangle()) [[unlikely]] return triangleGap(x);
         if (isRevolved()) [[unlikely]] {
             const RevolvedPoint q = revolvedPointNearest(x);
             return {q.distance, q.normal, q.hoopCurvature, q.counts};
@@ -87,6 +100,7 @@ struct Wall {
     }
 
     Vec3 normalAt(const Vec3& x) const {
+        if (isTriangle()) [[unlikely]] return triangleGap(x).normal;
         if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).normal;
         if (!isCylinder()) return normal;
         const Vec3 out = fromAxis(x);
@@ -98,6 +112,10 @@ struct Wall {
     // Signed distance of y from the tangent plane of the wall at the point nearest to x (infinite
     // for a revolved segment whose nearest point to x does not count).
     double tangentPlaneDistance(const Vec3& y, const Vec3& x) const {
+        if (isTriangle()) [[unlikely]] {
+            const Gap g = triangleGap(x);
+            return g.counts ? g.normal.dot(y - x) + g.distance : std::numeric_limits<double>::infinity();
+        }
         if (isRevolved()) [[unlikely]] {
             const RevolvedPoint q = revolvedPointNearest(x);
             return q.counts ? q.normal.dot(y - q.point) : std::numeric_limits<double>::infinity();
@@ -107,6 +125,10 @@ struct Wall {
     }
 
 private:
+    // A triangle's gap (Walls/MeshWalls.cc): no curvature (a face is flat; its edges and corners
+    // are met as a plane through the nearest point, as LIGGGHTS meets them).
+    Gap triangleGap(const Vec3& x) const;
+
     // The part of x - point perpendicular to the axis.
     Vec3 fromAxis(const Vec3& x) const {
         const Vec3 d = x - point;
