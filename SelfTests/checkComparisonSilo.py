@@ -7,7 +7,9 @@ the silo add up to the filled mass (to round-off) and the discharged mass never 
 drains once the lid is open; and at every saved frame each sphere is held by the walls: within
 the cylinder (distance from the axis at most R - r, less a quarter of r of overlap) and above
 the cone and the lid (the surface of revolution's distance, Documentation/Theory/ContactLaws.md
-eq. (6a)), unless it has fallen through the orifice.
+eq. (6a)), unless it has fallen through the orifice (then within the 45-degree cone that widens
+below it: a sphere may graze the orifice's rim on its way out). The same checks hold for the
+published triangles (--walls FILE), whose inner face is that surface.
 
     checkComparisonSilo.py DRIVER [driver flags...]
 """
@@ -61,8 +63,8 @@ with open("silo.data") as data:
         for _ in range(n):
             x, y, z = map(float, data.readline().split()[:3])
             rho = math.hypot(x, y)
-            if z < z0 - r:  # through the orifice (or a lost one: then it is outside the cylinder)
-                escaped += rho > r0
+            if z < z0 - r:  # through the orifice (a lost one is outside the cone below it)
+                escaped += rho > r0 + (z0 - z)
                 continue
             cone = distance_to_segment(rho, z, (r0, z0), (R, z0 + R - r0))
             above_cone = z - z0 >= rho - r0  # on the axis's side of the cone's generator

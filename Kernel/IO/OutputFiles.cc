@@ -26,6 +26,8 @@ OutputFiles::OutputFiles(const SimulationState& state, bool restarted) {
     if (c.writeEne) open(ene_, c.name + ".ene", restarted, state.output.eneBytes);
     // The index lists the frames of the restart point (a killed run may have listed later ones).
     if (restarted && c.writeVtu) writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
+    // The meshes rest: one file, written when the run starts (ParaView opens it beside the .pvd).
+    if (c.writeVtu && !state.meshes.empty()) writeMeshVtu(c.name + "_mesh.vtu", state.meshes);
 }
 
 OutputFiles::~OutputFiles() {

@@ -74,6 +74,48 @@ void writeVtu(const std::string& path, const ParticleStore& p, const std::vector
     replaceFile(path, [&](std::ostream& out) { writeFrame(out, p, order, shapes); }, /*syncFolder*/ false);
 }
 
+void writeMeshVtu(const std::string& path, const std::vector<std::shared_ptr<MeshWalls>>& meshes) {
+    std::size_t points = 0, cells = 0;
+    for (const auto& m : meshes) points += m->mesh.vertexCount(), cells += m->mesh.triangleCount();
+    replaceFile(path, [&](std::ostream& out) {
+        out.precision(17);  // (the walls' own numbers, to the bit)
+        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n<Points>\n"
+            << "<DataArray type=\"Float64\" Name=\"Position\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const auto& m : meshes)
+            for (std::size_t v = 0; v < m->mesh.vertexCount(); ++v) {
+                const Vec3& x = m->mesh.vertex(v);
+                out << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+            }
+        // One VTK_TRIANGLE cell (type 5) per triangle, its corners in the mesh's order; per cell
+        // its wall's index, its mesh and its species.
+        out << "</DataArray>\n</Points>\n<CellData Scalars=\"Wall\">\n";
+        auto perTriangle = [&](const char* name, auto value) {
+            out << "<DataArray type=\"Int64\" Name=\"" << name << "\" format=\"ascii\">\n";
+            for (std::size_t k = 0; k < meshes.size(); ++k)
+                for (std::size_t t = 0; t < meshes[k]->mesh.triangleCount(); ++t) out << value(k, t) << '\n';
+            out << "</DataArray>\n";
+        };
+        perTriangle("Wall", [&](std::size_t k, std::size_t t) { return meshes[k]->firstWall + t; });
+        perTriangle("Mesh", [](std::size_t k, std::size_t) { return k; });
+        perTriangle("Species", [&](std::size_t k, std::size_t) { return meshes[k]->species; });
+        out << "</CellData>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+        std::size_t first = 0;
+        for (const auto& m : meshes) {
+            for (std::size_t t = 0; t < m->mesh.triangleCount(); ++t) {
+                const auto& v = m->mesh.triangle(t);
+                out << first + v[0] << ' ' << first + v[1] << ' ' << first + v[2] << '\n';
+            }
+            first += m->mesh.vertexCount();
+        }
+        out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+        for (std::size_t c = 1; c <= cells; ++c) out << 3 * c << '\n';
+        out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+        for (std::size_t c = 0; c < cells; ++c) out << "5\n";
+        out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    }, /*syncFolder*/ false);
+}
+
 void writePvd(const std::string& path, const std::string& base, const std::vector<double>& times) {
     const std::string file = std::filesystem::path(base).filename().string();
     replaceFile(path, [&](std::ostream& out) {

@@ -3,7 +3,8 @@
 //
 // A steel silo, a cylinder of radius 0.1 m over a 45-degree cone down to a circular orifice
 // (--orifice small: radius 0.02 m; large: 0.03 m), smooth: a surface of revolution whose profile
-// is the inner face of the published triangles. Closed by a lid at the orifice, it is filled
+// is the inner face of the published triangles, or those triangles themselves (--walls FILE: the
+// comparison's Silo/walls-*-orifice.txt, or an STL file). Closed by a lid at the orifice, it is filled
 // with --particles spheres of diameter 4 mm of --material M1 or M2 (100000 in the comparison),
 // dropped from random places in a column above the cone (the comparison gives no start
 // positions), which settle until --open-time. Then the lid is taken away and the silo drains;
@@ -18,6 +19,7 @@
 #include "Boundaries/DeletionBoundary.h"
 #include "Boundaries/Filling.h"
 #include "ComparisonInputs.h"
+#include "IO/StlReader.h"
 #include "Sampling/Sampling.h"
 #include "Simulation.h"
 
@@ -25,7 +27,7 @@ using namespace talus;
 
 class ComparisonSilo : public Simulation {
 public:
-    std::string orifice = "small", material = "M1";
+    std::string orifice = "small", material = "M1", walls = "smooth";
     int particles = 100000;
     double openTime = 0.5, sampleInterval = 0.01, fillingPacking = 0.2;
     int soft = 0;
@@ -40,6 +42,7 @@ public:
     ComparisonSilo() {
         run().addTextFlag("orifice", "small (radius 0.02 m) or large (0.03 m)", orifice);
         run().addTextFlag("material", "M1 or M2, the particles' material", material);
+        run().addTextFlag("walls", "smooth (a surface of revolution) or a file of the silo's triangles (table or STL)", walls);
         run().addFlag("particles", "spheres of diameter 4 mm to fill in", particles);
         run().addFlag("open-time", "when the lid is taken away (s): the filling settles until then", openTime);
         run().addFlag("sample-interval", "time between the discharged masses written to NAME.discharge (s)", sampleInterval);
@@ -77,8 +80,17 @@ public:
         const std::size_t grains = species[material == "M1" ? 0 : 1], steel = species[2];
         scene().addWall(Vec3::UnitZ(), Vec3(0, 0, orificeHeight()), steel);
         const double rim = coneTop() + siloHeight;
-        scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(),
-                                {{orificeRadius(), orificeHeight()}, {siloRadius, coneTop()}, {siloRadius, rim}}, steel);
+        if (walls == "smooth") {
+            scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(),
+                                    {{orificeRadius(), orificeHeight()}, {siloRadius, coneTop()}, {siloRadius, rim}}, steel);
+        } else {
+            const bool stl = walls.size() > 4 && walls.substr(walls.size() - 4) == ".stl";
+            TriangleMesh mesh = stl ? readStl(walls) : readTriangleTable(walls);
+            require(std::abs(mesh.lo().z() - orificeHeight()) < 1e-6,
+                    "--walls " + walls + ": its lowest point (z = " + str(mesh.lo().z()) + " m) is not the orifice of the " +
+                        orifice + " silo (z = " + str(orificeHeight()) + " m): give the matching --orifice");
+            scene().addMeshWall(std::move(mesh), steel);
+        }
         outlet_.setPlane(-Vec3::UnitZ(), Vec3(0, 0, orificeHeight() - outletDrop));
         const Filling column(Cylinder(Vec3(0, 0, coneTop()), 2, columnHeight, columnRadius));
         const SizeDistribution spheres = SizeDistribution::byNumber().add(grains, 0.5 * diameter);
