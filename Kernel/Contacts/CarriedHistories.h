@@ -125,7 +125,11 @@ inline void addMeshWallCandidates(std::vector<WallCandidate>& candidates, const 
                                   const Vec3& x, double reach) {
     if (particles.fixed[i]) return;
     const double within = particles.radius[i] + reach;
-    for (const std::uint32_t t : mesh.grid.trianglesNear(x, within)) {
+    thread_local std::vector<std::uint32_t> near;  // (kept from particle to particle)
+    mesh.grid.trianglesNear(x, within, near);
+    for (const std::uint32_t t : near) {
+        const double clear = mesh.reach[t] + within;  // (clear of the sphere that holds the triangle)
+        if ((x - mesh.centre[t]).squaredNorm() >= clear * clear) continue;
         const std::uint32_t w = mesh.firstWall + t;
         if (walls[w].signedDistance(x) < within) candidates.push_back({i, w});
     }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "Contacts/ContactForceLoop.h"
+#include "Walls/MeshWalls.h"
 
 namespace talus::TALUS_LANES {
 
@@ -71,7 +72,20 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
             shapedWall(list, k, i, wall, motions);
         return;
     }
-    const Wall::Gap gap = wall.gapTo(p_.position[i]);
+    // A triangle apart and clear of the particle by more than the closing distance stays apart
+    // below: tried first against the sphere about it that holds it (no nearest point sought),
+    // then with its nearest point but without asking its neighbours whether it counts.
+    const bool apartBefore = list.wallHistory.state(k) == ContactHistory::apart;
+    if (wall.isTriangle() && apartBefore) [[unlikely]] {
+        const MeshWalls& mesh = *wall.mesh;
+        const double clear = mesh.reach[wall.triangle] + p_.radius[i] + closing_;
+        if ((p_.position[i] - mesh.centre[wall.triangle]).squaredNorm() >= clear * clear) return;
+    }
+    // (Asked within a hair more than r + closing, so that a point not asked passes the test of
+    // distance - r against closing below whatever the rounding.)
+    const double askWithin =
+        apartBefore ? (p_.radius[i] + closing_) * (1 + 1e-12) : std::numeric_limits<double>::infinity();
+    const Wall::Gap gap = wall.isTriangle() ? wall.triangleGap(p_.position[i], askWithin) : wall.gapTo(p_.position[i]);
     const double distance = gap.distance;
     const bool touching = distance < p_.radius[i];
     // (A moving wall may close in faster than the particles: no shortcut for it.)

@@ -58,7 +58,11 @@ namespace {
 // and those of their neighbours that an edge or a vertex must ask.
 class NearestPoints {
 public:
-    NearestPoints(const TriangleMesh& mesh, const Vec3& x) : mesh_(mesh), x_(x) {}
+    struct Found;
+    // (found: where the points go, cleared first; a caller may keep it from call to call.)
+    NearestPoints(const TriangleMesh& mesh, const Vec3& x, std::vector<Found>& found) : mesh_(mesh), x_(x), found_(found) {
+        found_.clear();
+    }
 
     struct Found {
         std::uint32_t triangle;
@@ -89,7 +93,7 @@ public:
 private:
     const TriangleMesh& mesh_;
     Vec3 x_;
-    std::vector<Found> found_;
+    std::vector<Found>& found_;
 };
 
 }  // namespace
@@ -97,7 +101,8 @@ private:
 std::vector<MeshContact> sphereMeshContacts(const TriangleMesh& mesh, const Vec3& centre, double radius,
                                             std::span<const std::uint32_t> candidates) {
     std::vector<MeshContact> contacts;
-    NearestPoints nearestPoints(mesh, centre);
+    std::vector<NearestPoints::Found> found;
+    NearestPoints nearestPoints(mesh, centre, found);
     for (const std::uint32_t t : candidates) {
         // A triangle whose plane is out of reach is out of reach (and a neighbour that an edge
         // asks about is then found on demand).
@@ -123,20 +128,21 @@ std::vector<MeshContact> sphereMeshContacts(const TriangleMesh& mesh, const Vec3
     return contacts;
 }
 
-TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x) {
+TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x, double countWithin) {
     const TriangleCorners corners{mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
     const TrianglePoint nearest = closestPointOnTriangle(x, corners, mesh.tolerance());
     const Vec3 apart = x - nearest.point;
     const double distance = apart.norm();
     const Vec3 normal = distance > 0 ? Vec3(apart / distance) : mesh.normal(t);
-    if (nearest.feature == MeshFeature::face) return {distance, normal, true};
+    if (nearest.feature == MeshFeature::face || !(distance < countWithin)) return {distance, normal, true};
     // (An edge or a vertex: its triangles asked, as sphereMeshContacts asks them.)
     const std::uint32_t index =
         nearest.feature == MeshFeature::edge ? mesh.triangleEdges(t)[nearest.which] : mesh.triangle(t)[nearest.which];
     const std::span<const std::uint32_t> sharing =
         nearest.feature == MeshFeature::edge ? mesh.edgeTriangles(index) : mesh.vertexTriangles(index);
     if (t != *std::min_element(sharing.begin(), sharing.end())) return {distance, normal, false};
-    NearestPoints nearestPoints(mesh, x);
+    thread_local std::vector<NearestPoints::Found> found;  // (its memory kept from call to call)
+    NearestPoints nearestPoints(mesh, x, found);
     return {distance, normal, nearestPoints.allOn(sharing, nearest.feature, index)};
 }
 

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -70,6 +71,9 @@ struct TriangleGap {
     Vec3 normal;
     bool counts;
 };
-TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x);
+// A centre `countWithin` or farther from the triangle is not asked whether its point counts
+// (counts is then true): a contact so far off is of no interest, and the asking is the dear part.
+TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x,
+                        double countWithin = std::numeric_limits<double>::infinity());
 
 }  // namespace talus

@@ -22,10 +22,18 @@ double gridCell(const TriangleMesh& mesh) {
 }  // namespace
 
 MeshWalls::MeshWalls(TriangleMesh triangles, std::uint32_t wallSpecies, std::uint32_t first)
-    : mesh(std::move(triangles)), grid(mesh, gridCell(mesh)), species(wallSpecies), firstWall(first) {}
+    : mesh(std::move(triangles)), grid(mesh, gridCell(mesh)), species(wallSpecies), firstWall(first) {
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const Vec3 c = (mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)) / 3;
+        double r = 0;
+        for (int k = 0; k < 3; ++k) r = std::max(r, (mesh.corner(t, k) - c).norm());
+        centre.push_back(c);
+        reach.push_back(r * (1 + 1e-12));  // (a hair wider than the corners' rounding)
+    }
+}
 
-Wall::Gap Wall::triangleGap(const Vec3& x) const {
-    const TriangleGap g = talus::triangleGap(mesh->mesh, triangle, x);
+Wall::Gap Wall::triangleGap(const Vec3& x, double countWithin) const {
+    const TriangleGap g = talus::triangleGap(mesh->mesh, triangle, x, countWithin);
     return {g.distance, g.normal, 0, g.counts};
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "Walls/TriangleGrid.h"
 #include "Walls/TriangleMesh.h"
@@ -19,6 +20,10 @@ struct MeshWalls {
     TriangleGrid grid;
     std::uint32_t species;
     std::uint32_t firstWall;
+    // Per triangle its centroid and the radius of the sphere about it that holds the triangle: a
+    // particle clear of that sphere is clear of the triangle, found without its nearest point.
+    std::vector<Vec3> centre;
+    std::vector<double> reach;
 };
 
 }  // namespace talus

@@ -69,6 +69,13 @@ std::uint64_t TriangleGrid::key(std::int64_t i, std::int64_t j, std::int64_t k) 
 }
 
 std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3& centre, double radius) const {
+    std::vector<std::uint32_t> found;
+    trianglesNear(centre, radius, found);
+    return found;
+}
+
+void TriangleGrid::trianglesNear(const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const {
+    found.clear();
     require(isFinite(centre) && std::isfinite(radius) && radius >= 0,
             "TriangleGrid: a query needs a finite centre and radius, got radius " + str(radius));
     const Vec3 lo = centre.array() - radius, hi = centre.array() + radius;
@@ -76,9 +83,8 @@ std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3& centre, doubl
     for (int a = 0; a < 3; ++a) {
         from[a] = std::max<std::int64_t>(from[a], 0);
         to[a] = std::min(to[a], cells_[a] - 1);
-        if (from[a] > to[a]) return {};
+        if (from[a] > to[a]) return;
     }
-    std::vector<std::uint32_t> found;
     auto takeCell = [&](std::size_t q) {
         for (std::size_t e = cellStart_[q]; e < cellStart_[q + 1]; ++e) {
             const std::uint32_t t = cellTriangles_[e];
@@ -108,7 +114,6 @@ std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3& centre, doubl
     }
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
-    return found;
 }
 
 }  // namespace talus

@@ -25,6 +25,8 @@ public:
 
     // The triangles whose bounding boxes overlap the box [centre - radius, centre + radius].
     std::vector<std::uint32_t> trianglesNear(const Vec3& centre, double radius) const;
+    // The same into `found` (cleared first): a vector kept from query to query keeps its memory.
+    void trianglesNear(const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const;
 
     double cellSize() const { return cellSize_; }
 

@@ -72,7 +72,7 @@ struct Wall {
     // or triangle: the distance to its nearest point, counted or not (the rule for listing
     // candidates).
     double signedDistance(const Vec3& x) const {
-        if (isTriangle()) [[unlikely]] return triangleGap(x).distance;
+        if (isTriangle()) [[unlikely]] return triangleGap(x, 0).distance;
         if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).distance;
         if (!isCylinder()) return (x - point).dot(normal);
         return radius - fromAxis(x).norm();
@@ -90,7 +90,7 @@ struct Wall {
         bool counts;
     };
     Gap gapTo(const Vec3& x) const {
-        if (isTriangle()) [[unlikely]] return triangleGap(x);
+        if (isTriangle()) [[unlikely]] return triangleGap(x, std::numeric_limits<double>::infinity());
         if (isRevolved()) [[unlikely]] {
             const RevolvedPoint q = revolvedPointNearest(x);
             return {q.distance, q.normal, q.hoopCurvature, q.counts};
@@ -100,7 +100,7 @@ struct Wall {
     }
 
     Vec3 normalAt(const Vec3& x) const {
-        if (isTriangle()) [[unlikely]] return triangleGap(x).normal;
+        if (isTriangle()) [[unlikely]] return triangleGap(x, 0).normal;
         if (isRevolved()) [[unlikely]] return revolvedPointNearest(x).normal;
         if (!isCylinder()) return normal;
         const Vec3 out = fromAxis(x);
@@ -113,7 +113,7 @@ struct Wall {
     // for a revolved segment whose nearest point to x does not count).
     double tangentPlaneDistance(const Vec3& y, const Vec3& x) const {
         if (isTriangle()) [[unlikely]] {
-            const Gap g = triangleGap(x);
+            const Gap g = triangleGap(x, std::numeric_limits<double>::infinity());
             return g.counts ? g.normal.dot(y - x) + g.distance : std::numeric_limits<double>::infinity();
         }
         if (isRevolved()) [[unlikely]] {
@@ -124,10 +124,12 @@ struct Wall {
         return radius + normalAt(x).dot(y - point);
     }
 
+    // A triangle's gap (Walls/MeshWalls.cc; MeshContact.h triangleGap, whose countWithin it
+    // passes on): no curvature (a face is flat; its edges and corners are met as a plane through
+    // the nearest point, as LIGGGHTS meets them).
+    Gap triangleGap(const Vec3& x, double countWithin) const;
+
 private:
-    // A triangle's gap (Walls/MeshWalls.cc): no curvature (a face is flat; its edges and corners
-    // are met as a plane through the nearest point, as LIGGGHTS meets them).
-    Gap triangleGap(const Vec3& x) const;
 
     // The part of x - point perpendicular to the axis.
     Vec3 fromAxis(const Vec3& x) const {
