@@ -75,44 +75,44 @@ void writeVtu(const std::string& path, const ParticleStore& p, const std::vector
 }
 
 void writeMeshVtu(const std::string& path, const std::vector<std::shared_ptr<MeshWalls>>& meshes) {
-    std::size_t points = 0, cells = 0;
-    for (const auto& m : meshes) points += m->mesh.vertexCount(), cells += m->mesh.triangleCount();
+    // The vertices of all meshes in one list, and per triangle its mesh, index and first vertex.
+    struct Triangle {
+        std::size_t mesh, index, firstVertex;
+    };
+    std::vector<const Vec3*> vertices;
+    std::vector<Triangle> triangles;
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const TriangleMesh& m = meshes[k]->mesh;
+        const std::size_t first = vertices.size();
+        for (std::size_t v = 0; v < m.vertexCount(); ++v) vertices.push_back(&m.vertex(v));
+        for (std::size_t t = 0; t < m.triangleCount(); ++t) triangles.push_back({k, t, first});
+    }
+    const std::size_t n = vertices.size(), cells = triangles.size();
     replaceFile(path, [&](std::ostream& out) {
         out.precision(17);  // (the walls' own numbers, to the bit)
         out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n<Points>\n"
-            << "<DataArray type=\"Float64\" Name=\"Position\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const auto& m : meshes)
-            for (std::size_t v = 0; v < m->mesh.vertexCount(); ++v) {
-                const Vec3& x = m->mesh.vertex(v);
-                out << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
-            }
+            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << cells << "\">\n<Points>\n";
+        dataArray(out, "Float64", "Position", 3, n, [&](std::ostream& o, std::size_t v) {
+            o << vertices[v]->x() << ' ' << vertices[v]->y() << ' ' << vertices[v]->z() << '\n';
+        });
         // One VTK_TRIANGLE cell (type 5) per triangle, its corners in the mesh's order; per cell
         // its wall's index, its mesh and its species.
-        out << "</DataArray>\n</Points>\n<CellData Scalars=\"Wall\">\n";
-        auto perTriangle = [&](const char* name, auto value) {
-            out << "<DataArray type=\"Int64\" Name=\"" << name << "\" format=\"ascii\">\n";
-            for (std::size_t k = 0; k < meshes.size(); ++k)
-                for (std::size_t t = 0; t < meshes[k]->mesh.triangleCount(); ++t) out << value(k, t) << '\n';
-            out << "</DataArray>\n";
-        };
-        perTriangle("Wall", [&](std::size_t k, std::size_t t) { return meshes[k]->firstWall + t; });
-        perTriangle("Mesh", [](std::size_t k, std::size_t) { return k; });
-        perTriangle("Species", [&](std::size_t k, std::size_t) { return meshes[k]->species; });
-        out << "</CellData>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-        std::size_t first = 0;
-        for (const auto& m : meshes) {
-            for (std::size_t t = 0; t < m->mesh.triangleCount(); ++t) {
-                const auto& v = m->mesh.triangle(t);
-                out << first + v[0] << ' ' << first + v[1] << ' ' << first + v[2] << '\n';
-            }
-            first += m->mesh.vertexCount();
-        }
-        out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t c = 1; c <= cells; ++c) out << 3 * c << '\n';
-        out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-        for (std::size_t c = 0; c < cells; ++c) out << "5\n";
-        out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+        out << "</Points>\n<CellData Scalars=\"Wall\">\n";
+        dataArray(out, "Int64", "Wall", 1, cells, [&](std::ostream& o, std::size_t c) {
+            o << meshes[triangles[c].mesh]->firstWall + triangles[c].index << '\n';
+        });
+        dataArray(out, "Int64", "Mesh", 1, cells, [&](std::ostream& o, std::size_t c) { o << triangles[c].mesh << '\n'; });
+        dataArray(out, "Int64", "Species", 1, cells,
+                  [&](std::ostream& o, std::size_t c) { o << meshes[triangles[c].mesh]->species << '\n'; });
+        out << "</CellData>\n<Cells>\n";
+        dataArray(out, "Int64", "connectivity", 1, cells, [&](std::ostream& o, std::size_t c) {
+            const Triangle& t = triangles[c];
+            const auto& v = meshes[t.mesh]->mesh.triangle(t.index);
+            o << t.firstVertex + v[0] << ' ' << t.firstVertex + v[1] << ' ' << t.firstVertex + v[2] << '\n';
+        });
+        dataArray(out, "Int64", "offsets", 1, cells, [](std::ostream& o, std::size_t c) { o << 3 * (c + 1) << '\n'; });
+        dataArray(out, "UInt8", "types", 1, cells, [](std::ostream& o, std::size_t) { o << "5\n"; });
+        out << "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     }, /*syncFolder*/ false);
 }
 
