@@ -308,6 +308,9 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }
+    if (rebuild)  // (the moving meshes' grids over where they are now)
+        for (const auto& mesh : state_.meshes)
+            if (mesh->moves()) mesh->regrid();
     if (rebuild && ranks_->isSplit())
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, carried);
     else if (rebuild)

@@ -3,9 +3,12 @@
 read with VTK's own reader (Debian python3-vtk9), holds the triangles of the table the run read:
 one VTK_TRIANGLE cell (type 5) per line of the table, in its order, whose three points are the
 line's three corners in order (to 1e-9 of the mesh's size: corners that coincide are one vertex,
-kept as first read), and whose Wall array counts up from FIRST (the mesh's first wall).
+kept as first read), and whose Wall array counts up from FIRST (the mesh's first wall). With
+ANGLE AX AY AZ, the table's corners turned by ANGLE (radians, right-hand rule) about the axis
+(AX, AY, AZ) through the origin: a frame of a turning mesh (NAME_mesh_K.vtu).
 
-usage: checkMeshVtu.py NAME_mesh.vtu TABLE FIRST   prints "mesh vtu ok: T triangles" or exits 1.
+usage: checkMeshVtu.py NAME_mesh.vtu TABLE FIRST [ANGLE AX AY AZ]
+prints "mesh vtu ok: T triangles" or exits 1.
 """
 import sys
 
@@ -19,6 +22,15 @@ for line in open(table).read().splitlines()[1:]:
     if line.strip():
         rows.append([float(v) for v in line.split()])
 corners = numpy.array(rows).reshape(-1, 3, 3)
+if len(sys.argv) == 8:
+    # Rodrigues' rotation of every corner about the unit axis u.
+    angle = float(sys.argv[4])
+    u = numpy.array([float(v) for v in sys.argv[5:8]])
+    u /= numpy.linalg.norm(u)
+    c, s = numpy.cos(angle), numpy.sin(angle)
+    x = corners.reshape(-1, 3)
+    turned = x * c + numpy.cross(u, x) * s + numpy.outer(x @ u, u) * (1 - c)
+    corners = turned.reshape(-1, 3, 3)
 
 reader = vtk.vtkXMLUnstructuredGridReader()
 reader.SetFileName(path)

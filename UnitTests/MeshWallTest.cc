@@ -136,39 +136,46 @@ TEST(MeshWall, ASphereRollsAcrossEdgesAsOnAPlane) {
     EXPECT_LT((meshVelocity - planeVelocity).norm(), 1e-10);
 }
 
-// A run of spheres falling onto the bumpy mesh, saved and continued from its restart file, goes
-// on as the run that never stopped: the meshes are in the file (format 9).
-TEST(MeshWall, ARestartContinuesExactly) {
+// A run of spheres falling onto the bumpy mesh, resting or turning about a tilted axis through
+// (0.3, 0, 0), saved and continued from its restart file, goes on as the run that never stopped:
+// the meshes are in the file with their motion and merging tolerance (format 10).
+void expectRestartContinuesExactly(bool turning) {
     const Floor floor;
     auto setup = [&](SceneSimulation& sim) {
         sim.scene().setGravity(Vec3(0, 0, -floor.g));
         sim.scene().setDomain(Vec3(-3, -3, -2), Vec3(3, 3, 4));
         const auto species = sim.scene().addSpecies("grains", floor.density(), floor.law);
-        sim.scene().addMeshWall(TriangleMesh(heightField(6, bumpy)), species);
+        const int motion = turning ? static_cast<int>(sim.scene().addMotion(
+                                         {.angularVelocity = Vec3(0.05, 0.02, 0.3), .centre = Vec3(0.3, 0, 0)}))
+                                   : -1;
+        sim.scene().addMeshWall(TriangleMesh(heightField(6, bumpy)), species, motion);
         for (int k = 0; k < 8; ++k)
             sim.scene().addParticle(Vec3(-2.3 + 0.65 * k, 0.3 * std::sin(k), 0.9 + 0.1 * (k % 3)), floor.radius, species,
                                     Vec3(0.2, -0.1 * (k % 2), 0));
     };
     const double timeStep = 1e-4;
-    const int saved = 15000, total = 25000;
+    const int saved = turning ? 12000 : 15000, total = saved + 10000;  // (saved with spheres on the mesh)
+    const std::string name = turning ? "meshwall_turning_restart" : "meshwall_restart";
     SceneSimulation first;
     first.setup = setup;
-    first.settings().name = "meshwall_restart";
+    first.settings().name = name;
     first.settings().timeStep = timeStep;
     first.settings().progressInterval = 1e9;
     first.solveOrThrow({"--end-time", std::to_string(saved * timeStep), "--output-interval",
                         std::to_string(saved * timeStep), "--vtu", "off"});
     ASSERT_GT(first.state().pairList.wallPairs.size(), 0u);
     SimulationState read;
-    readRestartFile("meshwall_restart.restart", read);
+    readRestartFile(name + ".restart", read);
     ASSERT_EQ(read.meshes.size(), 1u);
     EXPECT_EQ(read.meshes[0]->mesh.triangleCount(), 72u);
+    EXPECT_EQ(read.meshes[0]->motion, turning ? 0 : -1);
+    EXPECT_EQ(read.meshes[0]->mesh.tolerance(), first.state().meshes[0]->mesh.tolerance());
     EXPECT_EQ(read.walls[5].mesh, read.meshes[0].get());
     EXPECT_EQ(read.walls[5].triangle, 5u);
 
     SceneSimulation restarted;
     restarted.settings().progressInterval = 1e9;
-    restarted.solveOrThrow({"--restart", "meshwall_restart.restart", "--end-time", std::to_string(total * timeStep),
+    restarted.solveOrThrow({"--restart", name + ".restart", "--end-time", std::to_string(total * timeStep),
                             "--files", "off"});
     SceneSimulation uninterrupted;
     uninterrupted.setup = setup;
@@ -177,7 +184,12 @@ TEST(MeshWall, ARestartContinuesExactly) {
     uninterrupted.solveOrThrow(stepsWithoutFiles(timeStep, total));
     ASSERT_EQ(restarted.step(), static_cast<std::uint64_t>(total));
     expectSameContinuation(restarted, uninterrupted);
+    for (std::size_t v = 0; v < restarted.state().meshes[0]->mesh.vertexCount(); ++v)
+        ASSERT_TRUE(sameBits(restarted.state().meshes[0]->mesh.vertex(v), uninterrupted.state().meshes[0]->mesh.vertex(v)));
 }
+
+TEST(MeshWall, ARestartContinuesExactly) { expectRestartContinuesExactly(false); }
+TEST(MeshWall, ARestartContinuesExactlyWhileTheMeshTurns) { expectRestartContinuesExactly(true); }
 
 TEST(MeshWall, BadUseIsNamed) {
     auto scene = [](SceneSimulation& sim) {
@@ -207,4 +219,10 @@ TEST(MeshWall, BadUseIsNamed) {
         sim.scene().addMeshWall(TriangleMesh(heightField(2, flat)), 4);
     };
     expectError([&] { noSpecies.runFor(1e-4, 1e-3); }, {"mesh wall: species 4 does not exist"});
+    SceneSimulation noMotion;
+    noMotion.setup = [](SceneSimulation& sim) {
+        const auto species = sim.scene().addSpecies("grains", 1, LinearSpringDashpot::fromCollision(0.01, 0.5, 1));
+        sim.scene().addMeshWall(TriangleMesh(heightField(2, flat)), species, 2);
+    };
+    expectError([&] { noMotion.runFor(1e-4, 1e-3); }, {"mesh wall: motion 2 does not exist"});
 }

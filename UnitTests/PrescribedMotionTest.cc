@@ -105,3 +105,70 @@ TEST(PrescribedMotion, TurntableCarriesARollingSphereAtTwoSeventhsOfItsSpeed) {
     EXPECT_LT(worst, 1e-4);
     EXPECT_NEAR((scene.scene().walls()[0].normal - Vec3::UnitZ()).norm(), 0, 1e-12);  // turning about itself
 }
+
+// Walls whose motion moves them only within their own surface (Wall::slidesInPlaceUnder): a drum's
+// mantle and ends turning about its axis, a plane sliding along itself and turning about its normal;
+// and walls that leave their place.
+TEST(PrescribedMotion, WallsThatSlideInPlaceAreKnown) {
+    Wall plane;  // z = 0
+    Wall mantle;
+    mantle.normal = Vec3::UnitY(), mantle.point = Vec3(0, 0.3, 0), mantle.radius = 0.1;
+    Wall end;
+    end.normal = Vec3::UnitY(), end.point = Vec3(0, -0.03, 0);
+    const PrescribedMotion drum{.angularVelocity = Vec3(0, -2, 0)};
+    EXPECT_TRUE(mantle.slidesInPlaceUnder(drum));
+    EXPECT_TRUE(end.slidesInPlaceUnder(drum));
+    EXPECT_FALSE(plane.slidesInPlaceUnder(drum));
+    EXPECT_TRUE(plane.slidesInPlaceUnder({.velocity = Vec3(1, 2, 0), .angularVelocity = Vec3(0, 0, 3), .centre = Vec3(5, 1, 0)}));
+    EXPECT_FALSE(plane.slidesInPlaceUnder({.velocity = Vec3(1, 2, 1e-6)}));
+    EXPECT_TRUE(mantle.slidesInPlaceUnder({.velocity = Vec3(0, 0.5, 0)}));
+    EXPECT_FALSE(mantle.slidesInPlaceUnder({.angularVelocity = Vec3(0, -2, 0), .centre = Vec3(0.01, 0, 0)}));
+    EXPECT_FALSE(mantle.slidesInPlaceUnder({.angularVelocity = Vec3(0, 0, 1)}));
+}
+
+// A turning drum lists as wall candidates only the particles within reach of its mantle and ends,
+// not every particle (the wall stays where it is); a floor that turns about its normal, listed so,
+// and then starts to rise (the driver changes its motion) is listed anew: it throws up the sphere
+// floating above it, which it would pass through with the old list (the sphere is at rest by then,
+// so nothing else calls for a new list).
+TEST(PrescribedMotion, WallsThatSlideInPlaceAreListedByDistanceWhileTheyDo) {
+    TestScene drum;
+    drum.setup = [](TestScene& s) {
+        s.scene().setGravity(Vec3::Zero());
+        const auto species = s.scene().addSpecies("grain", unitMassDensity, grainLaw);
+        const int turning = static_cast<int>(s.scene().addMotion({.angularVelocity = Vec3(0, -0.5, 0)}));
+        s.scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), 10, species, turning);
+        s.scene().addWall(Vec3::UnitY(), Vec3(0, -3, 0), species, turning);
+        s.scene().addWall(-Vec3::UnitY(), Vec3(0, 3, 0), species, turning);
+        // (Moving, so that the list is built anew after the walls' first step.)
+        for (int k = 0; k < 5; ++k) s.scene().addParticle(Vec3(2 * k - 4, 0, 0), grainRadius, species, Vec3(0.5, 0, 0));
+        s.scene().addParticle(Vec3(0, 0, -9.45), grainRadius, species, Vec3(0.5, 0, 0));  // (at the mantle)
+    };
+    drum.settings().skin = 0.1;
+    drum.runFor(1e-4, 0.3);
+    EXPECT_GT(drum.state().pairList.builds, 1u);
+    EXPECT_EQ(drum.state().pairList.wallPairs.size(), 1u);
+    EXPECT_EQ(drum.scene().particles().id[drum.state().pairList.wallPairs[0].particle], 5u);  // (the one at the mantle)
+
+    TestScene floor;
+    floor.setup = [](TestScene& s) {
+        s.scene().setGravity(Vec3::Zero());
+        const auto species = s.scene().addSpecies("grain", unitMassDensity, grainLaw);
+        s.scene().addWall(Vec3::UnitZ(), Vec3::Zero(), species,
+                          static_cast<int>(s.scene().addMotion({.angularVelocity = Vec3(0, 0, 1)})));
+        // (Drifting sideways until the floor starts to rise, so that the list is built anew while
+        // the floor turns, without it; then at rest.)
+        s.scene().addParticle(Vec3(0.3, 0, 2), grainRadius, species, Vec3(0.5, 0, 0));
+    };
+    floor.afterStep = [](TestScene& s) {
+        if (s.time() > 0.5 && s.time() < 0.5 + 1.5e-4) {
+            s.scene().motions()[0] = {.velocity = Vec3(0, 0, 1)};
+            s.scene().particles().velocity[0] = Vec3::Zero();
+        }
+    };
+    floor.settings().skin = 0.1;
+    floor.runFor(1e-4, 3);
+    EXPECT_GT(floor.state().pairList.builds, 2u);
+    std::printf("[ measured ] the sphere leaves the rising floor at %.4f\n", floor.scene().particles().velocity[0].z());
+    EXPECT_GT(floor.scene().particles().velocity[0].z(), 1.2);  // (1 + e = 1.5 for a wall of infinite mass)
+}

@@ -111,22 +111,24 @@ inline void restoreWallPairs(const std::vector<WallCandidate>& list, std::size_t
             histories.set(k, *h);
 }
 
-// The build's rule for wall candidates: mobile particles within the reach of a resting wall, and
-// every mobile particle for a moving wall (which may sweep over them).
+// The build's rule for wall candidates: mobile particles within the reach of a resting wall or one
+// that slides in place (Wall::slidesInPlace), and every mobile particle for another moving wall
+// (which may sweep over them).
 inline bool isWallCandidate(const ParticleStore& particles, const Wall& wall, std::uint32_t i, const Vec3& x, double reach) {
     if (particles.fixed[i]) return false;
-    return wall.motion >= 0 || wall.signedDistance(x) < particles.radius[i] + reach;
+    return (wall.motion >= 0 && !wall.slidesInPlace) || wall.signedDistance(x) < particles.radius[i] + reach;
 }
 
-// The same rule for the triangles of a mesh (Walls/MeshWalls.h), which rests: those its grid finds
-// near particle i at x and within the reach, appended as wall candidates.
+// The same rule for the triangles of a mesh (Walls/MeshWalls.h): those within the reach of particle i
+// at x, appended as wall candidates; its grid, built where a moving mesh was at the last build, is
+// asked farther by the distance the mesh has travelled since.
 inline void addMeshWallCandidates(std::vector<WallCandidate>& candidates, const ParticleStore& particles,
                                   const std::vector<Wall>& walls, const MeshWalls& mesh, std::uint32_t i,
                                   const Vec3& x, double reach) {
     if (particles.fixed[i]) return;
     const double within = particles.radius[i] + reach;
     thread_local std::vector<std::uint32_t> near;  // (kept from particle to particle)
-    mesh.grid.trianglesNear(x, within, near);
+    mesh.grid.trianglesNear(x, within + mesh.travelled, near);
     for (const std::uint32_t t : near) {
         const double clear = mesh.reach[t] + within;  // (clear of the sphere that holds the triangle)
         if ((x - mesh.centre[t]).squaredNorm() >= clear * clear) continue;

@@ -82,7 +82,7 @@ bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& part
         throw Error("blow-up at t = " + str(time) + ": a position or velocity is not finite");
     }
     maxSpeed = std::sqrt(moves.speed2);
-    return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach;
+    return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach || meshTravel >= 0.5 * reach;
 }
 
 std::vector<CarriedHistory> PairList::carriedHistories(const ParticleStore& particles, bool firstOwned) const {
@@ -145,6 +145,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     noted_.clear();
 
     referencePosition = particles.position;
+    meshTravel = 0;
     valid = true;
     ++builds;
 }

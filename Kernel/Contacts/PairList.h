@@ -111,6 +111,11 @@ public:
     double reach = 0;  // skin + 2 vmax dt at the last build
     double reachOfNextBuild(double dt) const { return skin + 2 * maxSpeed * dt; }
     bool valid = false;  // false forces a rebuild (particles removed or reordered; added ones are relisted)
+    // The farthest a point of a moving mesh may be from where it was at the build by the end of the
+    // next step (set as the meshes move, Walls/MeshWalls.h; 0 at a build): the list holds while it
+    // is below reach/2, the bound the particles keep too, so a particle and a triangle listed
+    // farther apart than the reach cannot touch before the next build.
+    double meshTravel = 0;
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
@@ -134,7 +139,8 @@ public:
     // move, plus |v| dt). Looking one step ahead keeps every pair that can touch within the next
     // step listed, which the push ahead of a touch needs (LinearSpringDashpot::approachForce).
     // Throws talus::Error naming the particle if a position is not finite.
-    // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close.
+    // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close. True
+    // too when a moving mesh may have moved reach/2 (meshTravel).
     bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt);
     // The same on moves measured by the caller (Particles/DriftPass.h, which measures them while
     // it drifts the particles), from referencePosition if comparable(particles), else none.
@@ -156,7 +162,9 @@ public:
     std::optional<PointsByDrift> sweepPointsByDrift;
 
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
-    // move (motion >= 0) list every particle, since the wall itself may sweep over them.
+    // move (motion >= 0) list every particle, since the wall itself may sweep over them, unless
+    // they slide in place (Wall::slidesInPlace: a drum's mantle); a moving mesh's triangles are
+    // listed by distance, the mesh's travel calling for the next build (meshTravel).
     // With ghosts (ParticleStore::ghostCount) only pairs with an owned particle are listed, and a
     // pair with a ghost has the smaller id first, so that the two ranks that list it compute
     // its force with the same arithmetic; ghosts have no wall contacts.

@@ -75,21 +75,23 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
     // A triangle apart and clear of the particle by more than the closing distance stays apart
     // below: tried first against the sphere about it that holds it (no nearest point sought),
     // then with its nearest point but without asking its neighbours whether it counts.
+    // A moving mesh closes in by its own step too (its last one, as the next's: MeshWalls::lastStep).
     const bool apartBefore = list.wallHistory.state(k) == ContactHistory::apart;
+    const double closing = wall.isTriangle() ? closing_ + wall.mesh->lastStep : closing_;
     if (wall.isTriangle() && apartBefore) [[unlikely]] {
         const MeshWalls& mesh = *wall.mesh;
-        const double clear = mesh.reach[wall.triangle] + p_.radius[i] + closing_;
+        const double clear = mesh.reach[wall.triangle] + p_.radius[i] + closing;
         if ((p_.position[i] - mesh.centre[wall.triangle]).squaredNorm() >= clear * clear) return;
     }
     // (Asked within a hair more than r + closing, so that a point not asked passes the test of
     // distance - r against closing below whatever the rounding.)
     const double askWithin =
-        apartBefore ? (p_.radius[i] + closing_) * (1 + 1e-12) : std::numeric_limits<double>::infinity();
+        apartBefore ? (p_.radius[i] + closing) * (1 + 1e-12) : std::numeric_limits<double>::infinity();
     const Wall::Gap gap = wall.isTriangle() ? wall.triangleGap(p_.position[i], askWithin) : wall.gapTo(p_.position[i]);
     const double distance = gap.distance;
     const bool touching = distance < p_.radius[i];
-    // (A moving wall may close in faster than the particles: no shortcut for it.)
-    if (!touching && list.wallHistory.state(k) == ContactHistory::apart && wall.motion < 0 &&
+    // (A moving wall may close in faster than the particles: no shortcut for it, unless it slides in place.)
+    if (!touching && list.wallHistory.state(k) == ContactHistory::apart && (wall.motion < 0 || wall.slidesInPlace) &&
         distance - p_.radius[i] >= closing_)
         return;
     if (!gap.counts) [[unlikely]] {

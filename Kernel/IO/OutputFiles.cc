@@ -26,8 +26,16 @@ OutputFiles::OutputFiles(const SimulationState& state, bool restarted) {
     if (c.writeEne) open(ene_, c.name + ".ene", restarted, state.output.eneBytes);
     // The index lists the frames of the restart point (a killed run may have listed later ones).
     if (restarted && c.writeVtu) writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
-    // The meshes rest: one file, written when the run starts (ParaView opens it beside the .pvd).
-    if (c.writeVtu && !state.meshes.empty()) writeMeshVtu(c.name + "_mesh.vtu", state.meshes);
+    if (restarted && c.writeVtu && meshesMove(state)) writePvd(c.name + "_mesh.pvd", c.name + "_mesh", state.output.frameTimes);
+    // Meshes at rest: one file, written when the run starts (ParaView opens it beside the .pvd).
+    if (c.writeVtu && !state.meshes.empty() && !meshesMove(state)) writeMeshVtu(c.name + "_mesh.vtu", state.meshes);
+}
+
+// Moving meshes get a file a frame (NAME_mesh_K.vtu, indexed by NAME_mesh.pvd), beside the particles'.
+bool OutputFiles::meshesMove(const SimulationState& state) {
+    for (const auto& m : state.meshes)
+        if (m->moves()) return true;
+    return false;
 }
 
 OutputFiles::~OutputFiles() {
@@ -86,8 +94,11 @@ void OutputFiles::writeFrame(SimulationState& state, const ContactRecordList& re
     if (c.writeVtu) {
         writeVtu(c.name + "_" + std::to_string(state.output.frameTimes.size()) + ".vtu", state.particles, order,
                  state.shapes);
+        if (meshesMove(state))
+            writeMeshVtu(c.name + "_mesh_" + std::to_string(state.output.frameTimes.size()) + ".vtu", state.meshes);
         state.output.frameTimes.push_back(state.time);
         writePvd(c.name + ".pvd", c.name, state.output.frameTimes);
+        if (meshesMove(state)) writePvd(c.name + "_mesh.pvd", c.name + "_mesh", state.output.frameTimes);
     }
     ++state.output.savedFrames;
 }

@@ -1,5 +1,7 @@
 // The output files of a run: name.data, name.fstat, name.ene (MercuryDPM layouts), one VTU
-// file per frame with a name.pvd index for ParaView, and name.restart.
+// file per frame with a name.pvd index for ParaView (and the mesh walls: name_mesh.vtu once, or a
+// frame of them beside each particles' frame, indexed by name_mesh.pvd, when a mesh moves), and
+// name.restart.
 //
 // Every frame is written whole and flushed, and the byte size of each file after the frame is
 // kept in the run state. Before the restart file is written, .data, .fstat and .ene are synced
@@ -43,6 +45,7 @@ private:
     void open(File& file, const std::string& path, bool restarted, std::uint64_t bytes);
     void write(File& file, std::string& text);            // writes text and empties it
     std::uint64_t append(File& file, std::string& text);  // the same, flushed; returns the file's size
+    static bool meshesMove(const SimulationState& state);
 
     File data_, fstat_, ene_;
     std::string buffer_;

@@ -90,9 +90,16 @@ ContactHistory readHistory(Reader& r, HistoryExtras extras) {
     return h;
 }
 
+// A motion's index, or -1 for none.
+std::int32_t readMotionIndex(Reader& r, const char* what, std::uint64_t motionCount) {
+    const auto m = r.integer(what);
+    if (m < -1 || m >= static_cast<std::int64_t>(motionCount)) r.fail(std::string(what) + " out of range");
+    return static_cast<std::int32_t>(m);
+}
+
 // The meshes section (version 9): each mesh rebuilt from its vertices and triangles (the
 // constructor checks them as it checks an STL file's), its triangles' walls pointed to it.
-void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount) {
+void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount, std::uint64_t version) {
     r.expect(key::meshes);
     const auto meshCount = r.count("mesh count", 1u << 20);
     for (std::uint64_t k = 0; k < meshCount; ++k) {
@@ -101,6 +108,11 @@ void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount) {
         const auto vertexCount = r.count("mesh vertex count", 1u << 30);
         const auto triangleCount = r.count("mesh triangle count", t.walls.size() - firstWall);
         if (triangleCount == 0) r.fail("a mesh without triangles");
+        // (Version 9's meshes rested, with the tolerance of their bounding box.)
+        const std::int32_t motion = version >= 10 ? readMotionIndex(r, "mesh motion", t.motions.size()) : -1;
+        const double tolerance = version >= 10 ? r.real("mesh tolerance") : 0;
+        const double travelled = version >= 10 ? r.real("mesh travel since the list build") : 0;
+        const double lastStep = version >= 10 ? r.real("mesh's last step") : 0;
         std::vector<Vec3> vertices(vertexCount);
         for (Vec3& v : vertices) v = r.vec("mesh vertex");
         std::vector<TriangleCorners> corners(triangleCount);
@@ -110,16 +122,20 @@ void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount) {
         MeshSource source;
         source.name = "mesh " + std::to_string(k);
         try {
-            walls = std::make_shared<MeshWalls>(TriangleMesh(corners, source), species, static_cast<std::uint32_t>(firstWall));
+            walls = std::make_shared<MeshWalls>(TriangleMesh(corners, source, tolerance), species,
+                                                static_cast<std::uint32_t>(firstWall), motion);
         } catch (const Error& e) {
             r.fail(e.what());
         }
         for (std::uint32_t tri = 0; tri < triangleCount; ++tri) {
             Wall& w = t.walls[firstWall + tri];
             if (w.mesh != nullptr) r.fail("wall " + std::to_string(firstWall + tri) + " is in two meshes");
+            if (w.motion != motion) r.fail("wall " + std::to_string(firstWall + tri) + " moves otherwise than its mesh");
             w.mesh = walls.get();
             w.triangle = tri;
         }
+        walls->travelled = travelled;
+        walls->lastStep = lastStep;
         t.meshes.push_back(std::move(walls));
     }
 }
@@ -170,11 +186,13 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
             w.end();
         }
         // The meshes whose triangles are walls: species, first wall, vertex and triangle counts,
-        // then the vertices and each triangle's vertex indices.
+        // motion, tolerance, distance travelled since the list's build and in the last step; then
+        // the vertices and each triangle's vertex indices.
         w.key(key::meshes) << std::uint64_t(s.meshes.size()); w.end();
         for (const auto& m : s.meshes) {
             w.key(item) << std::uint64_t(m->species) << std::uint64_t(m->firstWall)
-                        << std::uint64_t(m->mesh.vertexCount()) << std::uint64_t(m->mesh.triangleCount());
+                        << std::uint64_t(m->mesh.vertexCount()) << std::uint64_t(m->mesh.triangleCount())
+                        << std::int64_t(m->motion) << m->mesh.tolerance() << m->travelled << m->lastStep;
             w.end();
             for (std::size_t v = 0; v < m->mesh.vertexCount(); ++v) { w.key(item) << m->mesh.vertex(v); w.end(); }
             for (std::size_t t = 0; t < m->mesh.triangleCount(); ++t) {
@@ -203,7 +221,7 @@ void writeRestartFile(const std::string& path, const SimulationState& s) {
         const PairList& l = s.pairList;
         w.key(key::pairList) << l.skin << l.reach << l.maxSpeed << std::uint64_t(l.valid) << l.builds << std::uint64_t(l.pairs.size())
                           << std::uint64_t(l.wallPairs.size()) << std::uint64_t(l.referencePosition.size())
-                          << std::uint64_t(l.interiorPairs); w.end();
+                          << std::uint64_t(l.interiorPairs) << l.meshTravel; w.end();
         for (std::size_t k = 0; k < l.pairs.size(); ++k) {
             w.key(item) << std::uint64_t(l.pairs[k].i) << std::uint64_t(l.pairs[k].j);
             writeHistory(w, l.history.get(k), extras);
@@ -327,11 +345,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         m.angularVelocity = r.vec("motion angular velocity");
         m.centre = r.vec("motion centre");
     }
-    auto motionIndex = [&](const char* what) {
-        const auto m = r.integer(what);
-        if (m < -1 || m >= static_cast<std::int64_t>(motionCount)) r.fail(std::string(what) + " out of range");
-        return static_cast<std::int32_t>(m);
-    };
+    auto motionIndex = [&](const char* what) { return readMotionIndex(r, what, motionCount); };
     r.expect(key::walls);
     t.walls.resize(r.count("wall count", 1u << 20));
     for (Wall& w : t.walls) {
@@ -348,7 +362,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
         for (double& v : w.next) v = r.real("wall next segment direction");
         w.startJoined = r.flag("wall start-joined flag");
     }
-    if (version >= 9) readMeshes(r, t, speciesCount);
+    if (version >= 9) readMeshes(r, t, speciesCount, version);
     r.expect(key::shapes);
     const bool shapes = r.flag("shapes flag");
     t.shapes.clear();
@@ -424,6 +438,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     const auto pairs = r.count("pair count", 1ull << 40), wallPairs = r.count("wall pair count", 1ull << 40);
     const auto references = r.count("reference count", n);
     l.interiorPairs = r.count("interior pair count", pairs);
+    if (version >= 10) l.meshTravel = r.real("mesh travel");
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.index("pair particle", n), j = r.index("pair particle", n);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});

@@ -1,5 +1,7 @@
 #include "Integration/PlainVerlet.h"
 
+#include <algorithm>
+
 #include "Integration/StepWorkspace.h"
 #include "Particles/DriftPass.h"
 #include "Particles/RotationBatch.h"
@@ -10,7 +12,7 @@ namespace talus {
 
 namespace {
 
-// Particles, walls and the turning of fixed superquadrics that follow a prescribed motion, moved
+// Particles, walls, meshes and the turning of fixed superquadrics that follow a prescribed motion, moved
 // over the step; their velocities those of the motion at the new positions.
 void moveWithPrescribedMotion(SimulationState& s) {
     const double dt = s.settings.timeStep;
@@ -24,7 +26,11 @@ void moveWithPrescribedMotion(SimulationState& s) {
         p.position[i] = m.moved(p.position[i], rotation[p.motion[i]], dt);
     }
     for (Wall& w : s.walls) {
-        if (w.motion < 0) continue;
+        if (w.motion < 0 || w.isTriangle()) continue;  // (a mesh's triangles move with their mesh, below)
+        // A wall that slid in place was listed as resting (PairList::rebuild): no longer, a new list.
+        const bool slides = w.slidesInPlaceUnder(s.motions[w.motion]);
+        if (w.slidesInPlace && !slides) s.pairList.valid = false;
+        w.slidesInPlace = slides;
         w.point = s.motions[w.motion].moved(w.point, rotation[w.motion], dt);
         w.normal = (rotation[w.motion] * w.normal).normalized();
     }
@@ -32,6 +38,11 @@ void moveWithPrescribedMotion(SimulationState& s) {
         for (std::size_t i = 0; i < p.owned(); ++i)
             if (p.motion[i] >= 0 && p.shape[i] >= 0)
                 p.orientation[i] = Quat(rotation[p.motion[i]] * p.orientation[i].toRotationMatrix()).normalized();
+    for (const auto& mesh : s.meshes) {
+        if (!mesh->moves()) continue;
+        mesh->move(s.motions[mesh->motion], rotation[mesh->motion], dt, s.walls);
+        s.pairList.meshTravel = std::max(s.pairList.meshTravel, mesh->travelled + mesh->lastStep);
+    }
     for (PrescribedMotion& m : s.motions) m.advanceCentre(dt);
     for (std::size_t i = 0; i < p.owned(); ++i) {
         if (p.motion[i] < 0) continue;

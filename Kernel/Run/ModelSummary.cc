@@ -99,9 +99,12 @@ std::string describeModel(const SimulationState& s, bool automaticSkin) {
                 out << separator << counted(count, kind);
                 separator = ", ";
             }
-        if (triangles > 0)
+        if (triangles > 0) {
             out << separator << counted(triangles, "triangle") << " in " << s.meshes.size()
                 << (s.meshes.size() == 1 ? " mesh" : " meshes");
+            const auto moving = std::count_if(s.meshes.begin(), s.meshes.end(), [](const auto& m) { return m->moves(); });
+            if (moving > 0) out << " (" << moving << " moving)";
+        }
     }
     if (s.domain.anyPeriodic()) {
         out << "; periodic along";

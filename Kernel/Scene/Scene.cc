@@ -194,16 +194,19 @@ std::size_t Scene::addRevolvedWall(const Vec3& axisPoint, const Vec3& axisDirect
     return first;
 }
 
-std::size_t Scene::addMeshWall(TriangleMesh mesh, std::size_t species) {
+std::size_t Scene::addMeshWall(TriangleMesh mesh, std::size_t species, int motion) {
     require(species < state_.species.size(), "mesh wall: species " + std::to_string(species) + " does not exist");
+    require(motion >= -1 && motion < static_cast<int>(state_.motions.size()),
+            "mesh wall: motion " + std::to_string(motion) + " does not exist");
     require(mesh.triangleCount() > 0, "mesh wall: " + mesh.source().name + " has no triangles");
     const auto first = static_cast<std::uint32_t>(state_.walls.size());
-    auto walls = std::make_shared<MeshWalls>(std::move(mesh), static_cast<std::uint32_t>(species), first);
+    auto walls = std::make_shared<MeshWalls>(std::move(mesh), static_cast<std::uint32_t>(species), first, motion);
     for (std::uint32_t t = 0; t < walls->mesh.triangleCount(); ++t) {
         Wall wall;
         wall.normal = walls->mesh.normal(t);
         wall.point = walls->mesh.corner(t, 0);
         wall.species = static_cast<std::uint32_t>(species);
+        wall.motion = motion;
         wall.mesh = walls.get();
         wall.triangle = t;
         state_.walls.push_back(wall);

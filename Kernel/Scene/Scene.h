@@ -101,10 +101,13 @@ public:
                                 int motion = -1);
     // A triangle mesh (Walls/TriangleMesh.h, IO/StlReader.h) as walls, one per triangle (Walls/
     // MeshWalls.h, Theory/ContactLaws.md "Triangle meshes"): both sides of it are walls; a sphere
-    // meets each face, edge and vertex once however many triangles share it. The mesh rests
-    // (no motion), and meets spheres only. Returns the first triangle's wall index; the others
-    // follow it in the mesh's order.
-    std::size_t addMeshWall(TriangleMesh mesh, std::size_t species);
+    // meets each face, edge and vertex once however many triangles share it. It rests, or follows
+    // a motion (addMotion: translation and rotation, the vertices moved each step), and meets
+    // spheres only. Returns the first triangle's wall index; the others follow it in the mesh's
+    // order. A drum of triangles turning about the y axis:
+    //   const int turning = static_cast<int>(scene().addMotion({.angularVelocity = Vec3(0, -2, 0)}));
+    //   scene().addMeshWall(readStl("drum.stl"), steel, turning);
+    std::size_t addMeshWall(TriangleMesh mesh, std::size_t species, int motion = -1);
     // Removes wall `index` (a silo's lid opened); the walls after it move down one index. Its
     // contacts end, the others keep their histories. A mesh's triangles are not removed one by one.
     void removeWall(std::size_t index);

@@ -48,13 +48,13 @@ std::string MeshSource::place(std::size_t triangle) const {
     return placeWord + " " + std::to_string(places.empty() ? static_cast<long>(triangle) + 1 : places[triangle]);
 }
 
-TriangleMesh::TriangleMesh(const std::vector<TriangleCorners>& triangles, MeshSource source)
+TriangleMesh::TriangleMesh(const std::vector<TriangleCorners>& triangles, MeshSource source, double tolerance)
     : source_(std::move(source)) {
     require(source_.places.empty() || source_.places.size() == triangles.size(),
             source_.name + ": " + std::to_string(source_.places.size()) + " places for " +
                 std::to_string(triangles.size()) + " triangles");
     checkCorners(triangles);
-    mergeVertices(triangles);
+    mergeVertices(triangles, tolerance);
     findEdges();
     listVertexTriangles();
     updateBoundsAndNormals();
@@ -70,14 +70,12 @@ std::span<const std::uint32_t> TriangleMesh::edgeTriangles(std::size_t e) const 
 
 void TriangleMesh::translate(const Vec3& shift) {
     require(isFinite(shift), source_.name + ": the shift " + text(shift) + " is not finite");
-    for (Vec3& x : vertices_) x += shift;
-    updateBoundsAndNormals();
+    moveVertices([&shift](const Vec3& x) { return Vec3(x + shift); });
 }
 
 void TriangleMesh::rotate(const Vec3& point, const Mat3& rotation) {
     require(isFinite(point) && rotation.allFinite(), source_.name + ": a rotation must be finite");
-    for (Vec3& x : vertices_) x = point + rotation * (x - point);
-    updateBoundsAndNormals();
+    moveVertices([&](const Vec3& x) { return Vec3(point + rotation * (x - point)); });
 }
 
 void TriangleMesh::rotate(const Vec3& point, const Vec3& axis, double angle) {
@@ -111,7 +109,7 @@ void TriangleMesh::checkCorners(const std::vector<TriangleCorners>& triangles) c
     }
 }
 
-void TriangleMesh::mergeVertices(const std::vector<TriangleCorners>& triangles) {
+void TriangleMesh::mergeVertices(const std::vector<TriangleCorners>& triangles, double tolerance) {
     Vec3 lo = triangles[0][0], hi = lo;
     for (const TriangleCorners& c : triangles)
         for (const Vec3& x : c) {
@@ -119,6 +117,13 @@ void TriangleMesh::mergeVertices(const std::vector<TriangleCorners>& triangles) 
             hi = hi.cwiseMax(x);
         }
     tolerance_ = relativeTolerance * (hi - lo).norm();  // > 0: a triangle has a positive area
+    if (tolerance != 0) {
+        // (A rigid motion changes the bounding box's diagonal by less than a factor sqrt(3).)
+        require(tolerance >= 0.5 * tolerance_ && tolerance <= 2 * tolerance_,
+                source_.name + ": the merging tolerance " + str(tolerance) + " is not near " + str(tolerance_) +
+                    ", the mesh's own (relativeTolerance times its bounding box's diagonal)");
+        tolerance_ = tolerance;
+    }
     auto cellOf = [&](const Vec3& x) {
         const Vec3 q = (x - lo) / tolerance_;  // below 1 / relativeTolerance: fits the integers
         return Cell{std::int64_t(std::floor(q.x())), std::int64_t(std::floor(q.y())), std::int64_t(std::floor(q.z()))};

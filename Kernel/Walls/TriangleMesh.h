@@ -10,7 +10,9 @@
 // and the triangle's place in it ("ASCII STL file floor.stl line 12: ...").
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -39,7 +41,9 @@ public:
     // A triangle whose height over its longest edge is below this is flat (zero area).
     static constexpr double flatness = 1e-8;
 
-    explicit TriangleMesh(const std::vector<TriangleCorners>& triangles, MeshSource source = {});
+    // tolerance: the merging tolerance (0: relativeTolerance times the bounding box's diagonal; a
+    // mesh read back from a restart file keeps the one it was made with, which a rigid motion keeps).
+    explicit TriangleMesh(const std::vector<TriangleCorners>& triangles, MeshSource source = {}, double tolerance = 0);
 
     std::size_t triangleCount() const { return triangles_.size(); }
     std::size_t edgeCount() const { return edges_.size(); }
@@ -72,10 +76,23 @@ public:
     void rotate(const Vec3& point, const Mat3& rotation);
     // Turns the mesh by `angle` (radians, right-hand rule) about the axis through `point`.
     void rotate(const Vec3& point, const Vec3& axis, double angle);
+    // Moves every vertex x to to(x), a rigid motion (the tolerance stays), and returns the largest
+    // distance a vertex moved.
+    template <class RigidMap>
+    double moveVertices(const RigidMap& to) {
+        double largest2 = 0;
+        for (Vec3& x : vertices_) {
+            const Vec3 y = to(x);
+            largest2 = std::max(largest2, (y - x).squaredNorm());
+            x = y;
+        }
+        updateBoundsAndNormals();
+        return std::sqrt(largest2);
+    }
 
 private:
     void checkCorners(const std::vector<TriangleCorners>& triangles) const;
-    void mergeVertices(const std::vector<TriangleCorners>& triangles);
+    void mergeVertices(const std::vector<TriangleCorners>& triangles, double tolerance);
     void findEdges();
     void listVertexTriangles();
     void updateBoundsAndNormals();

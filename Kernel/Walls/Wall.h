@@ -21,8 +21,10 @@
 // centre (the linearisation of Theory/Superquadrics.md "Walls"; its error grows with elongation and
 // curvature). A wall may follow a prescribed motion (motion >= 0), which moves its point and turns
 // its normal (a drum turning about its own axis keeps both, and its surface moves with the motion).
+// A motion that moves the surface only within itself (slidesInPlaceUnder) leaves the wall where it
+// is: the neighbour list takes it as resting (PairList::rebuild) while it slides so.
 // A triangle of a mesh (Walls/MeshWalls.h) is met at its point nearest to x, counted by the face,
-// edge and vertex rule of Walls/MeshContact.h; it rests.
+// edge and vertex rule of Walls/MeshContact.h; it moves with its mesh (MeshWalls::move).
 #pragma once
 
 #include <algorithm>
@@ -32,6 +34,7 @@
 #include <limits>
 
 #include "Math/Vector.h"
+#include "Walls/PrescribedMotion.h"
 
 namespace talus {
 
@@ -55,6 +58,23 @@ struct Wall {
     std::uint32_t triangle = 0;
 
     bool isTriangle() const { return mesh != nullptr; }
+    // Its motion slid it within its own surface at the last step (set as the walls move,
+    // Integration/PlainVerlet.cc); false for a triangle (its mesh moves: Walls/MeshWalls.h).
+    bool slidesInPlace = false;
+
+    // Whether motion m moves the wall only within its own surface: a plane translated along itself
+    // and turned about its normal, a cylinder translated along and turned about its axis, a revolved
+    // segment turned about its axis (a drum's mantle and ends turning with it).
+    bool slidesInPlaceUnder(const PrescribedMotion& m) const {
+        if (isTriangle()) return false;
+        constexpr double parallel = 1e-12;  // (relative: rounding of the vectors' directions)
+        const Vec3& w = m.angularVelocity;
+        if (w.cross(normal).norm() > parallel * w.norm()) return false;
+        if (!isCylinder() && !isRevolved()) return std::abs(m.velocity.dot(normal)) <= parallel * m.velocity.norm();
+        const Vec3 offAxis = (m.centre - point).cross(normal);
+        if (w != Vec3::Zero() && offAxis.norm() > parallel * (m.centre - point).norm()) return false;
+        return isCylinder() ? m.velocity.cross(normal).norm() <= parallel * m.velocity.norm() : m.velocity == Vec3::Zero();
+    }
 
     bool isCylinder() const { return radius > 0; }
     bool isRevolved() const { return profile[0] != profile[2] || profile[1] != profile[3]; }

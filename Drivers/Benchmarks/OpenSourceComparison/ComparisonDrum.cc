@@ -2,7 +2,9 @@
 // Documentation/Benchmarks/OpenSourceComparison.md), in SI units.
 //
 // A drum of radius 0.1 m with its axis along y, closed by plane walls at y = -0.03 and 0.03 m, all
-// of steel, turns at 2 rad/s about -y (the bottom moves towards +x). It holds the published start
+// of steel, turns at 2 rad/s about -y (the bottom moves towards +x): smooth walls (a cylinder and
+// two planes), or the published triangles turning with the drum (--walls FILE: the comparison's
+// Drum/walls.txt, or an STL file). It holds the published start
 // positions (--start-file): 30000 spheres of M1 of diameter 2 mm and 8000 of M2 of diameter 4 mm,
 // Hertz-Mindlin contacts between the materials of the comparison (ComparisonInputs.h), gravity
 // 9.8 m/s^2 along -z. The soft variant (E = 2e6 and 1e6 Pa, the default) runs at dt = 5e-5 s, half
@@ -23,7 +25,7 @@ using namespace talus;
 class ComparisonDrum : public Simulation {
 public:
     std::string startFile = std::string(TALUS_SHARED_DIR) + "/peers/os-benchmark/Drum/PartCoordinates.txt";
-    std::string variant = "soft";
+    std::string variant = "soft", walls = "smooth";
     double sampleInterval = 0.1;
 
     static constexpr double radius = 0.1, halfLength = 0.03, angularSpeed = 2, gravity = 9.8;
@@ -34,6 +36,7 @@ public:
         run().addTextFlag("variant", "soft (E = 2e6 and 1e6 Pa) or stiff (E = 1e9 and 0.5e9 Pa, needs --dt 8e-7)",
                           variant);
         run().addFlag("sample-interval", "time between the zone counts written to NAME.zones (s)", sampleInterval);
+        run().addTextFlag("walls", "smooth (a cylinder and two planes) or a file of the drum's triangles (table or STL)", walls);
     }
 
     void setupInitialConditions() override {
@@ -47,9 +50,17 @@ public:
         const std::vector<std::size_t> species = comparison::materials(variant == "soft").addTo(scene().species(), 0.5);
         const std::size_t M1 = species[0], M2 = species[1], steel = species[2];
         const int turning = static_cast<int>(scene().addMotion({.angularVelocity = Vec3(0, -angularSpeed, 0)}));
-        scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), radius, steel, turning);
-        scene().addWall(Vec3::UnitY(), Vec3(0, -halfLength, 0), steel, turning);
-        scene().addWall(-Vec3::UnitY(), Vec3(0, halfLength, 0), steel, turning);
+        if (walls == "smooth") {
+            scene().addCylinderWall(Vec3::Zero(), Vec3::UnitY(), radius, steel, turning);
+            scene().addWall(Vec3::UnitY(), Vec3(0, -halfLength, 0), steel, turning);
+            scene().addWall(-Vec3::UnitY(), Vec3(0, halfLength, 0), steel, turning);
+        } else {
+            TriangleMesh mesh = comparison::readWallTriangles(walls);
+            require(std::abs(mesh.lo().y() + halfLength) < 0.01 && std::abs(mesh.hi().y() - halfLength) < 0.01,
+                    "--walls " + walls + ": its triangles span y = " + str(mesh.lo().y()) + " to " + str(mesh.hi().y()) +
+                        " m, not the drum's " + str(-halfLength) + " to " + str(halfLength) + " m");
+            scene().addMeshWall(std::move(mesh), steel, turning);
+        }
         for (const comparison::StartParticle& p : comparison::readStartParticles(startFile))
             scene().addParticle(p.position, p.radius, p.radius < 1.5e-3 ? M1 : M2);
         small_ = M1, large_ = M2;

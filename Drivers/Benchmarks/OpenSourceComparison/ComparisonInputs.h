@@ -1,7 +1,8 @@
 // The inputs of the 2024 comparison of open-source DEM codes (Dosta et al., Computer Physics
 // Communications 296 (2024) 109066; Documentation/Benchmarks/OpenSourceComparison.md), shared by
 // its three drivers: the materials and their pairs (Hertz-Mindlin, SI units), and the readers of
-// the published start files (a header line, then radius x y z per particle, in metres).
+// the published start files (a header line, then radius x y z per particle, in metres) and wall
+// triangles.
 #pragma once
 
 #include <cmath>
@@ -12,6 +13,7 @@
 
 #include "Error.h"
 #include "IO/InputNumbers.h"
+#include "IO/StlReader.h"
 #include "Math/Vector.h"
 #include "Species/Materials.h"
 
@@ -73,6 +75,14 @@ inline std::vector<StartParticle> readStartParticles(const std::string& path, bo
     }
     require(!particles.empty(), "the start file '" + path + "' holds no particles");
     return particles;
+}
+
+// A case's walls as triangles (--walls): an STL file (a name ending in .stl, ASCII or binary) or
+// the comparison's table (Drum/walls.txt, Silo/walls-*-orifice.txt: a header, then the nine
+// coordinates of a triangle's corners a line).
+inline TriangleMesh readWallTriangles(const std::string& path) {
+    const bool stl = path.size() > 4 && path.substr(path.size() - 4) == ".stl";
+    return stl ? readStl(path) : readTriangleTable(path);
 }
 
 }  // namespace talus::comparison

@@ -19,7 +19,6 @@
 #include "Boundaries/DeletionBoundary.h"
 #include "Boundaries/Filling.h"
 #include "ComparisonInputs.h"
-#include "IO/StlReader.h"
 #include "Sampling/Sampling.h"
 #include "Simulation.h"
 
@@ -84,8 +83,7 @@ public:
             scene().addRevolvedWall(Vec3::Zero(), Vec3::UnitZ(),
                                     {{orificeRadius(), orificeHeight()}, {siloRadius, coneTop()}, {siloRadius, rim}}, steel);
         } else {
-            const bool stl = walls.size() > 4 && walls.substr(walls.size() - 4) == ".stl";
-            TriangleMesh mesh = stl ? readStl(walls) : readTriangleTable(walls);
+            TriangleMesh mesh = comparison::readWallTriangles(walls);
             require(std::abs(mesh.lo().z() - orificeHeight()) < 1e-6,
                     "--walls " + walls + ": its lowest point (z = " + str(mesh.lo().z()) + " m) is not the orifice of the " +
                         orifice + " silo (z = " + str(orificeHeight()) + " m): give the matching --orifice");
