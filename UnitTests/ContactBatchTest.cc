@@ -1,7 +1,8 @@
 // The batched lasting sphere contacts (Contacts/ContactBatch.h): a batch filled by add, gather
 // and compute must give, lane by lane, what the scalar path gives for the same pair (the
-// kinematics of contactKinematics and LinearSpringDashpot::force of a touching pair, as
-// ContactForceLoop::pairContact takes them when the batch is not used): the force, both
+// kinematics of contactKinematics and the law's force of a touching pair, as
+// ContactForceLoop::pairContact takes them when the batch is not used), for the linear law and
+// for Hertz-Mindlin (whose stiffness depends on the pair's effective radius): the force, both
 // torques, the advanced spring, the normal force and the overlap. The lanes name particles
 // that recur in other lanes, in either role, and alternate between two laws, so a lane that
 // gathered another particle's or pair's numbers, or another lane's law, would differ.
@@ -16,7 +17,10 @@
 using namespace talus;
 using namespace talus::TALUS_LANES;
 
-TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
+namespace {
+
+template <class Law>
+void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
     std::mt19937_64 random(20261204);
     std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
     const std::size_t particles = 20;
@@ -33,8 +37,6 @@ TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
         previousForce[i] = Vec3(unit(random), unit(random), unit(random)) * 5;
     }
     const double dt = 1e-4;
-    const LinearSpringDashpot laws[2] = {LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5).withFriction(0.5),
-                                         LinearSpringDashpot::fromCollision(0.004, 0.6, 0.3).withFriction(0.2)};
     ContactHistories histories;
     histories.assign(ContactBatch::size + 5);
     ContactBatch batch;
@@ -53,15 +55,15 @@ TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
         const std::size_t k = lanes.size() + 3;  // (places in the list that are not the lane numbers)
         histories.set(k, {Vec3(unit(random), unit(random), unit(random)) * 1e-3, 10 * fraction(random) + 0.01,
                           ContactHistory::touching});
-        batch.add(k, i, j, d, p.radius[i], p.radius[j], laws[lanes.size() % 2]);
+        batch.add(k, i, j, d, p.radius[i], p.radius[j], laws[lanes.size() % 2].lane());
         lanes.push_back({k, i, j, d});
     }
     batch.gather(p, previousForce, histories);
-    batch.compute(dt);
+    batch.compute<Law>(dt);
     double worst = 0;
     for (std::size_t l = 0; l < lanes.size(); ++l) {
         const auto [k, i, j, d] = lanes[l];
-        const LinearSpringDashpot& law = laws[l % 2];
+        const Law& law = laws[l % 2];
         const double distance = d.norm(), sumR = p.radius[i] + p.radius[j];
         const Vec3 n = d / distance;
         ContactHistory history = histories.get(k);
@@ -72,6 +74,7 @@ TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
         c.inverseReducedMass = p.invMass[i] + p.invMass[j];
         c.otherAcceleration = previousForce[i].dot(n) * p.invMass[i] - previousForce[j].dot(n) * p.invMass[j] -
                               history.lastNormalForce * c.inverseReducedMass;
+        if constexpr (Law::usesEffectiveRadius) c.effectiveRadius = p.radius[i] * p.radius[j] / sumR;
         const ContactForce f = law.force(c, history, dt);
         const Vec3 force = f.normalForce * n + f.tangentialForce;
         const Vec3 turn = n.cross(f.tangentialForce);
@@ -89,5 +92,20 @@ TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
         near(Vec3(batch.fn[b], batch.overlap[b], 0), Vec3(f.normalForce, c.overlap, 0), "normal force and overlap");
         EXPECT_GT(f.tangentialForce.norm(), 0) << "a lane without friction would not test the spring";
     }
-    std::printf("[ measured ] largest relative difference of %zu lanes from the scalar path: %.3g\n", lanes.size(), worst);
+    std::printf("[ measured ] %s: largest relative difference of %zu lanes from the scalar path: %.3g\n", Law::name,
+                lanes.size(), worst);
+}
+
+}  // namespace
+
+TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
+    const LinearSpringDashpot laws[2] = {LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5).withFriction(0.5),
+                                         LinearSpringDashpot::fromCollision(0.004, 0.6, 0.3).withFriction(0.2)};
+    expectLanesEqualTheScalarPath(laws);
+}
+
+TALUS_LANE_TEST(ContactBatch, HertzMindlinLanesEqualTheScalarPathOfEachPair) {
+    const HertzMindlin laws[2] = {HertzMindlin::fromCollision(0.005, 0.88, 0.5, 0.25, 1, 0.3).withFriction(0.5),
+                                  HertzMindlin::fromCollision(0.004, 0.6, 0.3, 0.25, 2, 0.2).withFriction(0.2)};
+    expectLanesEqualTheScalarPath(laws);
 }

@@ -15,7 +15,7 @@ void ContactForceLoopInLanes<Law>::flush(PairList& list) {
     ContactBatch& b = batch_;
     if (b.count == 0) return;
     b.gather(p_, previousForce_, list.history);
-    b.compute(dt_);
+    b.template compute<Law>(dt_);
     if (changed_)  // (interiorPairs)
         for (int l = 0; l < b.count; ++l) changed_->save(list.history, b.k[l]);
     if (perPair_ || records_ || list.history.hasWarmStarts()) [[unlikely]]
@@ -78,9 +78,10 @@ void ContactForceLoopInLanes<Law>::applyBatchWithExtras(PairList& list) {
             const Vec3 n = Vec3(b.dx[l], b.dy[l], b.dz[l]).normalized();
             ContactKinematics c{};
             c.overlap = b.overlap[l];
+            c.effectiveRadius = b.ri[l] * b.rj[l] / (b.ri[l] + b.rj[l]);
             const Vec3 tangential = force - b.fn[l] * n;
             records_->add({i, j, p_.position[i] - (b.ri[l] - 0.5 * b.overlap[l]) * n, b.overlap[l],
-                           spring.norm(), b.fn[l], n, tangential, b.law(l).elasticEnergy(c, spring)});
+                           spring.norm(), b.fn[l], n, tangential, laws_(p_.species[i], p_.species[j]).elasticEnergy(c, spring)});
         }
     }
 }

@@ -15,8 +15,9 @@ namespace talus::TALUS_LANES {
 // Contacts inside a lasting contact, gathered in batches of `size` and computed lane by lane in
 // one loop of plain numbers that the compiler vectorises (LinearSpringDashpot::lastingContact):
 // the arithmetic of a contact then costs a fraction of the scalar path's, and only gathering and
-// scattering stay scalar (Documentation/Performance.md). Only the linear law has the batched
-// form (`batched = true`).
+// scattering stay scalar (Documentation/Performance.md). The laws with the batched form
+// (`batched = true`: the linear law and Hertz-Mindlin) give their numbers as a LaneLaw and their
+// step as Law::lastingContactInLane.
 struct ContactBatch {
     static constexpr int size = 64;
     int count = 0;
@@ -26,25 +27,23 @@ struct ContactBatch {
     double dx[size], dy[size], dz[size], ri[size], rj[size], vx[size], vy[size], vz[size];
     double wix[size], wiy[size], wiz[size], wjx[size], wjy[size], wjz[size], inverseMassSum[size];
     double ax[size], ay[size], az[size], lastNormalForce[size], sx[size], sy[size], sz[size];
-    double kn[size], gn[size], kt[size], gt[size], mu[size];
+    double law[5][size];  // the pair's LaneLaw
     // Out: force on i, torques on i and j, normal force, overlap.
     double fx[size], fy[size], fz[size], tix[size], tiy[size], tiz[size], tjx[size], tjy[size], tjz[size];
     double fn[size], overlap[size];
 
     bool full() const { return count == size; }
-    LinearSpringDashpot law(int l) const { return {kn[l], gn[l], kt[l], gt[l], mu[l]}; }
 
     // A lasting contact into the next lane: the pair, its separation and radii, its law. The
     // particles' velocities, spins and last forces and the pair's history come in later, for
     // all lanes at once (gather).
     void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Vec3& d, double radiusA, double radiusB,
-             const LinearSpringDashpot& pairLaw) {
+             const LaneLaw& pairLaw) {
         const int l = count++;
         k[l] = static_cast<std::uint32_t>(pair), i[l] = a, j[l] = b;
         dx[l] = d.x(), dy[l] = d.y(), dz[l] = d.z();
         ri[l] = radiusA, rj[l] = radiusB;
-        kn[l] = pairLaw.normalStiffness, gn[l] = pairLaw.normalDamping, kt[l] = pairLaw.tangentialStiffness;
-        gt[l] = pairLaw.tangentialDamping, mu[l] = pairLaw.friction;
+        for (int q = 0; q < 5; ++q) law[q][l] = pairLaw[q];
     }
 
     // The rest of every lane's input, from the particle arrays and the histories, in one loop of
@@ -79,6 +78,7 @@ struct ContactBatch {
 
     // The kinematics of contactKinematics (Theory/ContactLaws.md eq. (4): arms ri - dn/2,
     // vt = v - vn n - (ai wi + aj wj) x n) and the law's lasting-contact step, for every lane.
+    template <class Law>
     [[gnu::noinline]] void compute(double dt) {
         for (int l = 0; l < count; ++l) {
             const double distance = std::sqrt(dx[l] * dx[l] + dy[l] * dy[l] + dz[l] * dz[l]), inverse = 1 / distance;
@@ -97,7 +97,9 @@ struct ContactBatch {
             c.otherAcceleration = ax[l] * c.nx + ay[l] * c.ny + az[l] * c.nz - lastNormalForce[l] * inverseMassSum[l];
             c.inverseDistance = inverse;
             c.sx = sx[l], c.sy = sy[l], c.sz = sz[l];
-            law(l).lastingContact(c, dt);
+            const double laneLaw[5] = {law[0][l], law[1][l], law[2][l], law[3][l], law[4][l]};
+            const double effectiveRadius = Law::usesEffectiveRadius ? ri[l] * rj[l] / (ri[l] + rj[l]) : 0;
+            Law::lastingContactInLane(c, dt, laneLaw, effectiveRadius);
             sx[l] = c.sx, sy[l] = c.sy, sz[l] = c.sz;
             fn[l] = c.normalForce;
             overlap[l] = c.overlap;

@@ -230,8 +230,8 @@ public:
             // Inside a lasting contact: into the batch (see ContactBatch).
             if (touching && list.history.state(k) == ContactHistory::touching) {
                 const Law& law = laws_(p_.species[i], p_.species[j]);
-                if (law.treatContactEnds) {
-                    batch_.add(k, i, j, d, radiusI, radiusJ, law);
+                if (law.lastsInLanes()) {
+                    batch_.add(k, i, j, d, radiusI, radiusJ, laws_.lane(p_.species[i], p_.species[j]));
                     if (batch_.full()) flush(list);
                     return;
                 }

@@ -88,7 +88,7 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
     if (b.count == 0) return;
     b.compute(shapeSettings_.tolerance);
     bool forcesInLanes = false;
-    if constexpr (Law::batched) {
+    if constexpr (Law::batched && !Law::usesEffectiveRadius) {  // (the ellipsoid batch's laws: above)
         forcesInLanes = !records_;
         if (forcesInLanes) {
             for (int l = 0; l < b.count; ++l) {

@@ -14,6 +14,7 @@
 #include "Error.h"
 #include "Contacts/ContactHistory.h"
 #include "Species/ContactKinematics.h"
+#include "Species/LinearSpringDashpot.h"
 
 namespace talus {
 
@@ -27,7 +28,7 @@ struct HertzMindlin {
 
     static constexpr const char* name = "HertzMindlin";
     static constexpr bool usesEffectiveRadius = true;
-    static constexpr bool batched = false;  // (no lastingContactForce: ContactForceLoop computes it pair by pair)
+    static constexpr bool batched = true;  // (lasting contacts in lanes: lastingContactInLane)
     static constexpr bool rollingResistance = false;
 
     // (As LinearSpringDashpot::parameters.)
@@ -129,27 +130,41 @@ struct HertzMindlin {
     }
     double approachForce(const ContactKinematics&, ContactHistory&, double) const { return 0; }
 
+    // The batched force loop's numbers of the law (Contacts/ContactBatch.h): E*, G*, the damping
+    // factor -2 sqrt(5/6) beta (its logarithm taken once, with the pair table), mu.
+    bool lastsInLanes() const { return true; }
+    LaneLaw lane() const {
+        return {effectiveYoungsModulus, effectiveShearModulus, -2 * std::sqrt(5.0 / 6.0) * beta(), friction, 0};
+    }
+
+    // One step of a contact from the lane's numbers (the scalar path and the batch alike): the
+    // stiffnesses and dampings of the present overlap, the dashpot on the implicit end-of-step
+    // velocity as for the linear law, and the tangential step of a linear spring of stiffness St
+    // and damping gt (LinearSpringDashpot::tangentialStep, Theory/ContactLaws.md eq. (14)).
+    [[gnu::always_inline]] static void lastingContactInLane(LinearSpringDashpot::Lane& c, double dt, const double (&law)[5],
+                                                            double effectiveRadius) {
+        const double contactRadius = std::sqrt(effectiveRadius * c.overlap);  // sqrt(R* dn)
+        const double normalStiffness = 2 * law[0] * contactRadius;              // Sn
+        const double tangentialStiffness = 8 * law[1] * contactRadius;          // St
+        const double reducedMass = 1 / c.inverseReducedMass;
+        const double normalDamping = law[2] * std::sqrt(normalStiffness * reducedMass);
+        const double tangentialDamping = law[2] * std::sqrt(tangentialStiffness * reducedMass);
+        const double elastic = 2.0 / 3.0 * normalStiffness * c.overlap;
+        const double halfStepOverMass = 0.5 * dt * c.inverseReducedMass;
+        const double endVelocity = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
+                                   (1 + halfStepOverMass * normalDamping);
+        c.normalForce = elastic - normalDamping * endVelocity;
+        LinearSpringDashpot{0, 0, tangentialStiffness, tangentialDamping, law[3]}.tangentialStep(c, dt);
+    }
+
     // (Inlined always, so that each lane form compiles it into its own force loop; out of line the
     // linker keeps one copy, compiled for the baseline processor.)
     [[gnu::always_inline]] ContactForce force(const ContactKinematics& k, ContactHistory& history, double dt) const {
-        const double contactRadius = std::sqrt(k.effectiveRadius * k.overlap);  // sqrt(R* dn)
-        const double normalStiffness = 2 * effectiveYoungsModulus * contactRadius;   // Sn
-        const double tangentialStiffness = 8 * effectiveShearModulus * contactRadius;  // St
-        const double dampingFactor = -2 * std::sqrt(5.0 / 6.0) * beta();
-        const double normalDamping = dampingFactor * std::sqrt(normalStiffness * k.reducedMass());
-        const double tangentialDamping = dampingFactor * std::sqrt(tangentialStiffness * k.reducedMass());
-        // As for the linear law, the dashpot acts on the implicit end-of-step velocity.
-        const double elastic = 2.0 / 3.0 * normalStiffness * k.overlap;
-        const double halfStepOverMass = 0.5 * dt * k.inverseReducedMass;
-        const double endVelocity = (k.normalVelocity + 0.5 * dt * k.otherAcceleration + halfStepOverMass * elastic) /
-                                   (1 + halfStepOverMass * normalDamping);
-        advanceTangentialSpring(history.spring, k, dt);
-        ContactForce f;
-        f.normalForce = elastic - normalDamping * endVelocity;
-        f.tangentialForce = -tangentialStiffness * history.spring - tangentialDamping * k.tangentialVelocity;
-        applyCoulombLimit(f.tangentialForce, history.spring, f.normalForce, friction, tangentialStiffness,
-                          tangentialDamping, k.tangentialVelocity);
-        return f;
+        LinearSpringDashpot::Lane c = LinearSpringDashpot::laneOf(k, history.spring);
+        const LaneLaw numbers = lane();
+        lastingContactInLane(c, dt, {numbers[0], numbers[1], numbers[2], numbers[3], numbers[4]}, k.effectiveRadius);
+        history.spring = Vec3(c.sx, c.sy, c.sz);
+        return {c.normalForce, Vec3(c.fx, c.fy, c.fz)};
     }
 
     // Normal: 8/15 E* sqrt(R*) dn^(5/2); tangential: 1/2 St |xi|^2 at the current overlap.

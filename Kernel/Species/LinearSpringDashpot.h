@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -12,6 +13,11 @@
 #include "Species/ContactKinematics.h"
 
 namespace talus {
+
+// A law as the batched force loop's lanes read it (Contacts/ContactBatch.h): five numbers a pair,
+// made once with the pair table (Law::lane) and turned into the lasting-contact step by
+// Law::lastingContactInLane.
+using LaneLaw = std::array<double, 5>;
 
 struct LinearSpringDashpot {
     double normalStiffness = 0;      // kn
@@ -172,6 +178,12 @@ struct LinearSpringDashpot {
         double normalForce, fx, fy, fz;         // out: fn and the tangential force
     };
     static constexpr bool batched = true;
+    // Whether the batch takes this pair's lasting contacts (the lane step treats the ends).
+    bool lastsInLanes() const { return treatContactEnds; }
+    LaneLaw lane() const { return {normalStiffness, normalDamping, tangentialStiffness, tangentialDamping, friction}; }
+    [[gnu::always_inline]] static void lastingContactInLane(Lane& c, double dt, const double (&law)[5], double) {
+        LinearSpringDashpot{law[0], law[1], law[2], law[3], law[4]}.lastingContact(c, dt);
+    }
     [[gnu::always_inline]] void lastingContact(Lane& c, double dt) const {
         // Normal: the dashpot on the end-of-step speed, u(n+1) = u + dt/2 ((kn dn - gn
         // u(n+1))/m* + a).

@@ -28,7 +28,10 @@ template <class Law>
 struct PairTable {
     std::size_t count = 0;
     std::vector<Law> laws;  // laws[a * count + b], symmetric
+    // A batched law's numbers for the force loop's lanes (Law::lane), made once with the table.
+    std::vector<LaneLaw> lanes;
     const Law& operator()(std::size_t a, std::size_t b) const { return laws[a * count + b]; }
+    const LaneLaw& lane(std::size_t a, std::size_t b) const { return lanes[a * count + b]; }
 };
 
 class SpeciesTable {
@@ -82,6 +85,8 @@ public:
         t.laws.reserve(t.count * t.count);
         for (std::size_t a = 0; a < t.count; ++a)
             for (std::size_t b = 0; b < t.count; ++b) t.laws.push_back(std::get<Law>(pairLaw(a, b)));
+        if constexpr (Law::batched)
+            for (const Law& law : t.laws) t.lanes.push_back(law.lane());
         return t;
     }
 

@@ -3,8 +3,9 @@
 # side: the same start file, materials, walls and time step, each run for TIME seconds from t = 0,
 # in alternating rounds pinned to the first core, printing each round's particle-steps per second
 # and their ratio.
-#   drum: Talus's smooth cylinder and planes against LIGGGHTS's published triangles, at the
-#         published soft step of 1e-4 s (default TIME 0.05);
+#   drum: Talus's smooth cylinder and planes (or, with TALUS_WALLS=mesh, the published triangles
+#         turning, as LIGGGHTS's) against LIGGGHTS's published triangles, at the published soft
+#         step of 1e-4 s (default TIME 0.05);
 #   penetration: the 25K bed in both codes' plane walls at the published 5e-7 s (default TIME 0.002,
 #         the sphere still falling onto the bed at rest).
 #   comparisonRounds.sh drum|penetration INPUTS [build-dir] [rounds] [time]
@@ -26,6 +27,7 @@ case $case in
     python3 "$inputsTool" data "$inputs/Drum/PartCoordinates.txt" "$work/drum.data" >/dev/null
     python3 "$inputsTool" stl "$inputs/Drum/walls.txt" "$work/drum.stl" >/dev/null
     talus=("$build/Drivers/Benchmarks/ComparisonDrum" --start-file "$inputs/Drum/PartCoordinates.txt" --dt 1e-4)
+    [ "${TALUS_WALLS:-smooth}" = mesh ] && talus+=(--walls "$inputs/Drum/walls.txt")
     script=in.drum.liggghts ;;
   penetration)
     time=${5:-0.002}
