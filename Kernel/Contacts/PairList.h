@@ -170,8 +170,8 @@ public:
     // its force with the same arithmetic; ghosts have no wall contacts.
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt);
-    // The same with the histories given (carriedHistories before the particles changed slots,
-    // sorted, as an MPI split hands them over).
+    // The same with the histories given (carriedHistories before the particles changed slots, as
+    // an MPI split hands them over; in any order).
     void rebuild(const ParticleStore& particles, const Domain& domain, const std::vector<Wall>& walls,
                  HGrid& grid, double dt, const std::vector<CarriedHistory>& carried);
 
@@ -203,11 +203,11 @@ public:
     // sorted. firstOwned: only of the pairs whose first particle is owned (not a ghost), so that
     // ranks together give each pair once.
     std::vector<CarriedHistory> carriedHistories(const ParticleStore& particles, bool firstOwned = false) const;
-    // The same into `carried` (cleared first): a buffer kept from build to build keeps its memory,
-    // where a new one takes fresh pages from the system, each a page fault, at every build
-    // (Documentation/Performance.md, "Memory kept between list builds").
+    // The same into `carried` (cleared first; sorted unless asked not to be): a buffer kept from
+    // build to build keeps its memory, where a new one takes fresh pages from the system, each a
+    // page fault, at every build (Documentation/Performance.md, "Memory kept between list builds").
     void carriedHistoriesInto(std::vector<CarriedHistory>& carried, const ParticleStore& particles,
-                              bool firstOwned = false) const;
+                              bool firstOwned = false, bool sorted = true) const;
     // Forgets every listed pair and history (the particles are about to change slots).
     void clear();
 
