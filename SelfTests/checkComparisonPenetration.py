@@ -6,7 +6,7 @@ the restitution of Hertz's law with the Tsuji-Antypov damping for steel on steel
 Documentation/Theory/ContactLaws.md eq. (16)-(20a)), found here by integrating that law's one-body
 equation of motion with fine Runge-Kutta steps (the law's restitution is not e itself).
 
-    checkComparisonPenetration.py DRIVER [plotComparisonPenetration.py]
+    checkComparisonPenetration.py DRIVER [plotComparisonPenetration.py] [-- DRIVER FLAGS]
 
 With the plot script given, its table's row of the run is checked too: the sphere leaves free
 flight at the first sample after the impact, and its lowest height is the run's.
@@ -16,6 +16,8 @@ import subprocess
 import sys
 
 driver = sys.argv[1]
+driverFlags = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+scriptArguments = sys.argv[:sys.argv.index("--")] if "--" in sys.argv else sys.argv
 floor, z0, v0, g, radius = -0.0902431, 0.06, 5.0, 9.8, 0.01
 with open("bed.txt", "w") as bed:
     bed.write("Radius[m] PosX[m] PosY[m] PosZ[m]\n")
@@ -23,7 +25,7 @@ with open("bed.txt", "w") as bed:
     bed.write("5 0.01 0.01 0 0 0.06\n")  # (the published beds' last line, which describes the sphere)
 end = 0.03
 subprocess.run([driver, "--start-file", "bed.txt", "--end-time", str(end), "--vtu", "off", "--fstat", "off",
-                "--name", "bounce"], check=True)
+                "--name", "bounce"] + driverFlags, check=True)
 rows = [list(map(float, line.split())) for line in open("bounce.penetration") if not line.startswith("#")]
 
 # Free flight until the sphere's bottom reaches the floor.
@@ -71,8 +73,8 @@ rebound = vz + g * (t - hit)
 ratio = rebound / speed
 print(f"rebound: {rebound:.5f} m/s from {speed:.5f} m/s, restitution {ratio:.5f}; the law's {restitution:.5f}")
 # The plot script's table: the sphere leaves free flight at the first sample after the impact.
-if len(sys.argv) > 2:
-    table = subprocess.run([sys.executable, sys.argv[2], "bounce=bounce.penetration", "-o", "bounce.png"],
+if len(scriptArguments) > 2:
+    table = subprocess.run([sys.executable, scriptArguments[2], "bounce=bounce.penetration", "-o", "bounce.png"],
                            check=True, capture_output=True, text=True).stdout
     row = [line for line in table.splitlines() if line.startswith("| bounce |")][0].split("|")
     leaves, lowest = float(row[2]), float(row[3])

@@ -2,7 +2,8 @@
 // Documentation/Benchmarks/OpenSourceComparison.md), in SI units.
 //
 // A steel box open at the top, its inner faces those of the published triangles (x = -0.049 and
-// 0.049 m, y = -0.03 and 0.03 m, the floor at z = -0.0902431 m), holds the published bed
+// 0.049 m, y = -0.03 and 0.03 m, the floor at z = -0.0902431 m; planes, or the triangles themselves
+// with --walls FILE: the comparison's Penetration/walls.txt, or an STL file), holds the published bed
 // (--start-file: 25000 or 50000 spheres of M1 of diameter 2 mm, as placed, not settled again). A
 // steel sphere of diameter 20 mm starts at (0, 0, 0.06) m, 0.15 m above the floor, moving down at
 // 5 m/s (the published beds end with a line that describes it: skipped). Hertz-Mindlin contacts
@@ -23,6 +24,7 @@ using namespace talus;
 class ComparisonPenetration : public Simulation {
 public:
     std::string startFile = std::string(TALUS_SHARED_DIR) + "/peers/os-benchmark/Penetration/25KParticles.txt";
+    std::string walls = "smooth";
     double sampleInterval = 5e-4;
     double restSpeed = 0.01;
 
@@ -34,6 +36,7 @@ public:
                           startFile);
         run().addFlag("sample-interval", "time between the sphere's heights written to NAME.penetration (s)", sampleInterval);
         run().addFlag("rest-speed", "the sphere is at rest once its speed stays below this (m/s)", restSpeed);
+        run().addTextFlag("walls", "smooth (planes) or a file of the box's triangles (table or STL)", walls);
         heights_.setPrecision(10);  // (the free flight to round-off in the self-test)
         run().keepInRestart("penetration.bedSurface", bedSurface_);
         run().keepInRestart("penetration.lowest", lowest_);
@@ -49,8 +52,16 @@ public:
         // The fastest impact: the steel sphere's, 5 m/s and a little more after its fall.
         const std::vector<std::size_t> species = comparison::materials(false).addTo(scene().species(), 5.5);
         const std::size_t M1 = species[0], steel = species[2];
-        scene().addOpenBox(Vec3(-halfWidthX, -halfWidthY, floor), Vec3(halfWidthX, halfWidthY, startHeight + 2 * sphereRadius),
-                           steel);
+        if (walls == "smooth") {
+            scene().addOpenBox(Vec3(-halfWidthX, -halfWidthY, floor),
+                               Vec3(halfWidthX, halfWidthY, startHeight + 2 * sphereRadius), steel);
+        } else {
+            TriangleMesh box = comparison::readWallTriangles(walls);
+            require(std::abs(box.lo().z() - floor) < 0.005, "--walls " + walls + ": its lowest point (z = " +
+                                                                str(box.lo().z()) + " m) is not under the floor (z = " +
+                                                                str(floor) + " m)");
+            scene().addMeshWall(std::move(box), steel);
+        }
         double bedTop = floor;
         for (const comparison::StartParticle& p : comparison::readStartParticles(startFile, /*lastLineIsNotABead*/ true)) {
             scene().addParticle(p.position, p.radius, M1);
