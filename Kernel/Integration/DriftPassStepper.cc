@@ -17,7 +17,11 @@ std::string_view DriftPassStepper::whyNot(const StepHost& host) const {
     if (p.hasShapes()) return "non-spherical particles turn as rigid bodies";
     if (host.onRanks() && s.settings.stepper.overlapGhosts)
         return "the interior pairs are computed while the ghosts travel (--overlap-ghosts on)";
-    if (!s.motions.empty()) return "prescribed motions move particles or walls";
+    // (Walls and meshes on prescribed motions move after the pass, as in the plain step; particles
+    // on them would be drifted by the pass along their velocity, not turned exactly.)
+    if (!s.motions.empty())
+        for (std::size_t i = 0; i < p.owned(); ++i)
+            if (p.motion[i] >= 0) return "prescribed motions move particles";
     if (host.boundariesActAfterDrift()) return "boundaries act between the drift and the forces";
     if (s.domain.oneWay.active) return "a one-way periodic box (a maser)";
     if (!s.pairList.noted().empty()) return "particles added or moved are to be relisted";
@@ -58,6 +62,7 @@ void DriftPassStepper::advance(StepHost& host, bool recordContacts) {
         kickDriftAndStartForces(p, work.previousForce, s.domain, list.comparable(p) ? &list.referencePosition : nullptr,
                                 s.gravity, frame, s.settings.timeStep, list.sweepPointScratch, 0, owned);
     startGhostForces(p, s.gravity);
+    moveWithPrescribedMotion(s);  // (the walls and meshes that follow one)
     work.positions.checkFound(drifted.positionsBefore, s);
     list.sweepPointsByDrift = PairList::PointsByDrift{drifted.growth, owned, frame};
     work.driftFrame = drifted.meanVelocity;

@@ -10,10 +10,6 @@
 
 namespace talus {
 
-namespace {
-
-// Particles, walls, meshes and the turning of fixed superquadrics that follow a prescribed motion, moved
-// over the step; their velocities those of the motion at the new positions.
 void moveWithPrescribedMotion(SimulationState& s) {
     const double dt = s.settings.timeStep;
     if (s.motions.empty()) return;
@@ -51,8 +47,6 @@ void moveWithPrescribedMotion(SimulationState& s) {
         p.angularVelocity[i] = m.angularVelocity;
     }
 }
-
-}  // namespace
 
 void PlainVerlet::advance(StepHost& host, bool recordContacts) {
     SimulationState& s = host.state();
