@@ -12,8 +12,9 @@ namespace talus::formats::restart {
 // values; 4: the one-way periodic box (maser) and its pairs; 5: shapes; 6: the interior pair
 // count; 7: the summation line (the order of the force sums); 8: revolved walls (a wall line ends
 // with the profile, the next segment's direction and the start-joined flag); 9: the meshes whose
-// triangles are walls (a section after the walls); 10: a mesh line ends with its motion index and
-// its merging tolerance.
+// triangles are walls (a section after the walls); 10: a mesh line ends with its motion index,
+// merging tolerance, travel since the list build and last step, the pair-list line with the
+// moving meshes' travel.
 inline constexpr const char* magicWords[] = {"Talus", "restart"};
 inline constexpr int version = 10;
 

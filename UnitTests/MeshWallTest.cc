@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -172,6 +174,19 @@ void expectRestartContinuesExactly(bool turning) {
     EXPECT_EQ(read.meshes[0]->mesh.tolerance(), first.state().meshes[0]->mesh.tolerance());
     EXPECT_EQ(read.walls[5].mesh, read.meshes[0].get());
     EXPECT_EQ(read.walls[5].triangle, 5u);
+    // A travel that is not a distance is refused, naming it (the mesh line's seventh number).
+    std::string text = readWholeFile(name + ".restart");
+    const std::size_t meshLine = text.find('\n', text.find("\nmeshes 1\n") + 1) + 1;
+    std::istringstream fields(text.substr(meshLine, text.find('\n', meshLine) - meshLine));
+    std::vector<std::string> numbers{std::istream_iterator<std::string>(fields), std::istream_iterator<std::string>()};
+    ASSERT_EQ(numbers.size(), 8u);
+    numbers[6] = "-1";
+    std::string line;
+    for (const std::string& number : numbers) line += "   " + number;
+    text.replace(meshLine, text.find('\n', meshLine) - meshLine, line);
+    writeWholeFile(name + "-bad.restart", text);
+    SimulationState bad;
+    expectError([&] { readRestartFile(name + "-bad.restart", bad); }, {"travel since the list build"});
 
     SceneSimulation restarted;
     restarted.settings().progressInterval = 1e9;

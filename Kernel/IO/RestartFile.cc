@@ -113,6 +113,8 @@ void readMeshes(Reader& r, SimulationState& t, std::uint64_t speciesCount, std::
         const double tolerance = version >= 10 ? r.real("mesh tolerance") : 0;
         const double travelled = version >= 10 ? r.real("mesh travel since the list build") : 0;
         const double lastStep = version >= 10 ? r.real("mesh's last step") : 0;
+        if (!(travelled >= 0 && lastStep >= 0 && std::isfinite(travelled + lastStep)))
+            r.fail("a mesh's travel since the list build and last step must be finite and not negative");
         std::vector<Vec3> vertices(vertexCount);
         for (Vec3& v : vertices) v = r.vec("mesh vertex");
         std::vector<TriangleCorners> corners(triangleCount);
@@ -439,6 +441,7 @@ void readRestartFile(const std::string& path, SimulationState& s) {
     const auto references = r.count("reference count", n);
     l.interiorPairs = r.count("interior pair count", pairs);
     if (version >= 10) l.meshTravel = r.real("mesh travel");
+    if (!(l.meshTravel >= 0 && std::isfinite(l.meshTravel))) r.fail("the mesh travel must be finite and not negative");
     for (std::uint64_t k = 0; k < pairs; ++k) {
         const auto i = r.index("pair particle", n), j = r.index("pair particle", n);
         l.pairs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
