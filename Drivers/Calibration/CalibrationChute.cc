@@ -42,7 +42,7 @@ constexpr double density = 6 / pi;                      // a large sphere has ma
 class CalibrationChute : public Chute {
 public:
     double angle = 24, depth = 6, concentration = 0.5, length = 10, width = 10, boxHeight = 60;
-    double sampleInterval = 1, averageTime = 100, baseDiameter = 1, startAngle = 0, startTime = 0;
+    double sampleInterval = 1, averageTime = 100, baseDiameter = 1, baseRoughness = 0.5, startAngle = 0, startTime = 0;
     FlowCriteria criteria;
     int particles = 0, seed = 1, window = static_cast<int>(criteria.window), baseOfSmall = 0;
     std::string species = "large";
@@ -57,6 +57,7 @@ public:
         run().addFlag("width", "periodic width along y", width);
         run().addFlag("box-height", "height of the box above the base, which the start layer must fit", boxHeight);
         run().addFlag("base-diameter", "diameter of the fixed base spheres (large diameters)", baseDiameter);
+        run().addFlag("base-roughness", "spread of the base spheres' heights, in [0, 1] base diameters", baseRoughness);
         run().addFlag("base-of-small", "1: the base has the small spheres' friction (0.375, 0.25), 0: the large ones'", baseOfSmall);
         run().addFlag("start-angle", "inclination in degrees until --start-time (0: --angle)", startAngle);
         run().addFlag("start-time", "time the layer flows at --start-angle before the decision starts", startTime);
@@ -97,7 +98,7 @@ public:
         setChuteGeometry({.length = length, .width = width, .height = boxHeight, .periodicEnds = true});
         addMaserChuteSpecies(*this, "table-3C1", 1, smallDiameter, 1, density * pi / 6 * std::pow(smallDiameter, 3),
                              density, baseDiameter, baseOfSmall == 1);
-        addCalibrationBase(*this, baseDiameter, baseSpecies, static_cast<std::uint64_t>(seed));
+        addCalibrationBase(*this, baseDiameter, baseRoughness, baseSpecies, static_cast<std::uint64_t>(seed));
 
         const double smallShare = species == "small" ? 1 : species == "large" ? 0 : concentration;
         const auto [large, small, volume] = startLayer(smallShare, smallDiameter, particles, depth, length * width);
@@ -157,8 +158,7 @@ private:
         const double mu = averaged > 0 ? -force[0] / force[1] : NAN;
         const double weightCarried = averaged > 0 ? force[1] / averaged / (flowMass_ * std::cos(theta)) : NAN;
         const double uChange = averaged > 0 ? changeAlongTrend(u) / velocity.mean : NAN;
-        const FlowState state = decision_.state();
-        const char* name = flowStateName(state);
+        const FlowState state = decision_.state(); const char* name = flowStateName(state);
         writeFileOnce(*this, settings().name + ".result.csv", [&](std::ostream& out) {
             out << "species,concentration,angle,length,width,baseDiameter,seed,particles,h,u,uError,uChange,F,alpha,mu,weightCarried,"
                    "state,decidedAt,averagedFor\n"
