@@ -114,11 +114,14 @@ public:
     }
     const double* lastingRecords() const { return reinterpret_cast<const double*>(forces_.data()); }
     ContactHistory::State* mutableStates() { return states_.data(); }
+    // n apart histories. A list that has grown since the last build gets room for more: vector::assign
+    // allocates exactly n, so a list growing by a few pairs a build got fresh memory every build,
+    // and the first touch of its pages was 5-6% of a settling drum's step (Performance/History.md).
     void assign(std::size_t n) {
-        forces_.assign(n, {});
-        states_.assign(n, ContactHistory::apart);
-        if (withWarmStarts_) warmPoints_.assign(n, Vec3::Zero()), warmMultipliers_.assign(n, 0);
-        if (withRollingSprings_) rollingSprings_.assign(n, Vec3::Zero());
+        assignWithRoom(forces_, n, Forces{});
+        assignWithRoom(states_, n, ContactHistory::apart);
+        if (withWarmStarts_) assignWithRoom(warmPoints_, n, Vec3(Vec3::Zero())), assignWithRoom(warmMultipliers_, n, 0.0);
+        if (withRollingSprings_) assignWithRoom(rollingSprings_, n, Vec3(Vec3::Zero()));
     }
     // Keeps the first n histories, or adds apart ones up to n.
     void resize(std::size_t n) {
@@ -142,6 +145,14 @@ public:
     }
 
 private:
+    template <class T>
+    static void assignWithRoom(std::vector<T>& v, std::size_t n, const T& value) {
+        if (n > v.capacity()) {
+            v.clear();
+            v.reserve(n + n / 4);
+        }
+        v.assign(n, value);
+    }
     bool withWarmStarts_ = false;
     std::vector<Vec3> warmPoints_;
     std::vector<double> warmMultipliers_;
