@@ -8,6 +8,7 @@
 // gathered another particle's or pair's numbers, or another lane's law, would differ.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -96,7 +97,72 @@ void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
                 lanes.size(), worst);
 }
 
+// A batch of frictionless lanes (two laws of friction 0) through the path without friction
+// (ContactBatch::frictionless) against the full path: the same force, normal force, overlap and
+// (zero) spring to the bit, and the full path's torques exactly zero, so that leaving them out
+// adds nothing that was not zero.
+template <class Law>
+void expectFrictionlessPathEqualsTheFullPath(const Law (&laws)[2]) {
+    std::mt19937_64 random(20261207);
+    std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
+    const std::size_t particles = 20;
+    ParticleStore p;
+    std::vector<Vec3> previousForce(particles);
+    for (std::size_t i = 0; i < particles; ++i) {
+        p.position.push_back(Vec3::Zero());
+        p.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
+        p.angularVelocity.push_back(Vec3(unit(random), unit(random), unit(random)) * 3);
+        p.force.push_back(Vec3::Zero());
+        p.torque.push_back(Vec3::Zero());
+        p.radius.push_back(radiusOf(random));
+        p.invMass.push_back(1 / (1 + unit(random) * 0.5));
+        previousForce[i] = Vec3(unit(random), unit(random), unit(random)) * 5;
+    }
+    ContactHistories histories;
+    histories.assign(ContactBatch::size);
+    ContactBatch full;
+    while (!full.full()) {
+        const auto i = static_cast<std::uint32_t>(random() % particles), j = static_cast<std::uint32_t>(random() % particles);
+        if (i == j) continue;
+        const Vec3 d = Vec3(unit(random), unit(random), unit(random)).normalized() * (p.radius[i] + p.radius[j]) *
+                       (1 - fraction(random));
+        const auto k = static_cast<std::size_t>(full.count);
+        histories.set(k, {Vec3::Zero(), 10 * fraction(random) + 0.01, ContactHistory::touching});
+        full.add(k, i, j, d, p.radius[i], p.radius[j], laws[k % 2].lane());
+    }
+    ASSERT_TRUE(full.template frictionless<Law>());
+    ContactBatch cheap = full;
+    full.gather(p, previousForce, histories);
+    full.compute<Law>(1e-4);
+    cheap.gather<true>(p, previousForce, histories);
+    cheap.compute<Law, true>(1e-4);
+    const auto same = [](const double(&a)[ContactBatch::size], const double(&b)[ContactBatch::size]) {
+        return std::memcmp(a, b, sizeof a) == 0;
+    };
+    EXPECT_TRUE(same(full.fx, cheap.fx) && same(full.fy, cheap.fy) && same(full.fz, cheap.fz)) << "force";
+    EXPECT_TRUE(same(full.fn, cheap.fn) && same(full.overlap, cheap.overlap)) << "normal force, overlap";
+    for (int l = 0; l < full.count; ++l) {
+        EXPECT_EQ(full.sx[l], 0.0) << "lane " << l;
+        EXPECT_EQ(cheap.sx[l], 0.0) << "lane " << l;
+        for (const double t : {full.tix[l], full.tiy[l], full.tiz[l], full.tjx[l], full.tjy[l], full.tjz[l]})
+            EXPECT_EQ(t, 0.0) << "torque of lane " << l;
+        EXPECT_GT(std::abs(full.fn[l]), 0) << "lane " << l;
+    }
+    // A batch with one lane of friction is not frictionless.
+    full.law[Law::laneFriction][7] = 0.1;
+    EXPECT_FALSE(full.template frictionless<Law>());
+}
+
 }  // namespace
+
+TALUS_LANE_TEST(ContactBatch, FrictionlessLanesLeaveOutTheTangentialPartToTheSameBits) {
+    const LinearSpringDashpot linear[2] = {LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5).withFriction(0),
+                                           LinearSpringDashpot::fromCollision(0.004, 0.6, 0.3).withFriction(0)};
+    expectFrictionlessPathEqualsTheFullPath(linear);
+    const HertzMindlin hertz[2] = {HertzMindlin::fromCollision(0.005, 0.88, 0.5, 0.25, 1, 0.3).withFriction(0),
+                                   HertzMindlin::fromCollision(0.004, 0.6, 0.3, 0.25, 2, 0.2).withFriction(0)};
+    expectFrictionlessPathEqualsTheFullPath(hertz);
+}
 
 TALUS_LANE_TEST(ContactBatch, LanesEqualTheScalarPathOfEachPair) {
     const LinearSpringDashpot laws[2] = {LinearSpringDashpot::fromCollision(0.005, 0.88, 0.5).withFriction(0.5),

@@ -3,7 +3,8 @@
 // N spheres with diameters uniform in [0.8, 1.2] (density 6/pi, so a d = 1 sphere has mass 1)
 // start on a loose cubic lattice with small random velocities in a box of four side walls
 // and a floor, and settle under gravity g = 1. The linear spring-dashpot law has tc = 0.005 and
-// e = 0.5 for two d = 1 spheres, kt = 2/7 kn and sliding friction 0.5. The .ene file shows the
+// e = 0.5 for two d = 1 spheres, kt = 2/7 kn and sliding friction --friction (0.5; 0: a
+// frictionless packing, which runs the contacts without their tangential part). The .ene file shows the
 // kinetic energy decaying to rest; ParaView shows the .pvd file.
 #include <cmath>
 #include <random>
@@ -16,17 +17,20 @@ class SettlingPacking : public Simulation {
 public:
     int particleCount = 2000;
     double width = 10;  // of the square box, in mean diameters
+    double friction = 0.5;
 
     SettlingPacking() {
         run().addFlag("particles", "number of spheres", particleCount);
         run().addFlag("width", "width of the square box", width);
+        run().addFlag("friction", "sliding friction of every contact, the walls' included", friction);
     }
 
     void setupInitialConditions() override {
         require(particleCount > 0, "--particles must be positive");
         require(width >= 2, "--width must be at least 2");
+        require(friction >= 0, "--friction must not be negative, got " + str(friction));
         const double unitMass = 1;  // collision parameters for two d = 1 spheres
-        auto law = LinearSpringDashpot::fromCollision(0.005, 0.5, unitMass / 2).withFriction(0.5);
+        auto law = LinearSpringDashpot::fromCollision(0.005, 0.5, unitMass / 2).withFriction(friction);
         const auto grains = scene().addSpecies("grains", 6 / pi, law);
 
         scene().setGravity(Vec3(0, 0, -1));

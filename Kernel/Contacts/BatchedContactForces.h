@@ -14,14 +14,23 @@ template <class Law>
 void ContactForceLoopInLanes<Law>::flush(PairList& list) {
     ContactBatch& b = batch_;
     if (b.count == 0) return;
-    b.gather(p_, previousForce_, list.history);
-    b.template compute<Law>(dt_);
+    const bool extras = perPair_ || records_ || list.history.hasWarmStarts();
+    const bool frictionless = !extras && b.template frictionless<Law>();
+    if (frictionless) {
+        b.template gather<true>(p_, previousForce_, list.history);
+        b.template compute<Law, true>(dt_);
+    } else {
+        b.gather(p_, previousForce_, list.history);
+        b.template compute<Law>(dt_);
+    }
     if (changed_)  // (interiorPairs)
         for (int l = 0; l < b.count; ++l) changed_->save(list.history, b.k[l]);
-    if (perPair_ || records_ || list.history.hasWarmStarts()) [[unlikely]]
+    if (extras) [[unlikely]]
         applyBatchWithExtras(list);
+    else if (frictionless)
+        applyBatch<true>(list);
     else
-        applyBatch(list);
+        applyBatch<false>(list);
     summary_.contacts += static_cast<std::size_t>(b.count);
     b.count = 0;
 }
@@ -32,6 +41,7 @@ void ContactForceLoopInLanes<Law>::flush(PairList& list) {
 // vectors' own accessors, and the rare cases' branches in the loop, it took 88 instructions
 // a contact in a profile of the settled bed, a fifth of the settled step's.
 template <class Law>
+template <bool frictionless>
 void ContactForceLoopInLanes<Law>::applyBatch(PairList& list) {
     const ContactBatch& b = batch_;
     double* __restrict force = p_.force[0].data();
@@ -43,8 +53,10 @@ void ContactForceLoopInLanes<Law>::applyBatch(PairList& list) {
         const std::size_t i = 3 * std::size_t{b.i[l]}, j = 3 * std::size_t{b.j[l]}, k = b.k[l];
         force[i] += b.fx[l], force[i + 1] += b.fy[l], force[i + 2] += b.fz[l];
         force[j] -= b.fx[l], force[j + 1] -= b.fy[l], force[j + 2] -= b.fz[l];
-        torque[i] += b.tix[l], torque[i + 1] += b.tiy[l], torque[i + 2] += b.tiz[l];
-        torque[j] += b.tjx[l], torque[j + 1] += b.tjy[l], torque[j + 2] += b.tjz[l];
+        if constexpr (!frictionless) {  // (no torques: ContactBatch::frictionless)
+            torque[i] += b.tix[l], torque[i + 1] += b.tiy[l], torque[i + 2] += b.tiz[l];
+            torque[j] += b.tjx[l], torque[j + 1] += b.tjy[l], torque[j + 2] += b.tjz[l];
+        }
         double* record = lasting + 4 * k;
         record[0] = b.sx[l], record[1] = b.sy[l], record[2] = b.sz[l], record[3] = b.fn[l];
         state[k] = ContactHistory::touching;

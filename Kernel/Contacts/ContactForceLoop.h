@@ -445,6 +445,7 @@ private:
     // flush, its common case applyBatch, and applyBatchWithExtras for pair forces kept, records or
     // warm starts.
     void flush(PairList& list);
+    template <bool frictionless>
     void applyBatch(PairList& list);
     [[gnu::noinline]] void applyBatchWithExtras(PairList& list);
 

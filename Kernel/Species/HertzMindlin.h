@@ -141,6 +141,9 @@ struct HertzMindlin {
     // stiffnesses and dampings of the present overlap, the dashpot on the implicit end-of-step
     // velocity as for the linear law, and the tangential step of a linear spring of stiffness St
     // and damping gt (LinearSpringDashpot::tangentialStep, Theory/ContactLaws.md eq. (14)).
+    static constexpr int laneFriction = 3;  // (mu's place among the lane's numbers)
+    // frictionless: as LinearSpringDashpot::lastingContactInLane.
+    template <bool frictionless = false>
     [[gnu::always_inline]] static void lastingContactInLane(LinearSpringDashpot::Lane& c, double dt, const double (&law)[5],
                                                             double effectiveRadius) {
         const double contactRadius = std::sqrt(effectiveRadius * c.overlap);  // sqrt(R* dn)
@@ -154,7 +157,10 @@ struct HertzMindlin {
         const double endVelocity = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
                                    (1 + halfStepOverMass * normalDamping);
         c.normalForce = elastic - normalDamping * endVelocity;
-        LinearSpringDashpot{0, 0, tangentialStiffness, tangentialDamping, law[3]}.tangentialStep(c, dt);
+        if constexpr (frictionless)
+            LinearSpringDashpot::withoutFriction(c);
+        else
+            LinearSpringDashpot{0, 0, tangentialStiffness, tangentialDamping, law[3]}.tangentialStep(c, dt);
     }
 
     // (Inlined always, so that each lane form compiles it into its own force loop; out of line the

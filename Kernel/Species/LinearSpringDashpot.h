@@ -181,9 +181,15 @@ struct LinearSpringDashpot {
     // Whether the batch takes this pair's lasting contacts (the lane step treats the ends).
     bool lastsInLanes() const { return treatContactEnds; }
     LaneLaw lane() const { return {normalStiffness, normalDamping, tangentialStiffness, tangentialDamping, friction}; }
+    static constexpr int laneFriction = 4;  // (mu's place among the lane's numbers)
+    // frictionless: for a law of friction 0, whose contacts have no tangential force and no
+    // spring (the Coulomb limit of eq. (14) at mu = 0 clears both: applyCoulombLimit), the step
+    // without them, to the same bits (ContactBatch::frictionless).
+    template <bool frictionless = false>
     [[gnu::always_inline]] static void lastingContactInLane(Lane& c, double dt, const double (&law)[5], double) {
-        LinearSpringDashpot{law[0], law[1], law[2], law[3], law[4]}.lastingContact(c, dt);
+        LinearSpringDashpot{law[0], law[1], law[2], law[3], law[4]}.lastingContact<frictionless>(c, dt);
     }
+    template <bool frictionless = false>
     [[gnu::always_inline]] void lastingContact(Lane& c, double dt) const {
         // Normal: the dashpot on the end-of-step speed, u(n+1) = u + dt/2 ((kn dn - gn
         // u(n+1))/m* + a).
@@ -192,8 +198,12 @@ struct LinearSpringDashpot {
         const double speedNow = (c.normalVelocity + 0.5 * dt * c.otherAcceleration + halfStepOverMass * elastic) /
                                 (1 + halfStepOverMass * normalDamping);
         c.normalForce = elastic - normalDamping * speedNow;
-        tangentialStep(c, dt);
+        if constexpr (frictionless)
+            withoutFriction(c);
+        else
+            tangentialStep(c, dt);
     }
+    [[gnu::always_inline]] static void withoutFriction(Lane& c) { c.fx = c.fy = c.fz = 0, c.sx = c.sy = c.sz = 0; }
     // Theory/ContactLaws.md eq. (7)-(8) as plain velocity Verlet evaluates it: the half-step
     // velocities, no treatment of the contact's ends (superquadric contacts, see plainForce;
     // batched in EllipsoidContactBatch.h).
