@@ -20,14 +20,12 @@ using namespace talus::TALUS_LANES;
 
 namespace {
 
-template <class Law>
-void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
-    std::mt19937_64 random(20261204);
-    std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
-    const std::size_t particles = 20;
+// `count` particles with random velocities, spins, radii and last forces (some fixed partners).
+ParticleStore randomParticles(std::mt19937_64& random, std::size_t count, std::vector<Vec3>& previousForce) {
+    std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6);
     ParticleStore p;
-    std::vector<Vec3> previousForce(particles);
-    for (std::size_t i = 0; i < particles; ++i) {
+    previousForce.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
         p.position.push_back(Vec3(unit(random), unit(random), unit(random)) * 10);
         p.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
         p.angularVelocity.push_back(Vec3(unit(random), unit(random), unit(random)) * 3);
@@ -37,6 +35,16 @@ void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
         p.invMass.push_back(i % 7 == 3 ? 0 : 1 / (1 + unit(random) * 0.5));  // some fixed partners
         previousForce[i] = Vec3(unit(random), unit(random), unit(random)) * 5;
     }
+    return p;
+}
+
+template <class Law>
+void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
+    std::mt19937_64 random(20261204);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0.001, 0.05);
+    const std::size_t particles = 20;
+    std::vector<Vec3> previousForce;
+    const ParticleStore p = randomParticles(random, particles, previousForce);
     const double dt = 1e-4;
     ContactHistories histories;
     histories.assign(ContactBatch::size + 5);
@@ -104,26 +112,16 @@ void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
 template <class Law>
 void expectFrictionlessPathEqualsTheFullPath(const Law (&laws)[2]) {
     std::mt19937_64 random(20261207);
-    std::uniform_real_distribution<double> unit(-1, 1), radiusOf(0.4, 0.6), fraction(0.001, 0.05);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0.001, 0.05);
     const std::size_t particles = 20;
-    ParticleStore p;
-    std::vector<Vec3> previousForce(particles);
-    for (std::size_t i = 0; i < particles; ++i) {
-        p.position.push_back(Vec3::Zero());
-        p.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
-        p.angularVelocity.push_back(Vec3(unit(random), unit(random), unit(random)) * 3);
-        p.force.push_back(Vec3::Zero());
-        p.torque.push_back(Vec3::Zero());
-        p.radius.push_back(radiusOf(random));
-        p.invMass.push_back(1 / (1 + unit(random) * 0.5));
-        previousForce[i] = Vec3(unit(random), unit(random), unit(random)) * 5;
-    }
+    std::vector<Vec3> previousForce;
+    const ParticleStore p = randomParticles(random, particles, previousForce);
     ContactHistories histories;
     histories.assign(ContactBatch::size);
     ContactBatch full;
     while (!full.full()) {
         const auto i = static_cast<std::uint32_t>(random() % particles), j = static_cast<std::uint32_t>(random() % particles);
-        if (i == j) continue;
+        if (i == j || (p.invMass[i] == 0 && p.invMass[j] == 0)) continue;  // (no pair of two fixed is listed)
         const Vec3 d = Vec3(unit(random), unit(random), unit(random)).normalized() * (p.radius[i] + p.radius[j]) *
                        (1 - fraction(random));
         const auto k = static_cast<std::size_t>(full.count);
