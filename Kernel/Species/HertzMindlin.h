@@ -133,6 +133,7 @@ struct HertzMindlin {
     // The batched force loop's numbers of the law (Contacts/ContactBatch.h): E*, G*, the damping
     // factor -2 sqrt(5/6) beta (its logarithm taken once, with the pair table), mu.
     bool lastsInLanes() const { return true; }
+    static constexpr int laneFriction = 3;  // (mu's place among the lane's numbers)
     LaneLaw lane() const {
         return {effectiveYoungsModulus, effectiveShearModulus, -2 * std::sqrt(5.0 / 6.0) * beta(), friction, 0};
     }
@@ -140,8 +141,7 @@ struct HertzMindlin {
     // One step of a contact from the lane's numbers (the scalar path and the batch alike): the
     // stiffnesses and dampings of the present overlap, the dashpot on the implicit end-of-step
     // velocity as for the linear law, and the tangential step of a linear spring of stiffness St
-    // and damping gt (LinearSpringDashpot::tangentialStep, Theory/ContactLaws.md eq. (14)).
-    static constexpr int laneFriction = 3;  // (mu's place among the lane's numbers)
+    // and damping gt (LinearSpringDashpot::tangentialStep, Theory/ContactLaws.md eq. (14));
     // frictionless: as LinearSpringDashpot::lastingContactInLane.
     template <bool frictionless = false>
     [[gnu::always_inline]] static void lastingContactInLane(LinearSpringDashpot::Lane& c, double dt, const double (&law)[5],
