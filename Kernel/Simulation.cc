@@ -110,6 +110,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     std::ostream& out = ranks_->rank() == 0 ? std::cout : quiet;
     Progress progress(out, state_.settings.progressInterval);
     progress.start(state_.settings.name, state_.time, state_.settings.endTime, steps, mobile);
+    double plannedEnd = state_.settings.endTime;
     const std::uint64_t every = saveEvery();
     std::size_t counted = state_.particles.size();
     const std::uint64_t buildsAtStart = state_.pairList.builds;
@@ -133,6 +134,14 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         if (sampling) sampleStep();
         for (const auto& b : scene_->boundaries()) b->afterStep(*this);
         actionsAfterTimeStep();
+        // A driver that learns when its run will end may bring the end time forward (a drum
+        // that stops after its turns): the loop and the progress lines end there.
+        if (state_.settings.endTime < plannedEnd) [[unlikely]] {
+            plannedEnd = state_.settings.endTime;
+            const double left = plannedEnd - state_.time;
+            steps = std::max<std::uint64_t>(k, k + (left > 0 ? static_cast<std::uint64_t>(std::llround(left / dt)) : 0));
+            progress.moveEnd(plannedEnd, steps);
+        }
         if (saving) {
             writeOutput();
             for (StepSampler* sampler : samplers_.attached) sampler->afterOutput(*this);

@@ -160,7 +160,7 @@ void RotatingDrum::actionsAfterTimeStep() {
     if (!clock_.every(sampleInterval)) return;
     checkBed();
     writeSample();
-    if (rotating() && turnsToRun > 0 && rotations() >= turnsToRun) run().finishAfterNextStep();
+    finishAfterTurns();
     if (rotating()) return;
     // Filling: wait for the bed to settle (at least the fall time from the insertion region,
     // 2 sqrt(4 r) from the top of the drum), then insert the rest or start turning.

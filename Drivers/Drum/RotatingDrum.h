@@ -24,6 +24,7 @@
 // --end-time.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -56,6 +57,14 @@ public:
     double rotationStartTime() const { return rotationStart_; }
     // Drum turns since the rotation started.
     double rotations() const { return rotating() ? angularSpeed() * (time() - rotationStart_) / (2 * pi) : 0.0; }
+    // --rotations N: the run ends a step after its first sample after N turns, and its end time is
+    // brought forward to a sample past that, so that the progress lines count to the end.
+    void finishAfterTurns() {
+        if (!rotating() || turnsToRun <= 0) return;
+        const double lastTurn = rotationStart_ + turnsToRun * 2 * pi / angularSpeed();
+        settings().endTime = std::min(settings().endTime, lastTurn + 2 * sampleInterval);
+        if (rotations() >= turnsToRun) run().finishAfterNextStep();
+    }
     int particlesToInsert() const { return targetCount_; }
     int particlesInserted() const { return insertedSpheres_ + insertedEllipsoids_; }
     // Of the particles to insert, the spheres (half of an odd count rounded up).

@@ -19,6 +19,9 @@ public:
     // interval has passed since the last line.
     void update(double time, std::uint64_t stepsDone, std::size_t particles);
     void finish(double time, std::uint64_t stepsDone);
+    // The run now ends at endTime after totalSteps steps in all (a driver brought its end time
+    // forward: Simulation::solve): the percentage and the ETA count to it.
+    void moveEnd(double endTime, std::uint64_t totalSteps) { endTime_ = endTime, totalSteps_ = totalSteps; }
 
     double particleStepsPerSecond() const;
     double particleSteps() const { return particleSteps_; }
