@@ -135,11 +135,12 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         for (const auto& b : scene_->boundaries()) b->afterStep(*this);
         actionsAfterTimeStep();
         // A driver that learns when its run will end may bring the end time forward (a drum
-        // that stops after its turns): the loop and the progress lines end there.
+        // that stops after its turns): the loop and the progress lines end there, after one more
+        // step at least (which saves the output as a run's last step does).
         if (state_.settings.endTime < plannedEnd) [[unlikely]] {
             plannedEnd = state_.settings.endTime;
             const double left = plannedEnd - state_.time;
-            steps = std::max<std::uint64_t>(k, k + (left > 0 ? static_cast<std::uint64_t>(std::llround(left / dt)) : 0));
+            steps = k + std::max<std::uint64_t>(1, left > 0 ? static_cast<std::uint64_t>(std::llround(left / dt)) : 0);
             progress.moveEnd(plannedEnd, steps);
         }
         if (saving) {

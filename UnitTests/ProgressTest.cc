@@ -62,4 +62,12 @@ TEST(Progress, ARunEndsAtTheEndTimeItsDriverBroughtForward) {
     };
     run.runFor(0.01, 100);
     EXPECT_NEAR(run.time(), 0.5, 1e-12);
+    // An end brought forward to a time already passed: one more step, the run's last.
+    test::SceneSimulation late;
+    late.setup = run.setup;
+    late.afterStep = [](test::SceneSimulation& s) {
+        if (s.time() >= 0.25) s.settings().endTime = std::min(s.settings().endTime, 0.1);
+    };
+    late.runFor(0.01, 100);
+    EXPECT_NEAR(late.time(), 0.26, 1e-12);
 }
