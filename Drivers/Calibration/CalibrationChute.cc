@@ -160,13 +160,13 @@ private:
         const double uChange = averaged > 0 ? changeAlongTrend(u) / velocity.mean : NAN;
         const FlowState state = decision_.state(); const char* name = flowStateName(state);
         writeFileOnce(*this, settings().name + ".result.csv", [&](std::ostream& out) {
-            out << "species,concentration,angle,length,width,baseDiameter,seed,particles,h,u,uError,uChange,F,alpha,mu,weightCarried,"
-                   "state,decidedAt,averagedFor\n"
-                << species << ',' << (species == "mixture" ? concentration : species == "small" ? 1 : 0) << ','
-                << angle << ',' << length << ',' << width << ',' << baseDiameter << ',' << seed << ',' << flowParticles() << ',' << height.mean
-                << ',' << velocity.mean << ',' << velocity.error << ',' << uChange << ',' << froude << ',' << profile.shapeFactor << ','
-                << mu << ',' << weightCarried << ',' << name << ',' << (state == FlowState::undecided ? time() : decision_.decidedAt())
-                << ',' << averaged << '\n';
+            out << "species,concentration,angle,length,width,baseDiameter,baseRoughness,seed,particles,h,u,uError,uChange,F,"
+                   "alpha,mu,weightCarried,state,decidedAt,averagedFor\n"
+                << species << ',' << (species == "mixture" ? concentration : species == "small" ? 1 : 0) << ',' << angle << ','
+                << length << ',' << width << ',' << baseDiameter << ',' << baseRoughness << ',' << seed << ',' << flowParticles()
+                << ',' << height.mean << ',' << velocity.mean << ',' << velocity.error << ',' << uChange << ',' << froude << ','
+                << profile.shapeFactor << ',' << mu << ',' << weightCarried << ',' << name << ','
+                << (state == FlowState::undecided ? time() : decision_.decidedAt()) << ',' << averaged << '\n';
         });
         say(*this, "%s: %s at t = %g: h = %.4g, u = %.4g, F = %.4g, alpha = %.4g, mu = %.4g (tan theta = %.4g), "
                    "weight carried by the base %.4f (NAME.result.csv)\n", settings().name.c_str(), name, time(),

@@ -38,11 +38,12 @@ struct ContactBatch {
     // spring and no torque, exactly (the full step clears them: Theory/ContactLaws.md eq. (14) at
     // mu = 0), and gather, compute and the application leave out the spins, the tangential
     // kinematics and the torques (`frictionless` template arguments), to the same bits.
+    // (Left at the first lane with friction: a frictional scene pays one comparison a batch.)
     template <class Law>
     bool frictionless() const {
-        bool none = true;
-        for (int l = 0; l < count; ++l) none &= law[Law::laneFriction][l] == 0;
-        return none;
+        for (int l = 0; l < count; ++l)
+            if (law[Law::laneFriction][l] != 0) return false;
+        return true;
     }
 
     // A lasting contact into the next lane: the pair, its separation and radii, its law. The

@@ -47,17 +47,19 @@ def read_result(out, name):
 
 
 def collect(out, names):
-    """All result lines of the finished points, in grid order, into OUT/results.csv."""
-    rows, header = [], None
+    """All result lines of the finished points, in grid order, into OUT/results.csv. The columns
+    are those of every point's file, in the order they first appear (a point run by an older
+    driver, or adopted from an older study, may lack a later column: it is left empty there)."""
+    rows, header = [], ["point"]
     for name in names:
         if not os.path.exists(result_path(out, name)):
             continue
         with open(result_path(out, name)) as f:
             reader = csv.DictReader(f)
             for row in reader:
-                header = ["point"] + reader.fieldnames
+                header += [c for c in reader.fieldnames if c not in header]
                 rows.append({"point": name, **row})
-    if header is None:
+    if not rows:
         return 0
     temporary = os.path.join(out, "results.csv.part")
     with open(temporary, "w", newline="") as f:
