@@ -191,6 +191,14 @@ public:
                     prefetchPartner(swept.particles[a + prefetchAhead].j);
                     list.history.prefetch(swept.pair[a + prefetchAhead]);
                 }
+                if constexpr (!plain) {
+                    // A scene with shapes: most picked pairs are superquadric pairs, whose gap
+                    // bound (in the history's record) and warm start are read at once.
+                    if (shapes_ && a + prefetchAhead < swept.count) {
+                        list.history.prefetch(swept.pair[a + prefetchAhead]);
+                        list.history.prefetchWarmStart(swept.pair[a + prefetchAhead]);
+                    }
+                }
                 pairContact<plain>(list, swept.pair[a], swept.particles[a], swept.separation(a));
             }
         }
@@ -331,8 +339,8 @@ private:
     [[gnu::always_inline]] bool shapedPairStaysApart(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j);
     bool isEllipsoidOrSphere(std::uint32_t i) const;
     bool isRound(std::uint32_t i) const;
-    EllipsoidContactBatch::Body batchBody(const std::vector<PlacedSuperquadric>& frames, std::uint32_t i,
-                                          const Vec3& centre, Mat3& sphere) const;
+    [[gnu::always_inline]] EllipsoidContactBatch::Body batchBody(const std::vector<PlacedSuperquadric>& frames,
+                                                                 std::uint32_t i, const Vec3& centre, Mat3& sphere) const;
     void flushEllipsoids(PairList& list);
     [[gnu::always_inline]] void laneContact(PairList& list, int l);
     void shapedPairWith(PairList& list, std::size_t k, std::uint32_t i, std::uint32_t j, const Vec3& xj,

@@ -61,7 +61,7 @@ public:
     [[gnu::always_inline]] ContactHistory get(std::size_t k) const {
         ContactHistory h{forces_[k].spring, forces_[k].lastNormalForce, states_[k]};
         if (withWarmStarts_) [[unlikely]]
-            h.warmPoint = warmPoints_[k], h.warmMultiplier = warmMultipliers_[k];
+            h.warmPoint = warmStarts_[k].point, h.warmMultiplier = warmStarts_[k].multiplier;
         if (withRollingSprings_) [[unlikely]]
             h.rollingSpring = rollingSprings_[k];
         return h;
@@ -70,7 +70,7 @@ public:
         forces_[k] = {h.spring, h.lastNormalForce};
         states_[k] = h.state;
         if (withWarmStarts_) [[unlikely]]
-            warmPoints_[k] = h.warmPoint, warmMultipliers_[k] = h.warmMultiplier;
+            warmStarts_[k] = {h.warmPoint, h.warmMultiplier};
         if (withRollingSprings_) [[unlikely]]
             rollingSprings_[k] = h.rollingSpring;
     }
@@ -83,13 +83,12 @@ public:
         forces_[k] = {spring, lastNormalForce};
         states_[k] = ContactHistory::touching;
         if (withWarmStarts_) [[likely]]
-            warmPoints_[k] = warmPoint, warmMultipliers_[k] = warmMultiplier;
+            warmStarts_[k] = {warmPoint, warmMultiplier};
     }
     // Keep the superquadric warm starts too (scenes with shapes; ParticleStore::enableShapes).
     void enableWarmStarts() {
         withWarmStarts_ = true;
-        warmPoints_.resize(size(), Vec3::Zero());
-        warmMultipliers_.resize(size(), 0);
+        warmStarts_.resize(size());
     }
     bool hasWarmStarts() const { return withWarmStarts_; }
     // Keep the rolling springs too (scenes whose law has rolling resistance; SpeciesTable::
@@ -103,6 +102,9 @@ public:
     double& gapBoundOf(std::size_t k) { return forces_[k].spring.x(); }  // (ContactHistory::gapBound)
     double lastNormalForceOf(std::size_t k) const { return forces_[k].lastNormalForce; }
     void prefetch(std::size_t k) const { __builtin_prefetch(forces_.data() + k); }  // (its spring and last force)
+    void prefetchWarmStart(std::size_t k) const {
+        if (withWarmStarts_) __builtin_prefetch(warmStarts_.data() + k);
+    }
     const Vec3& springOf(std::size_t k) const { return forces_[k].spring; }
     // The springs and last normal forces as plain numbers, four a pair (x, y, z, last force),
     // and the states: for the force loop's batches (ContactForces.h), which read them when they
@@ -120,20 +122,20 @@ public:
     void assign(std::size_t n) {
         assignWithRoom(forces_, n, Forces{});
         assignWithRoom(states_, n, ContactHistory::apart);
-        if (withWarmStarts_) assignWithRoom(warmPoints_, n, Vec3(Vec3::Zero())), assignWithRoom(warmMultipliers_, n, 0.0);
+        if (withWarmStarts_) assignWithRoom(warmStarts_, n, WarmStart{});
         if (withRollingSprings_) assignWithRoom(rollingSprings_, n, Vec3(Vec3::Zero()));
     }
     // Keeps the first n histories, or adds apart ones up to n.
     void resize(std::size_t n) {
         forces_.resize(n, {});
         states_.resize(n, ContactHistory::apart);
-        if (withWarmStarts_) warmPoints_.resize(n, Vec3::Zero()), warmMultipliers_.resize(n, 0);
+        if (withWarmStarts_) warmStarts_.resize(n);
         if (withRollingSprings_) rollingSprings_.resize(n, Vec3::Zero());
     }
     void push_back(const ContactHistory& h) {
         forces_.push_back({h.spring, h.lastNormalForce});
         states_.push_back(h.state);
-        if (withWarmStarts_) warmPoints_.push_back(h.warmPoint), warmMultipliers_.push_back(h.warmMultiplier);
+        if (withWarmStarts_) warmStarts_.push_back({h.warmPoint, h.warmMultiplier});
         if (withRollingSprings_) rollingSprings_.push_back(h.rollingSpring);
     }
     // An empty list of the same kind (with warm starts and rolling springs if this one has them).
@@ -154,8 +156,13 @@ private:
         v.assign(n, value);
     }
     bool withWarmStarts_ = false;
-    std::vector<Vec3> warmPoints_;
-    std::vector<double> warmMultipliers_;
+    // A pair's warm start, its point and multiplier side by side: the force loop reads both for
+    // every superquadric pair it solves, and from two arrays that was two cache misses a pair.
+    struct alignas(32) WarmStart {  // (on a line of its own)
+        Vec3 point = Vec3::Zero();
+        double multiplier = 0;
+    };
+    std::vector<WarmStart> warmStarts_;
     bool withRollingSprings_ = false;
     std::vector<Vec3> rollingSprings_;
     struct Forces {

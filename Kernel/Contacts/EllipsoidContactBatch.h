@@ -9,11 +9,13 @@
 // The arithmetic is that of the scalar solve (SuperquadricContact.cc, TwoEllipsoids): the first
 // iteration of solveFor from the warm start, its full step, and its convergence test (or, a
 // warm start already at the solution, none); then the normal and the overlap from the values and
-// gradients at the solution. A lane that the scalar solve would take further (the full step does
-// not lower the residual, the test fails after one iteration, the bodies are found apart, or
-// anything is not finite) is marked, and the force loop gives that pair to the scalar path,
-// which starts again from the same warm start: every lane's answer is the scalar solve's, to
-// rounding. With the linear law the contact's step follows in lanes too (forceLanes).
+// gradients at the solution, or, the bodies apart, the lower bound of their gap. A lane that the
+// scalar solve would take further (the full step does not lower the residual, the test fails
+// after one iteration, or anything is not finite) is marked, and the force loop gives that pair
+// to the scalar path, which starts again from the same warm start: every lane's answer is the
+// scalar solve's, to rounding. With the linear law the contact's step follows in lanes too
+// (forceLanes). (Pairs whose bounding spheres are apart do not come here: the force loop leaves
+// them to the scalar path, which needs no solve for them.)
 #pragma once
 
 #include <algorithm>
@@ -39,11 +41,13 @@ struct EllipsoidContactBatch {
     double cix[size], ciy[size], ciz[size], cjx[size], cjy[size], cjz[size];
     double qi0[size], qi1[size], qi2[size], qi3[size], qi4[size], qi5[size];
     double qj0[size], qj1[size], qj2[size], qj3[size], qj4[size], qj5[size];
-    double x0[size], y0[size], z0[size], mu0[size], scale[size];
+    // radius), and each body's smallest semi-axis (for the gap bound of bodies apart).
+    double x0[size], y0[size], z0[size], mu0[size], scale[size], smallestI[size], smallestJ[size];
     // Out: done (1: the answer below is the scalar solve's; 0: give the pair to the scalar path),
-    // the contact point (Newton's) and multiplier, the unit normal from j to i, the overlap and the
-    // middle of the overlap.
-    double done[size], px[size], py[size], pz[size], mu[size];
+    // the contact point (Newton's) and multiplier, whether the bodies are apart; touching, the
+    // unit normal from j to i, the overlap and the middle of the overlap; apart, the lower bound of
+    // their gap (SuperquadricContact::gapBound).
+    double done[size], px[size], py[size], pz[size], mu[size], apart[size], gapBound[size];
     double nx[size], ny[size], nz[size], overlap[size], mx[size], my[size], mz[size];
 
     // The contact's step, for the linear law (forceLanes): in, the motion of both bodies, the
@@ -104,17 +108,18 @@ struct EllipsoidContactBatch {
         q.diagonal().setConstant(inverse * inverse);
         return q;
     }
-    // A body as the batch sees it: its centre, its quadric Q and its bounding radius.
+    // A body as the batch sees it: its centre, its quadric Q, its bounding radius and its
+    // smallest semi-axis.
     struct Body {
         const Vec3& centre;
         const Mat3& quadric;
-        double boundingRadius;
+        double boundingRadius, smallestSemiAxis;
     };
     // An ellipsoid's placed frame (at bodyI's own centre; j's image at centreJ).
     void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const PlacedSuperquadric& bodyI, const Vec3& centreJ,
              const PlacedSuperquadric& bodyJ, const SuperquadricContactPoint& start) {
-        add(pair, a, b, {bodyI.centre, bodyI.quadric, bodyI.shape->boundingRadius()},
-            {centreJ, bodyJ.quadric, bodyJ.shape->boundingRadius()}, start);
+        add(pair, a, b, {bodyI.centre, bodyI.quadric, bodyI.shape->boundingRadius(), bodyI.shape->semiAxes().minCoeff()},
+            {centreJ, bodyJ.quadric, bodyJ.shape->boundingRadius(), bodyJ.shape->semiAxes().minCoeff()}, start);
     }
     void add(std::size_t pair, std::uint32_t a, std::uint32_t b, const Body& bodyI, const Body& bodyJ,
              const SuperquadricContactPoint& start) {
@@ -127,6 +132,7 @@ struct EllipsoidContactBatch {
         qj0[l] = B(0, 0), qj1[l] = B(1, 1), qj2[l] = B(2, 2), qj3[l] = B(0, 1), qj4[l] = B(0, 2), qj5[l] = B(1, 2);
         x0[l] = start.point.x(), y0[l] = start.point.y(), z0[l] = start.point.z(), mu0[l] = start.multiplier;
         scale[l] = std::min(bodyI.boundingRadius, bodyJ.boundingRadius);
+        smallestI[l] = bodyI.smallestSemiAxis, smallestJ[l] = bodyJ.smallestSemiAxis;
     }
 
     // F = d.Q d - 1 and grad F = 2 Q d at x (TwoEllipsoids::at), Q symmetric (xx yy zz xy xz yz).
@@ -207,7 +213,12 @@ struct EllipsoidContactBatch {
                           atStart ? j0.gz : j1.gz};
             const double gradientLength = atStart ? length0 : length1;
             // Touching (Fi < 0): the normal, and the distances to both surfaces along the gradient
-            // of Fi.
+            // of Fi. Apart (Fi = Fj = t >= 0): each body scaled by sqrt(1 + t) about its centre
+            // touches the other's, so the gap is at least the growth of their smallest semi-axes
+            // (findContact, SuperquadricContact.cc).
+            const bool touching = I.value < 0;
+            const double grown = std::sqrt(1 + I.value) - 1;
+            const double gap = grown * smallestI[l] + grown * smallestJ[l];
             const double inverseLength = 1 / gradientLength;
             const double ux = I.gx * inverseLength, uy = I.gy * inverseLength, uz = I.gz * inverseLength;
             const double di = distance(Qi, I, I.gx, I.gy, I.gz, gradientLength),
@@ -217,10 +228,13 @@ struct EllipsoidContactBatch {
             nx[l] = -ux, ny[l] = -uy, nz[l] = -uz;
             overlap[l] = di + dj;
             mx[l] = x + half * ux, my[l] = y + half * uy, mz[l] = z + half * uz;
-            const double sum = di + dj + half * (ux + uy + uz) + mSolved;
-            const bool finite = sum - sum == 0;  // (false for an infinity or NaN; isfinite would not vectorise)
+            apart[l] = touching ? 0.0 : 1.0, gapBound[l] = gap;
+            // (false for an infinity or NaN; isfinite would not vectorise. The distances of bodies
+            // apart are not used, and may be NaN.)
+            const double sum = ux + uy + uz + mSolved + gap, distances = di + dj + half;
+            const bool finite = (sum - sum == 0) & (!touching | (distances - distances == 0));
             const bool solved = atStart | (regular & (next2 < residual2) & converged);
-            done[l] = (solved & (I.value < 0) & finite) ? 1.0 : 0.0;
+            done[l] = (solved & finite) ? 1.0 : 0.0;
         }
     }
 };

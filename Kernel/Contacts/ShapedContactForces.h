@@ -17,18 +17,23 @@ void ContactForceLoopInLanes<Law>::shapedPair(PairList& list, std::size_t k, std
                                        double dy, double dz) {
     const Vec3 xj = p_.position[i] - Vec3(dx, dy, dz);  // j's image next to i
     ContactHistory history = list.history.get(k);
-    // A lasting contact of an ellipsoid with an ellipsoid or a sphere: into the batch
-    // (EllipsoidContactBatch.h; laws without the effective radius, which would need the
-    // curvatures). A sphere is the ellipsoid Q = I / r^2 there, as the scalar path's sphere-shaped
-    // partner (ShapedContactGeometry.h, placed) is; two round bodies have the closed form.
+    // A warm-started pair (a lasting contact, or one apart since its last solve) of an ellipsoid
+    // with an ellipsoid or a sphere: into the batch (EllipsoidContactBatch.h; laws without the
+    // effective radius, which would need the curvatures). A sphere is the ellipsoid Q = I / r^2
+    // there, as the scalar path's sphere-shaped partner (ShapedContactGeometry.h, placed) is; two
+    // round bodies have the closed form. Bounding spheres apart need no solve (the scalar path).
     if constexpr (!Law::usesEffectiveRadius) {
         if (history.warmMultiplier > 0 && isEllipsoidOrSphere(i) && isEllipsoidOrSphere(j) && !(isRound(i) && isRound(j))) {
             const std::vector<PlacedSuperquadric>& frames = list.shapedFrameScratch;
             Mat3 sphereI, sphereJ;
-            ellipsoids_.add(k, i, j, batchBody(frames, i, p_.position[i], sphereI), batchBody(frames, j, xj, sphereJ),
-                            {p_.position[i] + history.warmPoint, history.warmMultiplier});
-            if (ellipsoids_.full()) flushEllipsoids(list);
-            return;
+            const EllipsoidContactBatch::Body bodyI = batchBody(frames, i, p_.position[i], sphereI),
+                                              bodyJ = batchBody(frames, j, xj, sphereJ);
+            const double reach = bodyI.boundingRadius + bodyJ.boundingRadius;
+            if ((xj - p_.position[i]).squaredNorm() < reach * reach) {  // (as findSuperquadricContact tests it)
+                ellipsoids_.add(k, i, j, bodyI, bodyJ, {p_.position[i] + history.warmPoint, history.warmMultiplier});
+                if (ellipsoids_.full()) flushEllipsoids(list);
+                return;
+            }
         }
     }
     shapedPairWith(list, k, i, j, xj, history,
@@ -70,18 +75,22 @@ bool ContactForceLoopInLanes<Law>::isRound(std::uint32_t i) const {
 }
 
 // Particle i (at `centre`: its own position or j's image) for the batch: an ellipsoid's placed
-// frame, or a plain sphere's quadric (kept in `sphere`) with its bounding radius r.
+// frame, or a plain sphere's quadric (kept in `sphere`) with its bounding radius and semi-axes r.
 template <class Law>
-EllipsoidContactBatch::Body ContactForceLoopInLanes<Law>::batchBody(const std::vector<PlacedSuperquadric>& frames,
+inline EllipsoidContactBatch::Body ContactForceLoopInLanes<Law>::batchBody(const std::vector<PlacedSuperquadric>& frames,
                                                                     std::uint32_t i, const Vec3& centre, Mat3& sphere) const {
-    if (p_.shape[i] >= 0) return {centre, frames[i].quadric, frames[i].shape->boundingRadius()};
+    if (p_.shape[i] >= 0) {
+        const Superquadric& shape = *frames[i].shape;
+        return {centre, frames[i].quadric, shape.boundingRadius(), shape.semiAxes().minCoeff()};
+    }
     sphere = EllipsoidContactBatch::sphereQuadric(p_.radius[i]);
-    return {centre, sphere, p_.radius[i]};
+    return {centre, sphere, p_.radius[i], p_.radius[i]};
 }
 
-// The batched lasting ellipsoid contacts: a lane the batch could not finish goes to the
-// scalar path, from the same warm start. With the linear law the finished lanes' contact
-// step is batched too, except on output steps, where the scalar path records each contact.
+// The batched warm-started ellipsoid pairs: a lane the batch could not finish goes to the
+// scalar path, from the same warm start; a lane found apart keeps its solution and gap bound.
+// With the linear law the finished lanes' contact step is batched too, except on output steps,
+// where the scalar path records each contact.
 template <class Law>
 void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
     EllipsoidContactBatch& b = ellipsoids_;
@@ -107,6 +116,12 @@ void ContactForceLoopInLanes<Law>::flushEllipsoids(PairList& list) {
             const ContactHistory history = list.history.get(b.k[l]);
             shapedPairWith(list, b.k[l], i, j, xj, history,
                            shapedPairGeometry(p_, list.shapedFrameScratch, i, j, xj, history, false, shapeSettings_));
+        } else if (b.apart[l] != 0) {  // (the lane's force, if computed, is not used)
+            ShapedContactGeometry g;
+            g.converged = true;
+            g.solution = {Vec3(b.px[l], b.py[l], b.pz[l]) - p_.position[i], b.mu[l]};
+            g.gapBound = b.gapBound[l];
+            shapedPairWith(list, b.k[l], i, j, xj, list.history.get(b.k[l]), g);
         } else if (forcesInLanes) {
             laneContact(list, l);
         } else {
