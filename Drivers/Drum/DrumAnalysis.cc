@@ -42,24 +42,29 @@ const char* whereTheSpheresAre(const MixingIndices& indices) {
 }
 
 double surfaceAngle(const ParticleStore& p, double binWidth, double centralFraction) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    std::vector<std::array<double, 2>> mobile;
     for (std::size_t i = 0; i < p.size(); ++i)
-        if (!p.fixed[i]) {
-            lo = std::min(lo, p.position[i].x());
-            hi = std::max(hi, p.position[i].x());
-        }
+        if (!p.fixed[i]) mobile.push_back({p.position[i].x(), p.position[i].z()});
+    return surfaceAngle(mobile, binWidth, centralFraction);
+}
+
+double surfaceAngle(std::span<const std::array<double, 2>> centres, double binWidth, double centralFraction) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& [x, z] : centres) {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+    }
     if (!(hi > lo)) return NAN;
     const double middle = 0.5 * (lo + hi), half = 0.5 * centralFraction * (hi - lo);
     const int bins = std::max(1, static_cast<int>(std::ceil(2 * half / binWidth)));
     const double width = 2 * half / bins;
     std::vector<double> top(static_cast<std::size_t>(bins), -std::numeric_limits<double>::infinity());
     std::vector<double> topX(top.size(), 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.fixed[i]) continue;
-        const double u = (p.position[i].x() - (middle - half)) / width;
+    for (const auto& [x, z] : centres) {
+        const double u = (x - (middle - half)) / width;
         if (u < 0 || u >= bins) continue;
         const std::size_t b = static_cast<std::size_t>(u);
-        if (p.position[i].z() > top[b]) top[b] = p.position[i].z(), topX[b] = p.position[i].x();
+        if (z > top[b]) top[b] = z, topX[b] = x;
     }
     // Least squares through the surface particles' centres (x, z).
     double n = 0, sx = 0, sz = 0, sxx = 0, sxz = 0;

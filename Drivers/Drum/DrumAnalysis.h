@@ -6,6 +6,9 @@
 // Both read only the mobile particles (the wall's fixed particles are not part of the bed).
 #pragma once
 
+#include <array>
+#include <span>
+
 #include <cstddef>
 
 #include "Fields/MixingIndex.h"
@@ -39,5 +42,9 @@ const char* whereTheSpheresAre(const MixingIndices& indices);
 // columns in the middle `centralFraction` of the bed's x-extent (near the drum wall the surface
 // bends into the wall); the angle is atan(b). NaN with fewer than three columns.
 double surfaceAngle(const ParticleStore& particles, double binWidth = 1, double centralFraction = 0.6);
+// The same from the centres (x, z) of the mobile particles alone (frames of a .data file:
+// talus-drum-angle).
+double surfaceAngle(std::span<const std::array<double, 2>> mobileCentres, double binWidth = 1,
+                    double centralFraction = 0.6);
 
 }  // namespace talus::drum
