@@ -77,16 +77,23 @@ void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool rep
             for (int r = 1; r < n; ++r) bounds.push_back(lo + (hi - lo) * r / n);
             continue;
         }
+        // The moving particles alone where there are any: a fixed particle (a chute's base, a drum's
+        // wall) is not integrated, and its contacts are also its moving partners', so counting it
+        // would give the rank with more of them less of the work (Documentation/Parallel.md, "Cells
+        // by particle count"). Counts of both kinds side by side, summed over the ranks together.
         constexpr int bins = 4096;
-        std::vector<double> count(bins, 0.0);
+        std::vector<double> count(2 * bins, 0.0);
         const double width = (hi - lo) / bins;
         for (std::size_t i = 0; i < p.owned(); ++i) {
             const int b = std::clamp(static_cast<int>((p.position[i][a] - lo) / width), 0, bins - 1);
-            count[b] += 1;
+            count[p.fixed[i] ? bins + b : b] += 1;
         }
-        if (!replicated) communicator_.allReduce(count.data(), bins, Communicator::Reduction::sum);
+        if (!replicated) communicator_.allReduce(count.data(), 2 * bins, Communicator::Reduction::sum);
         double total = 0;
-        for (double c : count) total += c;
+        for (int b = 0; b < bins; ++b) total += count[b];
+        if (total == 0)  // (only fixed particles: count them)
+            for (int b = 0; b < bins; ++b) total += count[b] = count[bins + b];
+        count.resize(bins);
         double below = 0;
         int b = 0;
         for (int r = 1; r < n; ++r) {

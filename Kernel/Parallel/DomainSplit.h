@@ -3,7 +3,7 @@
 // along its flow); each rank owns the particles in its cell of the domain, and holds as ghosts
 // copies of the particles of other ranks within the ghost width (the largest interaction
 // distance plus the list's reach) of its cell. The cell boundaries along each axis are placed
-// for equal particle counts along that axis.
+// for equal counts of moving particles along that axis (fixed ones only where nothing moves).
 //
 // The pair list is built over owned particles and ghosts and lasts as long as in a serial run:
 // between rebuilds a particle moves less than half the reach, so every pair that can touch is
@@ -47,7 +47,7 @@ public:
     void setGrid(const std::array<int, 3>& ranksPerAxis);
     const std::array<int, 3>& grid() const { return grid_; }
     // Places the cell boundaries along each split axis so that each layer of cells holds an equal
-    // share of the particles (a histogram along the axis; the same result on every rank,
+    // share of the moving particles (a histogram along the axis; the same result on every rank,
     // whatever the particles' order). replicated: every rank holds the whole scene (after setup
     // or a restart read), so nothing needs to be summed over ranks.
     void balance(const ParticleStore& particles, const Domain& domain, bool replicated);
