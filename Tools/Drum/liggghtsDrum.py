@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The drum of RotatingDrum in LIGGGHTS, for a side-by-side run (Drivers/Drum/liggghts/in.sphereDrum.liggghts;
 Documentation/Drums/RotatingDrum.md, "The angle of repose against LIGGGHTS").
 
@@ -13,43 +13,28 @@ Documentation/Drums/RotatingDrum.md, "The angle of repose against LIGGGHTS").
 Only spheres: an ellipsoid's frame line holds its bounding radius, which LIGGGHTS cannot take.
 """
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Plot"))
+from dataFrames import read_frame  # noqa: E402
 
 SPHERE_DENSITY = 6 / math.pi  # the driver's: a sphere of diameter 1 has mass 1
 WALL_SPECIES = 2              # the driver's species: spheres 0, ellipsoids 1, wall 2
+PROGRAM = "liggghtsDrum.py"
 
 
 def fail(message):
-    sys.exit(f"liggghtsDrum.py: {message}")
+    sys.exit(f"{PROGRAM}: {message}")
 
 
-def read_frame(path, time):
-    """The particles of the frame at `time` of a .data file: (box, [(x, y, z, vx, vy, vz, r, wx, wy, wz, species)])."""
-    with open(path) as f:
-        line_number = 0
-        while True:
-            header = f.readline()
-            line_number += 1
-            if not header:
-                fail(f"{path}: no frame at t = {time}")
-            fields = header.split()
-            if len(fields) != 8:
-                fail(f"{path}:{line_number}: a frame header has 8 numbers (N t xmin ymin zmin xmax ymax zmax), found {len(fields)}")
-            count, t = int(fields[0]), float(fields[1])
-            box = [float(v) for v in fields[2:]]
-            lines = [f.readline() for _ in range(count)]
-            if abs(t - time) > 1e-9 * max(1.0, abs(time)):
-                line_number += count
-                continue
-            particles = []
-            for k, line in enumerate(lines):
-                v = line.split()
-                if len(v) != 14:
-                    fail(f"{path}:{line_number + k + 1}: a particle line has 14 columns, found {len(v)}")
-                x, y, z, vx, vy, vz, r = (float(a) for a in v[:7])
-                wx, wy, wz = (float(a) for a in v[10:13])
-                particles.append((x, y, z, vx, vy, vz, r, wx, wy, wz, int(v[13])))
-            return box, particles
+def frame_at(path, time):
+    """The box and the particles (x, y, z, vx, vy, vz, r, wx, wy, wz, species) of the frame at `time`."""
+    found, rows, header = read_frame(path, time, PROGRAM)
+    if abs(found - time) > 1e-9 * max(1.0, abs(time)):
+        fail(f"{path}: no frame at t = {time:g} (the nearest is at t = {found:g})")
+    particles = [tuple(float(v) for v in r[:7]) + tuple(float(v) for v in r[10:13]) + (int(r[13]),) for r in rows]
+    return header[2:], particles
 
 
 def write_liggghts_data(box, particles, out):
@@ -60,14 +45,14 @@ def write_liggghts_data(box, particles, out):
         f.write(f"{len(particles)} atoms\n2 atom types\n\n")
         for axis, (lo, hi) in enumerate(zip(box[:3], box[3:])):
             name = "xyz"[axis]
-            f.write(f"{lo!r} {hi!r} {name}lo {name}hi\n")
+            f.write(f"{lo:.17g} {hi:.17g} {name}lo {name}hi\n")
         f.write("\nAtoms\n\n")
         for i, p in enumerate(particles, 1):
             kind = 2 if p[10] == WALL_SPECIES else 1
-            f.write(f"{i} {kind} {2 * p[6]!r} {SPHERE_DENSITY!r} {p[0]!r} {p[1]!r} {p[2]!r}\n")
+            f.write(f"{i} {kind} {2 * p[6]:.17g} {SPHERE_DENSITY:.17g} {p[0]:.17g} {p[1]:.17g} {p[2]:.17g}\n")
         f.write("\nVelocities\n\n")
         for i, p in enumerate(particles, 1):
-            f.write(f"{i} {p[3]!r} {p[4]!r} {p[5]!r} {p[7]!r} {p[8]!r} {p[9]!r}\n")
+            f.write(f"{i} {p[3]:.17g} {p[4]:.17g} {p[5]:.17g} {p[7]:.17g} {p[8]:.17g} {p[9]:.17g}\n")
 
 
 def convert_dump(path, t0, dt, out):
@@ -89,7 +74,7 @@ def convert_dump(path, t0, dt, out):
             rows = sorted((lines[k + 9 + a].split() for a in range(count)), key=lambda r: int(r[0]))
             lo = [b[0] for b in bounds]
             hi = [b[1] for b in bounds]
-            o.write(f"{count} {t0 + step * dt!r} {' '.join(lo)} {' '.join(hi)}\n")
+            o.write(f"{count} {t0 + step * dt:.17g} {' '.join(lo)} {' '.join(hi)}\n")
             for r in rows:
                 species = WALL_SPECIES if r[1] == "2" else 0
                 o.write(f"{r[3]} {r[4]} {r[5]} {r[6]} {r[7]} {r[8]} {r[2]} 0 0 0 0 0 0 {species}\n")
@@ -100,7 +85,7 @@ def convert_dump(path, t0, dt, out):
 
 def main(argv):
     if len(argv) == 5 and argv[1] == "data":
-        box, particles = read_frame(argv[2], float(argv[3]))
+        box, particles = frame_at(argv[2], float(argv[3]))
         write_liggghts_data(box, particles, argv[4])
     elif len(argv) == 6 and argv[1] == "dump":
         convert_dump(argv[2], float(argv[3]), float(argv[4]), argv[5])

@@ -9,13 +9,19 @@ the drum).
                         [--csv profile.csv] [--wall-species 2] [--half-width 1] [--bin 0.5]
 """
 import argparse
+import os
 import sys
 
 import numpy as np
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Plot"))
+from dataFrames import frames, rows_of  # noqa: E402
+
+PROGRAM = "plotDrumComparison.py"
 
 
 def read_angles(path):
@@ -23,34 +29,24 @@ def read_angles(path):
     return np.array([[float(t), float(a)] for t, a in rows])
 
 
-def velocity_profile(path, start, wall, half_width, width, edges):
+def velocity_profile(path, start, wall, half_width, edges):
     """Sum of vx and count per z bin over the mobile particles with |x| < half_width, frames t >= start."""
     sums = np.zeros(len(edges) - 1)
     counts = np.zeros(len(edges) - 1)
-    frames = 0
-    with open(path) as f:
-        while True:
-            header = f.readline()
-            if not header:
-                break
-            fields = header.split()
-            if len(fields) != 8:
-                sys.exit(f"plotDrumComparison.py: {path}: a frame header has 8 numbers, found '{header.strip()}'")
-            n, t = int(fields[0]), float(fields[1])
-            lines = [f.readline() for _ in range(n)]
-            if t < start:
-                continue
-            data = np.array([line.split() for line in lines], dtype=float)
-            keep = (data[:, 13] != wall) & (np.abs(data[:, 0]) < half_width)
-            z, vx = data[keep, 2], data[keep, 3]
-            index = np.digitize(z, edges) - 1
-            ok = (index >= 0) & (index < len(sums))
-            np.add.at(sums, index[ok], vx[ok])
-            np.add.at(counts, index[ok], 1)
-            frames += 1
-    if frames == 0:
-        sys.exit(f"plotDrumComparison.py: {path}: no frame at or after t = {start}")
-    return sums, counts, frames
+    frames_used = 0
+    for time, lines, _ in frames(path, PROGRAM):
+        if time < start:
+            continue
+        data = rows_of(path, time, lines, PROGRAM)
+        keep = (data[:, 13] != wall) & (np.abs(data[:, 0]) < half_width)
+        index = np.digitize(data[keep, 2], edges) - 1
+        ok = (index >= 0) & (index < len(sums))
+        np.add.at(sums, index[ok], data[keep, 3][ok])
+        np.add.at(counts, index[ok], 1)
+        frames_used += 1
+    if frames_used == 0:
+        sys.exit(f"{PROGRAM}: {path}: no frame at or after t = {start}")
+    return sums, counts, frames_used
 
 
 def main():
@@ -77,12 +73,12 @@ def main():
         late = series[series[:, 0] >= a.start, 1]
         left.plot(series[:, 0], series[:, 1], lw=0.8,
                   label=f"{name}: {np.nanmean(late):.2f} +- {np.nanstd(late, ddof=1):.2f} deg from t = {a.start:g}")
-        sums, counts, frames = velocity_profile(data_file, a.start, a.wall_species, a.half_width, a.bin, edges)
+        sums, counts, used = velocity_profile(data_file, a.start, a.wall_species, a.half_width, edges)
         mean = np.where(counts > 0, sums / np.maximum(counts, 1), np.nan)
-        right.plot(mean, centres, marker=".", lw=0.8, label=f"{name} ({frames} frames)")
+        right.plot(mean, centres, marker=".", lw=0.8, label=f"{name} ({used} frames)")
         table.append(mean)
         print(f"{name}: angle {np.nanmean(late):.3f} +- {np.nanstd(late, ddof=1):.3f} (s.d. of {len(late)} frames); "
-              f"profile from {frames} frames")
+              f"profile from {used} frames")
     left.axvline(a.start, color="grey", lw=0.5)
     left.set_xlabel("t")
     left.set_ylabel("angle of repose (degrees)")
