@@ -36,12 +36,11 @@ struct EllipsoidContactBatch {
     int count = 0;
     std::uint32_t k[size], i[size], j[size];
     // In: centres (j's periodic image), quadrics Q (symmetric: xx, yy, zz, xy, xz, yz), the warm
-    // start (point, multiplier) and the length that scales the residual (the smaller bounding
-    // radius).
+    // start (point, multiplier), the length that scales the residual (the smaller bounding
+    // radius) and each body's smallest semi-axis (for the gap bound of bodies apart).
     double cix[size], ciy[size], ciz[size], cjx[size], cjy[size], cjz[size];
     double qi0[size], qi1[size], qi2[size], qi3[size], qi4[size], qi5[size];
     double qj0[size], qj1[size], qj2[size], qj3[size], qj4[size], qj5[size];
-    // radius), and each body's smallest semi-axis (for the gap bound of bodies apart).
     double x0[size], y0[size], z0[size], mu0[size], scale[size], smallestI[size], smallestJ[size];
     // Out: done (1: the answer below is the scalar solve's; 0: give the pair to the scalar path),
     // the contact point (Newton's) and multiplier, whether the bodies are apart; touching, the
