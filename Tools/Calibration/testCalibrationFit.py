@@ -16,15 +16,9 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Studies"))
 import calibrationFit as cf  # noqa: E402
-
-failures = []
-
-
-def check(condition, message):
-    print(("ok    " if condition else "FAIL  ") + message)
-    if not condition:
-        failures.append(message)
+from checks import check, finish  # noqa: E402 (Tools/Studies, beside this folder)
 
 
 def synthetic_study(truth, d, angles, per_angle, seed):
@@ -187,6 +181,4 @@ for text, words in (("delta3=1", ["delta3", "delta1"]), ("A=big", ["A=big", "not
     except cf.FitError as error:
         check(all(w in str(error) for w in words), f"--hold {text}: refused saying {str(error)!r}")
 
-if failures:
-    sys.exit(f"calibration fit: {len(failures)} checks failed")
-print("calibration fit: all checks passed")
+finish("calibration fit")

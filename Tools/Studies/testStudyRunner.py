@@ -11,14 +11,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import studyRunner  # noqa: E402
-
-failures = []
-
-
-def check(condition, message):
-    print(("ok    " if condition else "FAIL  ") + message)
-    if not condition:
-        failures.append(message)
+from checks import check, finish  # noqa: E402
 
 
 def write_result(out, name, columns, values):
@@ -47,6 +40,4 @@ with tempfile.TemporaryDirectory() as out:
     check([r["roughness"] for r in rows] == ["", "0.25", ""], "a column a point lacks left empty")
     check(studyRunner.collect(out, ["missing"]) == 0, "no finished point: nothing collected")
 
-if failures:
-    sys.exit(f"study runner: {len(failures)} checks failed")
-print("study runner: all checks passed")
+finish("study runner")
