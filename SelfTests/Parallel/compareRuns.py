@@ -3,6 +3,9 @@
 particle: prints the largest position and velocity differences from the first file and checks
 them against a tolerance. Usage: compareRuns.py TOLERANCE REFERENCE.data OTHER.data...
 (TOLERANCE 0: the frames must be equal to the last digit.)
+compareRuns.py --parting TOLERANCE REFERENCE.data OTHER.data: every frame, for two runs of a
+chaotic flow that may part by round-off: the first frame where they differ at all must differ by
+at most TOLERANCE (a missed or extra contact would show at once, far above round-off).
 With .restart files (tolerance 0 only): the particles' whole states, 17 digits, by id, must be
 the same (Documentation/FileFormats/restart.md)."""
 import sys
@@ -37,6 +40,26 @@ def frames(path):
         sys.exit(f"{path}: no frames")
     return result
 
+
+def largest_difference(a, b):
+    """Of positions and velocities, the largest over the particles of two frames."""
+    return max(abs(x - y) for p, q in zip(a, b) for x, y in zip(p[0:6], q[0:6]))
+
+
+if sys.argv[1] == "--parting":
+    tolerance, reference, other = float(sys.argv[2]), frames(sys.argv[3]), frames(sys.argv[4])
+    if [len(f) for f in other] != [len(f) for f in reference]:
+        sys.exit(f"{sys.argv[4]}: frames of other sizes than {sys.argv[3]}'s")
+    first = None
+    for k, (a, b) in enumerate(zip(reference, other)):
+        worst = largest_difference(a, b)
+        print(f"frame {k}: largest difference of positions and velocities {worst:.3g}")
+        if worst > 0 and first is None:
+            first = (k, worst)
+    if first is not None and first[1] > tolerance:
+        sys.exit(f"the runs part at frame {first[0]} by {first[1]:.3g}, more than round-off ({tolerance:.3g})")
+    print("parted by round-off" if first else "equal in every frame")
+    sys.exit(0)
 
 tolerance = float(sys.argv[1])
 reference = frames(sys.argv[2])

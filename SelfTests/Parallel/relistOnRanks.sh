@@ -12,10 +12,11 @@
 # 0.1 time units, and by t = 21 it can reach 1e-2 (measured: first seen at t = 20.4 at 1e-13 in
 # velocity, 2.7e-2 at t = 21; in a sanitizer build once first seen at t = 21.6). A save on ranks
 # builds the list anew and rebalances, so both runs meet the same rebuilds.
-# Usage: relistOnRanks.sh MPIRUN MASERFEDCHUTE
+# Usage: relistOnRanks.sh MPIRUN MASERFEDCHUTE compareRuns.py
 set -euo pipefail
 mpirun=("$1" --oversubscribe -np 2)
 chute=$2
+compare="/usr/bin/python3 $3"
 scene=(--inflow-height 3 --maser-length 10 --width 3 --chute-length 60 --earliest-activation 1 --latest-activation 2
        --rebalance-interval 1 --vtu off)
 "${mpirun[@]}" "$chute" "${scene[@]}" --end-time 20 --output-interval 20 --name base --relist off > base.log
@@ -28,26 +29,5 @@ relisted=$(sed -n 's/.*the pairs of \([0-9]*\) added or moved particles relisted
 grep -q "relisted" off/run.log && { echo "the run with --relist off relisted"; exit 1; }
 created() { grep -o "created [0-9]* (seeded [0-9]* + crossed [0-9]*)" "$1"; }
 [ "$(created on/run.log)" = "$(created off/run.log)" ] || { echo "different crossings"; exit 1; }
-/usr/bin/python3 - off/base.data on/base.data <<'EOF'
-import sys
-def frames(path):
-    result, f = [], open(path)
-    while True:
-        header = f.readline()
-        if not header:
-            return result
-        n, t = int(header.split()[0]), float(header.split()[1])
-        result.append((t, [[float(v) for v in f.readline().split()[:6]] for _ in range(n)]))
-first = None
-for (t, a), (s, b) in zip(frames(sys.argv[1]), frames(sys.argv[2])):
-    if t != s or len(a) != len(b):
-        sys.exit(f"FAIL: frames differ in time or count: t = {t} ({len(a)}), {s} ({len(b)})")
-    worst = max(abs(x - y) for p, q in zip(a, b) for x, y in zip(p, q))
-    print(f"t = {t:g}: largest difference of positions and velocities {worst:.3g}")
-    if worst > 0 and first is None:
-        first = (t, worst)
-if first is not None and first[1] > 1e-9:
-    sys.exit(f"FAIL: the runs part at t = {first[0]:g} by {first[1]:.3g}, more than round-off")
-print("parted by round-off" if first else "equal in every frame")
-EOF
+$compare --parting 1e-9 off/base.data on/base.data
 echo "relisted on ranks: $relisted particles, $(created on/run.log), same trajectories"
