@@ -6,6 +6,7 @@
 // torques, the advanced spring, the normal force and the overlap. The lanes name particles
 // that recur in other lanes, in either role, and alternate between two laws, so a lane that
 // gathered another particle's or pair's numbers, or another lane's law, would differ.
+// Each lane is also computed as the last of a partial batch, to the same bits.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -67,8 +68,22 @@ void expectLanesEqualTheScalarPath(const Law (&laws)[2]) {
         batch.add(k, i, j, d, p.radius[i], p.radius[j], laws[lanes.size() % 2].lane());
         lanes.push_back({k, i, j, d});
     }
+    const ContactBatch given = batch;
     batch.gather(p, previousForce, histories);
     batch.compute<Law>(dt);
+    // Every lane also as the last of a partial batch: the same bits (a pair's answer may not
+    // depend on its companions; Documentation/Architecture.md, "Determinism").
+    for (int last = 0; last + 1 < ContactBatch::size; ++last) {
+        ContactBatch partial = given;
+        partial.count = last + 1;
+        partial.gather(p, previousForce, histories);
+        partial.compute<Law>(dt);
+        for (double(ContactBatch::*out)[ContactBatch::size] :
+             {&ContactBatch::fx, &ContactBatch::fy, &ContactBatch::fz, &ContactBatch::tix, &ContactBatch::tiy,
+              &ContactBatch::tiz, &ContactBatch::tjx, &ContactBatch::tjy, &ContactBatch::tjz, &ContactBatch::sx,
+              &ContactBatch::sy, &ContactBatch::sz, &ContactBatch::fn, &ContactBatch::overlap})
+            ASSERT_EQ((batch.*out)[last], (partial.*out)[last]) << "lane " << last << " of " << last + 1;
+    }
     double worst = 0;
     for (std::size_t l = 0; l < lanes.size(); ++l) {
         const auto [k, i, j, d] = lanes[l];

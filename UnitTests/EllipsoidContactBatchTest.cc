@@ -4,6 +4,7 @@
 // point, or apart, the gap bound), and every lane the scalar solve would take further (more than
 // one iteration) must be left to it. A sphere partner enters the batch as the force loop gives it, a plain sphere:
 // the quadric diag((1/r)^2) and the bounding radius r (Contacts/ShapedContactForces.h, batchBody).
+#include <cstring>
 #include <random>
 
 #include "LaneFormTest.h"
@@ -13,9 +14,64 @@
 using namespace talus;
 using namespace talus::TALUS_LANES;
 
+namespace {
+
+// A full batch of `kind`'s pairs as the force loop would give them after one step from their last
+// solution (with `cases` the configurations and `scalar` the scalar solve from the same warm
+// starts).
+void fillBatch(reference::Case kind, std::mt19937_64& random, EllipsoidContactBatch& batch,
+               std::vector<reference::Configuration>& cases, std::vector<SuperquadricContact>& scalar) {
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    cases.reserve(EllipsoidContactBatch::size);
+    while (!batch.full()) {
+        cases.push_back(reference::randomConfiguration(kind, random));
+        reference::Configuration& c = cases.back();
+        const SuperquadricContact last = findSuperquadricContact(c.i, c.j);
+        ASSERT_TRUE(last.converged);
+        if (last.solution.multiplier == 0) {  // (bounding spheres apart: nothing to warm-start)
+            cases.pop_back();
+            continue;
+        }
+        // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a
+        // settled packing: Newton's first step lands within the tolerance), or by up to
+        // 1e-4 and 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a
+        // third of the lanes, not at all, with the warm start of a contact at rest (solved
+        // again from its own solution: its residual is at round-off, and the solve takes no
+        // step).
+        const int motion = batch.count % 3;
+        SuperquadricContactPoint start = last.solution;
+        if (motion == 2) {
+            start = findSuperquadricContact(c.i, c.j, &last.solution).solution;
+        } else {
+            const double move = motion == 1 ? 1e-4 : 1e-7;
+            const Vec3 axis = Vec3(uniform(random), uniform(random), uniform(random)).normalized();
+            const Mat3 turn = Eigen::AngleAxisd(10 * move * uniform(random), axis).toRotationMatrix();
+            c.j = PlacedSuperquadric(&c.shapeJ, c.j.centre + move * Vec3(uniform(random), uniform(random), uniform(random)),
+                                     turn * c.j.rotation);
+        }
+        // (Bounding spheres apart: the force loop leaves the pair to the scalar path, which
+        // needs no solve for it.)
+        const double reach = c.shapeI.boundingRadius() + c.shapeJ.boundingRadius();
+        if ((c.j.centre - c.i.centre).squaredNorm() >= reach * reach) {
+            cases.pop_back();
+            continue;
+        }
+        if (kind == reference::Case::sphereOnEllipsoid) {
+            const double r = c.shapeI.a();
+            const Mat3 sphere = EllipsoidContactBatch::sphereQuadric(r);
+            batch.add(0, 0, 1, {c.i.centre, sphere, r, r},
+                      {c.j.centre, c.j.quadric, c.shapeJ.boundingRadius(), c.shapeJ.semiAxes().minCoeff()}, start);
+        } else {
+            batch.add(0, 0, 1, c.i, c.j.centre, c.j, start);
+        }
+        scalar.push_back(findSuperquadricContact(c.i, c.j, &start));
+    }
+}
+
+}  // namespace
+
 TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmStart) {
     std::mt19937_64 random(20261201);
-    std::uniform_real_distribution<double> uniform(-1, 1);
     const double tolerance = SuperquadricContactSettings{}.tolerance;
     for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::needles, reference::Case::sphereOnEllipsoid}) {
         int lanes = 0, done = 0, oneIteration = 0, atRest = 0, apart = 0, apartDone = 0;
@@ -24,50 +80,7 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
             EllipsoidContactBatch batch;
             std::vector<reference::Configuration> cases;
             std::vector<SuperquadricContact> scalar;
-            cases.reserve(EllipsoidContactBatch::size);
-            while (!batch.full()) {
-                cases.push_back(reference::randomConfiguration(kind, random));
-                reference::Configuration& c = cases.back();
-                const SuperquadricContact last = findSuperquadricContact(c.i, c.j);
-                ASSERT_TRUE(last.converged);
-                if (last.solution.multiplier == 0) {  // (bounding spheres apart: nothing to warm-start)
-                    cases.pop_back();
-                    continue;
-                }
-                // One step of a simulation: j moves by up to 1e-7 and turns by up to 1e-6 (a
-                // settled packing: Newton's first step lands within the tolerance), or by up to
-                // 1e-4 and 1e-3 (a fast flow: the scalar solve needs a second iteration), or, a
-                // third of the lanes, not at all, with the warm start of a contact at rest (solved
-                // again from its own solution: its residual is at round-off, and the solve takes no
-                // step).
-                const int motion = batch.count % 3;
-                SuperquadricContactPoint start = last.solution;
-                if (motion == 2) {
-                    start = findSuperquadricContact(c.i, c.j, &last.solution).solution;
-                } else {
-                    const double move = motion == 1 ? 1e-4 : 1e-7;
-                    const Vec3 axis = Vec3(uniform(random), uniform(random), uniform(random)).normalized();
-                    const Mat3 turn = Eigen::AngleAxisd(10 * move * uniform(random), axis).toRotationMatrix();
-                    c.j = PlacedSuperquadric(&c.shapeJ, c.j.centre + move * Vec3(uniform(random), uniform(random), uniform(random)),
-                                             turn * c.j.rotation);
-                }
-                // (Bounding spheres apart: the force loop leaves the pair to the scalar path, which
-                // needs no solve for it.)
-                const double reach = c.shapeI.boundingRadius() + c.shapeJ.boundingRadius();
-                if ((c.j.centre - c.i.centre).squaredNorm() >= reach * reach) {
-                    cases.pop_back();
-                    continue;
-                }
-                if (kind == reference::Case::sphereOnEllipsoid) {
-                    const double r = c.shapeI.a();
-                    const Mat3 sphere = EllipsoidContactBatch::sphereQuadric(r);
-                    batch.add(0, 0, 1, {c.i.centre, sphere, r, r},
-                              {c.j.centre, c.j.quadric, c.shapeJ.boundingRadius(), c.shapeJ.semiAxes().minCoeff()}, start);
-                } else {
-                    batch.add(0, 0, 1, c.i, c.j.centre, c.j, start);
-                }
-                scalar.push_back(findSuperquadricContact(c.i, c.j, &start));
-            }
+            fillBatch(kind, random, batch, cases, scalar);
             batch.compute(tolerance);
             for (int l = 0; l < batch.count; ++l) {
                 const SuperquadricContact& s = scalar[l];
@@ -118,4 +131,54 @@ TALUS_LANE_TEST(EllipsoidContactBatch, AgreesWithTheScalarSolveFromTheSameWarmSt
                     name(kind), lanes, done, apartDone, oneIteration, atRest, apart, worstPoint, worstNormal, worstOverlap, worstMiddle,
                     worstGap);
     }
+}
+
+// A pair's answer must not depend on where in a batch it sits, nor on how full the batch is: the
+// same pair across two ranks sits in different batches, and a restart gives both ranks the copy
+// of one (the lanes past the count are filled, so that no lane is left to the loop's scalar
+// remainder). Every lane of a full batch against the same lane as the last of a partial batch,
+// to the bit, through compute and forceLanes.
+TALUS_LANE_TEST(EllipsoidContactBatch, ALaneAnswersTheSameInAnyPlaceOfAnyBatch) {
+    std::mt19937_64 random(20261207);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    const double tolerance = SuperquadricContactSettings{}.tolerance, dt = 1e-4;
+    const LinearSpringDashpot law{2e5, 40, 2e5 * 2 / 7, 10, 0.5};
+    auto vector = [&](double size) { return Vec3(size * uniform(random), size * uniform(random), size * uniform(random)); };
+    int compared = 0;
+    for (reference::Case kind : {reference::Case::ellipsoids, reference::Case::needles, reference::Case::sphereOnEllipsoid}) {
+        for (int round = 0; round < 4; ++round) {
+            EllipsoidContactBatch full;
+            std::vector<reference::Configuration> cases;
+            std::vector<SuperquadricContact> scalar;
+            fillBatch(kind, random, full, cases, scalar);
+            for (int l = 0; l < full.count; ++l)
+                full.setMotion(l, vector(0.1), vector(1), vector(0.1), vector(1), vector(1e-4), l % 2 == 0, law);
+            const EllipsoidContactBatch given = full;
+            full.compute(tolerance);
+            full.forceLanes(dt);
+            for (int l = 0; l + 1 < EllipsoidContactBatch::size; ++l) {
+                EllipsoidContactBatch partial = given;
+                partial.count = l + 1;
+                partial.compute(tolerance);
+                partial.forceLanes(dt);
+                for (double(EllipsoidContactBatch::*out)[EllipsoidContactBatch::size] :
+                     {&EllipsoidContactBatch::done, &EllipsoidContactBatch::px, &EllipsoidContactBatch::py,
+                      &EllipsoidContactBatch::pz, &EllipsoidContactBatch::mu, &EllipsoidContactBatch::apart,
+                      &EllipsoidContactBatch::gapBound, &EllipsoidContactBatch::nx, &EllipsoidContactBatch::ny,
+                      &EllipsoidContactBatch::nz, &EllipsoidContactBatch::overlap, &EllipsoidContactBatch::mx,
+                      &EllipsoidContactBatch::my, &EllipsoidContactBatch::mz, &EllipsoidContactBatch::fx,
+                      &EllipsoidContactBatch::fy, &EllipsoidContactBatch::fz, &EllipsoidContactBatch::tix,
+                      &EllipsoidContactBatch::tiy, &EllipsoidContactBatch::tiz, &EllipsoidContactBatch::tjx,
+                      &EllipsoidContactBatch::tjy, &EllipsoidContactBatch::tjz, &EllipsoidContactBatch::fn,
+                      &EllipsoidContactBatch::sx, &EllipsoidContactBatch::sy, &EllipsoidContactBatch::sz}) {
+                    // (As bits: the distances of bodies apart may be NaN.)
+                    ASSERT_EQ(std::memcmp(&(full.*out)[l], &(partial.*out)[l], sizeof(double)), 0)
+                        << name(kind) << " lane " << l << " of " << l + 1 << ": " << (full.*out)[l] << " against "
+                        << (partial.*out)[l] << " in the full batch";
+                    ++compared;
+                }
+            }
+        }
+    }
+    EXPECT_GT(compared, 1000);
 }

@@ -58,6 +58,18 @@ struct EllipsoidContactBatch {
     double fx[size], fy[size], fz[size], tix[size], tiy[size], tiz[size], tjx[size], tjy[size], tjz[size], fn[size];
 
     bool full() const { return count == size; }
+
+    // The lanes past `count` made copies of lane 0, so that compute and forceLanes run all
+    // `size` lanes: a loop over a count the compiler cannot know ends in a scalar remainder,
+    // whose arithmetic (its contractions into fused multiply-adds) may round differently from
+    // the vector body's. A pair's answer would then depend on its place in the batch, and the
+    // two copies of a pair across ranks (each rank solves it for its own particle) could part,
+    // which a restart (it gives both ranks the same copy) would not repeat.
+    template <std::size_t n>
+    void fillLanes(double* const (&inputs)[n]) {
+        if (count == 0 || count == size) return;
+        for (double* lanes : inputs) std::fill(lanes + count, lanes + size, lanes[0]);
+    }
     LinearSpringDashpot law(int l) const { return {kn[l], gn[l], kt[l], gt[l], friction[l]}; }
 
     void setMotion(int l, const Vec3& vi, const Vec3& wi, const Vec3& vj, const Vec3& wj, const Vec3& spring,
@@ -74,7 +86,9 @@ struct EllipsoidContactBatch {
     // spring of a lasting contact turned into the new tangent plane (a new contact's is zero),
     // the law's plain step, the torques b x F.
     [[gnu::noinline]] void forceLanes(double dt) {
-        for (int l = 0; l < count; ++l) {
+        fillLanes({vix, viy, viz, wix, wiy, wiz, vjx, vjy, vjz, wjx, wjy, wjz, sx, sy, sz, touched, kn, gn, kt, gt,
+                   friction});
+        for (int l = 0; l < size; ++l) {
             LinearSpringDashpot::Lane c{};
             c.nx = nx[l], c.ny = ny[l], c.nz = nz[l], c.overlap = overlap[l];
             const double bix = mx[l] - cix[l], biy = my[l] - ciy[l], biz = mz[l] - ciz[l];
@@ -157,9 +171,10 @@ struct EllipsoidContactBatch {
 
     // One Newton iteration from the warm start and the geometry, for every lane.
     [[gnu::noinline]] void compute(double tolerance) {
-        const int n = count;
+        fillLanes({cix, ciy, ciz, cjx, cjy, cjz, qi0, qi1, qi2, qi3, qi4, qi5, qj0, qj1, qj2, qj3, qj4, qj5, x0, y0,
+                   z0, mu0, scale, smallestI, smallestJ});
         constexpr double infinity = std::numeric_limits<double>::infinity();
-        for (int l = 0; l < n; ++l) {
+        for (int l = 0; l < size; ++l) {
             const Symmetric Qi{qi0[l], qi1[l], qi2[l], qi3[l], qi4[l], qi5[l]};
             const Symmetric Qj{qj0[l], qj1[l], qj2[l], qj3[l], qj4[l], qj5[l]};
             const double s = scale[l], m = mu0[l];
