@@ -18,6 +18,7 @@
 #include "Parallel/Communicator.h"
 #include "Parallel/RankContext.h"
 #include "Run/ModelSummary.h"
+#include "Sampling/RankReport.h"
 #include "Particles/DriftPass.h"
 #include "Particles/SpaceFillingCurve.h"
 #include "Particles/VelocityVerlet.h"
@@ -179,6 +180,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         integrator_->report(*host_, out, state_.settings.name, steps);
     }
     lastRun_ = {steps, mobile, progress.wallSeconds()};
+    if (steps > 0 && ranks_->isSplit())  // (how the ranks shared the work: Sampling/RankReport.h)
+        out << state_.settings.name << ": " << describeRanks(*this) << std::endl;
     for (StepSampler* sampler : samplers_.attached) sampler->finishRun(*this);
     actionsAfterSolve();
 }

@@ -63,3 +63,19 @@ TEST(DomainSplit, BalanceHalvesFixedParticlesWhenNoneMoves) {
     for (int k = 0; k < 100; ++k) addParticle(p, 0.01 + 0.02 * k, true);
     EXPECT_NEAR(boundaryOf(p), 1, 0.02);
 }
+
+// A superquadric weighs as four spheres (DomainSplit::workOf): 80 moving spheres over x in (0, 8)
+// and 20 moving superquadrics over (8, 10), whose work equals the spheres' (80 = 20 x 4): the
+// boundary falls at x = 8, the spheres on one rank and the superquadrics on the other, where
+// counting particles would put it at x = 5.
+TEST(DomainSplit, BalanceWeighsASuperquadricAsFourSpheres) {
+    ParticleStore p;
+    for (int k = 0; k < 100; ++k) addParticle(p, 0.05 + 0.1 * k, false);
+    p.enableShapes();
+    for (int k = 80; k < 100; ++k) p.shape[static_cast<std::size_t>(k)] = 0;
+    const double boundary = boundaryOf(p);
+    EXPECT_NEAR(boundary, 8, 0.05);
+    int below = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) below += p.position[i].x() < boundary;
+    EXPECT_EQ(below, 80);
+}

@@ -58,6 +58,14 @@ void DomainSplit::setGrid(const std::array<int, 3>& ranksPerAxis) {
 // counts summed over ranks), then each interior boundary where the cumulative count reaches its
 // share, interpolated in its bin. Integer counts make the sum exact, so every rank gets the same
 // boundaries.
+// A particle's share of the work, in spheres: a superquadric's contacts cost several spheres'
+// (the exact contact's Newton solve; an aspect-2 ellipsoid in a flowing drum costs 3.9 spheres,
+// Documentation/Drums/RotatingDrum.md "Cost"). Whole numbers, so that the sums over the ranks
+// are exact.
+double DomainSplit::workOf(const ParticleStore& p, std::size_t i) {
+    return p.isShaped(i) ? 4.0 : 1.0;
+}
+
 void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool replicated) {
     for (int a = 0; a < 3; ++a) {
         const int n = grid_[a];
@@ -86,7 +94,7 @@ void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool rep
         const double width = (hi - lo) / bins;
         for (std::size_t i = 0; i < p.owned(); ++i) {
             const int b = std::clamp(static_cast<int>((p.position[i][a] - lo) / width), 0, bins - 1);
-            count[p.fixed[i] ? bins + b : b] += 1;
+            count[p.fixed[i] ? bins + b : b] += workOf(p, i);
         }
         if (!replicated) communicator_.allReduce(count.data(), 2 * bins, Communicator::Reduction::sum);
         double total = 0;

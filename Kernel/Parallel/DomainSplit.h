@@ -121,6 +121,7 @@ public:
     };
 
 private:
+    static double workOf(const ParticleStore& p, std::size_t i);
     int cellAlong(int axis, double x) const;
     std::array<int, 3> cellOf(int rank) const;
     int rankAt(int x, int y, int z) const { return x + grid_[0] * (y + grid_[1] * z); }
