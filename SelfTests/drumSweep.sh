@@ -3,14 +3,17 @@
 # two jobs; each run must stop at its first sample after turns + windows x window-turns
 # (RotatingDrum --rotations), and each result line's M and S must be the means over the windows
 # of the samples in them, recomputed here with awk from the run's .series; then the plot of S and
-# the angle of repose against R (plotDrumSweep.py) with its table.
-#   drumSweep.sh RotatingDrum runDrumSweep.py
+# the angle of repose against R (plotDrumSweep.py) with its table; and the indices of the
+# time-averaged fields (drumFieldIndices.py): each averages the frames of the run's .data whose
+# times lie in its windows (counted here with awk) and equals talus-cg's M and S of that average.
+#   drumSweep.sh RotatingDrum runDrumSweep.py talus-cg
 set -eu
 driver=$1
 sweep=$2
+cg=$3
 rm -rf sweep
 /usr/bin/python3 "$sweep" --driver "$driver" --out sweep --aspects 1,2 --seeds 3 --turns 0.02 --windows 2 \
-  --window-turns 0.005 -- --radius 4 --length 4 --particles 40 --sample-interval 0.1 > sweep.log 2>&1 \
+  --window-turns 0.005 --restart-interval 0.1 -- --radius 4 --length 4 --particles 40 --sample-interval 0.1 > sweep.log 2>&1 \
   || { cat sweep.log; echo "FAIL: the sweep failed"; exit 1; }
 cat sweep.log
 lines=$(wc -l < sweep/results.csv)
@@ -35,4 +38,24 @@ done
   || { cat plot.log; echo "FAIL: plotDrumSweep"; exit 1; }
 cat table.csv
 [ -s sweep.png ] && [ "$(wc -l < table.csv)" -eq 3 ] || { echo "FAIL: no plot, or not one table row per aspect ratio"; exit 1; }
+# The time-averaged fields: frames every 0.1 (the restart interval) in each run's windows.
+/usr/bin/python3 "$(dirname "$sweep")/drumFieldIndices.py" sweep --cg "$cg" --turns 0.02 --windows 2 \
+  --window-turns 0.005 > fields.log 2>&1 || { cat fields.log; echo "FAIL: drumFieldIndices"; exit 1; }
+cat fields.log
+for name in R1-s3 R2-s3; do
+  series=sweep/points/$name/$name.series
+  span=$(awk '!/^#/ && $2 >= 0.02 && $2 < 0.03 { if (first == "") first = $1; last = $1 } END { print first, last }' "$series")
+  frames=$(awk -v span="$span" 'BEGIN { split(span, s, " ") } NF == 8 && $2 + 0 >= s[1] - 1e-9 && $2 + 0 <= s[2] + 1e-9 { n++ }
+                                END { print n + 0 }' "sweep/points/$name/$name.data")
+  "$cg" "sweep/points/$name/$name" --coordinates XZ --time-average --time-min ${span% *} --time-max ${span#* } \
+    --fixed exclude -w 1 --stress off --mixing 0 -o direct.csv > direct.log 2>&1
+  direct=$(awk -F, '!/^#/ && $1 != "t" { print $2, $3 }' direct.mixing.csv)
+  found=$(awk -F, -v p="$name" '$1 == p { print $4, $7, $8 }' sweep/fields.csv)
+  awk -v f="$found" -v n="$frames" -v d="$direct" -v p="$name" 'BEGIN { split(f, a, " "); split(d, b, " ");
+      if (a[1] != n || n < 5 || (a[2] - b[1]) ^ 2 > 1e-14 || (a[3] - b[2]) ^ 2 > 1e-14) {
+        print "FAIL: " p ": frames, M, S = " f " in fields.csv; the windows hold " n " frames, talus-cg gives " d; exit 1 }
+      print p ": " n " frames, M and S as talus-cg gives them (" d ")" }'
+done
+/usr/bin/python3 "$(dirname "$sweep")/plotDrumSweep.py" sweep/results.csv -o sweep.png --fields sweep/fields.csv > plot.log 2>&1 \
+  || { cat plot.log; echo "FAIL: plotDrumSweep --fields"; exit 1; }
 echo "drum sweep ok"

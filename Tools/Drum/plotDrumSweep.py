@@ -3,13 +3,15 @@
 repose against the aspect ratio R, and prints the table (Documentation/Drums/RotatingDrum.md
 "The sweep").
 
-    plotDrumSweep.py DIR/results.csv -o sweep.png [--csv sweep-table.csv]
+    plotDrumSweep.py DIR/results.csv -o sweep.png [--csv sweep-table.csv] [--fields DIR/fields.csv]
 
 Per R, over its seeds: S is the mean of the seeds' S; its error bar the standard error, from the
 spread between seeds where there are several and the spread of the windows within each run:
 sqrt(var_seeds / k + mean(S_sd^2) / (windows k)) for k seeds (the first term left out for one
 seed). The window means of one run are correlated (half a turn apart), so the error bar of a
 single seed is a lower bound. S > 0: spheres at the periphery, ellipsoids at the core.
+With --fields (drumFieldIndices.py's fields.csv), S of the time-averaged fields too, per R the
+mean over its seeds, as open circles.
 """
 import argparse
 import csv
@@ -44,6 +46,7 @@ def main():
     parser.add_argument("results", help="the sweep's results.csv")
     parser.add_argument("-o", "--output", required=True, help="the plot (png)")
     parser.add_argument("--csv", help="also write the table per aspect ratio here")
+    parser.add_argument("--fields", help="drumFieldIndices.py's fields.csv: S of the time-averaged fields too")
     args = parser.parse_args()
     try:
         with open(args.results, newline="") as f:
@@ -69,6 +72,22 @@ def main():
     top.axhline(0, color="0.6", linewidth=0.8)
     top.errorbar([t[0] for t in s_table], [t[2] for t in s_table], yerr=[t[3] for t in s_table], marker="o",
                  capsize=3, color="tab:blue")
+    if args.fields:
+        try:
+            with open(args.fields, newline="") as f:
+                field_rows = list(csv.DictReader(f))
+        except OSError as e:
+            fail(f"{args.fields}: {e.strerror}")
+        if not field_rows or not {"aspect", "S_fields"} <= set(field_rows[0]):
+            fail(f"{args.fields}: no lines with the columns aspect, S_fields (a drumFieldIndices.py fields.csv)")
+        by_aspect = defaultdict(list)
+        for row in field_rows:
+            by_aspect[float(row["aspect"])].append(float(row["S_fields"]))
+        aspects = sorted(by_aspect)
+        top.plot(aspects, [sum(by_aspect[a]) / len(by_aspect[a]) for a in aspects], marker="o", markerfacecolor="none",
+                 linestyle="--", color="tab:blue", label="of the time-averaged fields")
+        top.plot([], [], marker="o", color="tab:blue", label="mean of the samples")
+        top.legend(loc="upper right", fontsize=8)
     top.set_ylabel("segregation index S")
     top.text(0.02, 0.95, "S > 0: ellipsoids at the core", transform=top.transAxes, va="top", fontsize=8)
     top.text(0.02, 0.05, "S < 0: ellipsoids at the periphery", transform=top.transAxes, va="bottom", fontsize=8)
