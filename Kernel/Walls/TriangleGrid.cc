@@ -76,8 +76,10 @@ std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3& centre, doubl
 
 void TriangleGrid::trianglesNear(const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const {
     found.clear();
-    require(isFinite(centre) && std::isfinite(radius) && radius >= 0,
-            "TriangleGrid: a query needs a finite centre and radius, got radius " + str(radius));
+    // (The message only when it is thrown: the build asks once per particle near a mesh, and
+    // formatting it every time was 2.7% of a drum's time.)
+    if (!(isFinite(centre) && std::isfinite(radius) && radius >= 0)) [[unlikely]]
+        throw Error("TriangleGrid: a query needs a finite centre and radius, got radius " + str(radius));
     const Vec3 lo = centre.array() - radius, hi = centre.array() + radius;
     auto from = cellOf(lo), to = cellOf(hi);
     for (int a = 0; a < 3; ++a) {
