@@ -4,8 +4,9 @@
 # (RotatingDrum --rotations), and each result line's M and S must be the means over the windows
 # of the samples in them, recomputed here with awk from the run's .series; then the plot of S and
 # the angle of repose against R (plotDrumSweep.py) with its table; and the indices of the
-# time-averaged fields (drumFieldIndices.py): each averages the frames of the run's .data whose
-# times lie in its windows (counted here with awk) and equals talus-cg's M and S of that average.
+# time-averaged fields of each window (drumFieldIndices.py): each window averages the frames of the
+# run's .data whose times lie in it (counted here with awk) and gives talus-cg's M and S of that
+# average; the point's S is the mean of its windows'.
 #   drumSweep.sh RotatingDrum runDrumSweep.py talus-cg
 set -eu
 driver=$1
@@ -44,17 +45,26 @@ cat table.csv
 cat fields.log
 for name in R1-s3 R2-s3; do
   series=sweep/points/$name/$name.series
-  span=$(awk '!/^#/ && $2 >= 0.02 && $2 < 0.03 { if (first == "") first = $1; last = $1 } END { print first, last }' "$series")
-  frames=$(awk -v span="$span" 'BEGIN { split(span, s, " ") } NF == 8 && $2 + 0 >= s[1] - 1e-9 && $2 + 0 <= s[2] + 1e-9 { n++ }
-                                END { print n + 0 }' "sweep/points/$name/$name.data")
-  "$cg" "sweep/points/$name/$name" --coordinates XZ --time-average --time-min ${span% *} --time-max ${span#* } \
-    --fixed exclude -w 1 --stress off --mixing 0 -o direct.csv > direct.log 2>&1
-  direct=$(awk -F, '!/^#/ && $1 != "t" { print $2, $3 }' direct.mixing.csv)
-  found=$(awk -F, -v p="$name" '$1 == p { print $4, $7, $8 }' sweep/fields.csv)
-  awk -v f="$found" -v n="$frames" -v d="$direct" -v p="$name" 'BEGIN { split(f, a, " "); split(d, b, " ");
-      if (a[1] != n || n < 5 || (a[2] - b[1]) ^ 2 > 1e-14 || (a[3] - b[2]) ^ 2 > 1e-14) {
-        print "FAIL: " p ": frames, M, S = " f " in fields.csv; the windows hold " n " frames, talus-cg gives " d; exit 1 }
-      print p ": " n " frames, M and S as talus-cg gives them (" d ")" }'
+  sum=0
+  for w in 1 2; do
+    # The window's first and last sample times, its frames, and talus-cg's M and S over them.
+    span=$(awk -v w=$w '!/^#/ { k = int(($2 - 0.02) / 0.005 + 1e-9) + 1; if ($2 >= 0.02 && k == w) { if (first == "") first = $1; last = $1 } }
+                        END { print first, last }' "$series")
+    frames=$(awk -v span="$span" 'BEGIN { split(span, s, " ") } NF == 8 && $2 + 0 >= s[1] - 1e-9 && $2 + 0 <= s[2] + 1e-9 { n++ }
+                                  END { print n + 0 }' "sweep/points/$name/$name.data")
+    "$cg" "sweep/points/$name/$name" --coordinates XZ --time-average --time-min ${span% *} --time-max ${span#* } \
+      --fixed exclude -w 1 --stress off --mixing 0 -o direct.csv > direct.log 2>&1
+    direct=$(awk -F, '!/^#/ && $1 != "t" { print $2, $3 }' direct.mixing.csv)
+    found=$(awk -F, -v p="$name" -v w=$w '$1 == p && $2 == w { print $5, $6, $7 }' sweep/fields-windows.csv)
+    awk -v f="$found" -v n="$frames" -v d="$direct" -v p="$name" -v w=$w 'BEGIN { split(f, a, " "); split(d, b, " ");
+        if (a[1] != n || n < 4 || (a[2] - b[1]) ^ 2 > 1e-14 || (a[3] - b[2]) ^ 2 > 1e-14) {
+          print "FAIL: " p " window " w ": frames, M, S = " f " in fields-windows.csv; the window holds " n " frames, talus-cg gives " d; exit 1 }
+        print p " window " w ": " n " frames, M and S as talus-cg gives them (" d ")" }'
+    sum=$(awk -v a="$sum" -v d="$direct" 'BEGIN { split(d, b, " "); printf "%.12g", a + b[2] }')
+  done
+  # The point's S: the mean of its windows'.
+  found=$(awk -F, -v p="$name" '$1 == p { print $8 }' sweep/fields.csv)
+  awk -v f="$found" -v s="$sum" -v p="$name" 'BEGIN { if ((f - s / 2) ^ 2 > 1e-14) { print "FAIL: " p ": S_fields " f ", the windows give " s / 2; exit 1 } }'
 done
 /usr/bin/python3 "$(dirname "$sweep")/plotDrumSweep.py" sweep/results.csv -o sweep.png --fields sweep/fields.csv > plot.log 2>&1 \
   || { cat plot.log; echo "FAIL: plotDrumSweep --fields"; exit 1; }

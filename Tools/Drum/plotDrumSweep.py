@@ -10,8 +10,8 @@ spread between seeds where there are several and the spread of the windows withi
 sqrt(var_seeds / k + mean(S_sd^2) / (windows k)) for k seeds (the first term left out for one
 seed). The window means of one run are correlated (half a turn apart), so the error bar of a
 single seed is a lower bound. S > 0: spheres at the periphery, ellipsoids at the core.
-With --fields (drumFieldIndices.py's fields.csv), S of the time-averaged fields too, per R the
-mean over its seeds, as open circles.
+With --fields (drumFieldIndices.py's fields.csv), S of the windows' time-averaged fields too, with
+error bars from the windows and seeds alike, as open circles.
 """
 import argparse
 import csv
@@ -78,14 +78,15 @@ def main():
                 field_rows = list(csv.DictReader(f))
         except OSError as e:
             fail(f"{args.fields}: {e.strerror}")
-        if not field_rows or not {"aspect", "S_fields"} <= set(field_rows[0]):
-            fail(f"{args.fields}: no lines with the columns aspect, S_fields (a drumFieldIndices.py fields.csv)")
-        by_aspect = defaultdict(list)
-        for row in field_rows:
-            by_aspect[float(row["aspect"])].append(float(row["S_fields"]))
-        aspects = sorted(by_aspect)
-        top.plot(aspects, [sum(by_aspect[a]) / len(by_aspect[a]) for a in aspects], marker="o", markerfacecolor="none",
-                 linestyle="--", color="tab:blue", label="of the time-averaged fields")
+        if not field_rows or not {"aspect", "windows", "S_fields", "S_fields_sd"} <= set(field_rows[0]):
+            fail(f"{args.fields}: no lines with the columns aspect, windows, S_fields, S_fields_sd "
+                 "(a drumFieldIndices.py fields.csv)")
+        for row in field_rows:  # (summarise's columns: the windows' spread as S_sd)
+            row["S"], row["S_sd"] = row["S_fields"], row.get("S_fields_sd", "nan")
+        fields_table = summarise(field_rows, "S")
+        top.errorbar([t[0] for t in fields_table], [t[2] for t in fields_table], yerr=[t[3] for t in fields_table],
+                     marker="o", markerfacecolor="none", linestyle="--", capsize=3, color="tab:blue",
+                     label="of the windows' time-averaged fields")
         top.plot([], [], marker="o", color="tab:blue", label="mean of the samples")
         top.legend(loc="upper right", fontsize=8)
     top.set_ylabel("segregation index S")
