@@ -54,10 +54,6 @@ void DomainSplit::setGrid(const std::array<int, 3>& ranksPerAxis) {
     for (auto& b : bounds_) b.clear();
 }
 
-// Along each split axis: a histogram of the coordinate over the particles' extent (4096 bins;
-// counts summed over ranks), then each interior boundary where the cumulative count reaches its
-// share, interpolated in its bin. Integer counts make the sum exact, so every rank gets the same
-// boundaries.
 // A particle's share of the work, in spheres: a superquadric's contacts cost several spheres'
 // (the exact contact's Newton solve; an aspect-2 ellipsoid in a flowing drum costs 3.9 spheres,
 // Documentation/Drums/RotatingDrum.md "Cost"). Whole numbers, so that the sums over the ranks
@@ -66,6 +62,10 @@ double DomainSplit::workOf(const ParticleStore& p, std::size_t i) {
     return p.isShaped(i) ? 4.0 : 1.0;
 }
 
+// Along each split axis: a histogram of the coordinate over the particles' extent (4096 bins;
+// each particle counted by its work, workOf, summed over ranks), then each interior boundary
+// where the cumulative count reaches its share, interpolated in its bin. Whole-number counts make
+// the sum exact, so every rank gets the same boundaries.
 void DomainSplit::balance(const ParticleStore& p, const Domain& domain, bool replicated) {
     for (int a = 0; a < 3; ++a) {
         const int n = grid_[a];

@@ -47,7 +47,8 @@ public:
     void setGrid(const std::array<int, 3>& ranksPerAxis);
     const std::array<int, 3>& grid() const { return grid_; }
     // Places the cell boundaries along each split axis so that each layer of cells holds an equal
-    // share of the moving particles (a histogram along the axis; the same result on every rank,
+    // share of the moving particles' work (a superquadric counts as four spheres; a histogram
+    // along the axis; the same result on every rank,
     // whatever the particles' order). replicated: every rank holds the whole scene (after setup
     // or a restart read), so nothing needs to be summed over ranks.
     void balance(const ParticleStore& particles, const Domain& domain, bool replicated);

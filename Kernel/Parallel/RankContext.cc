@@ -176,7 +176,8 @@ void RankContext::undoInteriorPairs(SimulationState& s, StepWorkspace& work,
     ++undoneOverlaps_;
 }
 
-// Equal particle counts (a function of the positions only, so runs stay repeatable).
+// Equal work per rank (particles counted by their work, a function of the positions and shapes
+// only, so runs stay repeatable: DomainSplit::balance).
 void RankContext::rebalance(SimulationState& s) {
     split_->balance(s.particles, s.domain, /*replicated*/ false);
     lastBalanceTime_ = s.time;
