@@ -73,7 +73,7 @@ def main():
         t, rows, _ = read_frame(name + ".data", None, "plotDrumMaps.py")
         top, bottom = axes[0, column], axes[1, column]
         draw_cross_section(top, rows, equal_volume_axes(aspect), t)
-        top.set_title(f"R = {aspect:g}, t = {t:g}: spheres orange, ellipsoids blue", fontsize=10)
+        top.set_title(f"R = {aspect:g}, t = {t:g}", fontsize=10)
         x, z, fraction = sphere_fraction_map(fields, args.least)
         image = bottom.pcolormesh(x, z, fraction.T, cmap=kinds, vmin=0.2, vmax=0.8, shading="nearest")
         bottom.set_xlim(top.get_xlim())
@@ -81,10 +81,12 @@ def main():
         bottom.set_aspect("equal")
         bottom.set_xlabel("x")
         bottom.set_ylabel("z")
-        bottom.set_title(f"R = {aspect:g}: sphere fraction (mean of the windows)", fontsize=10)
+        bottom.set_title(f"R = {aspect:g}: sphere fraction", fontsize=10)
         print(f"R = {aspect:g}: frame t = {t:g} of {len(rows)} particles; sphere fraction "
               f"{fraction.min():.4f} to {fraction.max():.4f} over {fraction.count()} filled cells")
     fig.colorbar(image, ax=axes[1, :].tolist(), shrink=0.8, label="volume fraction of spheres")
+    fig.suptitle("above: the last frame seen along the axis (spheres orange, ellipsoids blue, the wall grey); "
+                 "below: the sphere fraction averaged over the windows' frames", fontsize=10)
     fig.savefig(args.output, dpi=90)
     print(f"wrote {args.output} ({count} runs)")
 
