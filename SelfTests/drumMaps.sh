@@ -24,6 +24,13 @@ cat maps.log
 awk '/^R = 1:/ { if ($13 != "1.0000" || $15 != "1.0000" || $17 < 10) { print "FAIL: the spheres drum maps " $0; exit 1 } ones = 1 }
      /^R = 2:/ { if (!($13 >= 0 && $13 < 0.5 && $15 > 0.5 && $15 <= 1 && $17 >= 10)) { print "FAIL: the mixed drum maps " $0; exit 1 } mixed = 1 }
      END { if (!(ones && mixed)) { print "FAIL: a run not mapped"; exit 1 } }' maps.log
+# The map's cells are the file's: its filled cells and the place of its largest sphere fraction,
+# found here with awk in the csv (first the largest, as numpy's argmax), are the map's.
+expected=$(awk -F, '!/^#/ && $1 != "x" { if ($4 >= 0.1) { n++; if (!(best != "" && $20 <= best)) { best = $20; x = $1; z = $2 } } }
+                    END { printf "%d %.6g %.6g\n", n, x, z }' mixed.cg.csv)
+found=$(awk '/^R = 2:/ { gsub(",", "", $25); print $17, $25, $28 }' maps.log)
+[ "$expected" = "$found" ] || { echo "FAIL: the mixed drum's map has cells, largest at: $found; the file: $expected"; exit 1; }
+echo "the map's filled cells and largest sphere fraction where the file has them: $found"
 if /usr/bin/python3 "$maps" --run mixed/RotatingDrum mixed.cg.csv 0.5 -o bad.png > bad.log 2>&1; then
   echo "FAIL: aspect 0.5 accepted"; exit 1
 fi

@@ -21,11 +21,12 @@ and the last of those samples' times.
 """
 import argparse
 import csv
-import math
 import os
 import re
 import subprocess
 import sys
+
+from runDrumSweep import mean_and_sd, series_samples, window_of  # (beside this file)
 
 
 def fail(message):
@@ -35,32 +36,16 @@ def fail(message):
 def window_spans(series_path, turns, windows, window_turns):
     """Per window, (t_from, t_to): the first and last sample times inside it."""
     spans = [[None, None] for _ in range(windows)]
-    try:
-        with open(series_path) as f:
-            for number, line in enumerate(f, start=1):
-                if not line.strip() or line.startswith("#"):
-                    continue
-                words = line.split()
-                if len(words) != 6:
-                    fail(f"{series_path} line {number}: 6 columns expected, found {len(words)}")
-                w = math.floor((float(words[1]) - turns) / window_turns)
-                if 0 <= w < windows:
-                    t = float(words[0])
-                    spans[w][0] = t if spans[w][0] is None else spans[w][0]
-                    spans[w][1] = t
-    except OSError as e:
-        fail(f"{series_path}: {e.strerror}")
+    for t, rotations, _, _, _ in series_samples(series_path, "drumFieldIndices"):
+        w = window_of(rotations, turns, window_turns)
+        if 0 <= w < windows:
+            spans[w][0] = t if spans[w][0] is None else spans[w][0]
+            spans[w][1] = t
     for w, (first, _) in enumerate(spans):
         if first is None:
             fail(f"{series_path}: no sample in window {w + 1} (turns {turns + w * window_turns:g} to "
                  f"{turns + (w + 1) * window_turns:g})")
     return [tuple(span) for span in spans]
-
-
-def mean_and_sd(values):
-    mean = sum(values) / len(values)
-    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (len(values) - 1)) if len(values) > 1 else float("nan")
-    return mean, sd
 
 
 def field_indices(cg, folder, name, t_from, t_to, fields):

@@ -82,8 +82,10 @@ def main():
         bottom.set_xlabel("x")
         bottom.set_ylabel("z")
         bottom.set_title(f"R = {aspect:g}: sphere fraction", fontsize=10)
+        richest = np.unravel_index(np.ma.argmax(fraction), fraction.shape)
         print(f"R = {aspect:g}: frame t = {t:g} of {len(rows)} particles; sphere fraction "
-              f"{fraction.min():.4f} to {fraction.max():.4f} over {fraction.count()} filled cells")
+              f"{fraction.min():.4f} to {fraction.max():.4f} over {fraction.count()} filled cells, "
+              f"the largest at x = {x[richest[0]]:.6g}, z = {z[richest[1]]:.6g}")
     fig.colorbar(image, ax=axes[1, :].tolist(), shrink=0.8, label="volume fraction of spheres")
     fig.suptitle("above: the last frame seen along the axis (spheres orange, ellipsoids blue, the wall grey); "
                  "below: the sphere fraction averaged over the windows' frames", fontsize=10)

@@ -24,8 +24,10 @@ def fail(message):
     sys.exit(f"plotDrumSweep: {message}")
 
 
-def summarise(rows, key):
-    """Per aspect ratio: (R, seeds, mean, error) of column key, with key_sd the window spread."""
+def summarise(rows, key, spread=None):
+    """Per aspect ratio: (R, seeds, mean, error) of column key, with column spread (default
+    key_sd) the window spread."""
+    spread = spread or key + "_sd"
     by_aspect = defaultdict(list)
     for row in rows:
         by_aspect[float(row["aspect"])].append(row)
@@ -35,7 +37,7 @@ def summarise(rows, key):
         values = [float(r[key]) for r in runs]
         k = len(values)
         mean = sum(values) / k
-        within = sum(float(r[key + "_sd"]) ** 2 / int(r["windows"]) for r in runs if r[key + "_sd"] != "nan") / k
+        within = sum(float(r[spread]) ** 2 / int(r["windows"]) for r in runs if r[spread] != "nan") / k
         between = sum((v - mean) ** 2 for v in values) / (k - 1) if k > 1 else 0.0
         table.append((aspect, k, mean, math.sqrt(between / k + within / k)))
     return table
@@ -81,9 +83,7 @@ def main():
         if not field_rows or not {"aspect", "windows", "S_fields", "S_fields_sd"} <= set(field_rows[0]):
             fail(f"{args.fields}: no lines with the columns aspect, windows, S_fields, S_fields_sd "
                  "(a drumFieldIndices.py fields.csv)")
-        for row in field_rows:  # (summarise's columns: the windows' spread as S_sd)
-            row["S"], row["S_sd"] = row["S_fields"], row.get("S_fields_sd", "nan")
-        fields_table = summarise(field_rows, "S")
+        fields_table = summarise(field_rows, "S_fields")
         top.errorbar([t[0] for t in fields_table], [t[2] for t in fields_table], yerr=[t[3] for t in fields_table],
                      marker="o", markerfacecolor="none", linestyle="--", capsize=3, color="tab:blue",
                      label="of the windows' time-averaged fields")

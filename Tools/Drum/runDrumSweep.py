@@ -44,21 +44,34 @@ def point_name(aspect, seed):
     return f"R{aspect:g}-s{seed}"
 
 
+def series_samples(series_path, program="runDrumSweep"):
+    """The samples of a run's .series: (t, rotations, M, S, angle) per line."""
+    try:
+        with open(series_path) as f:
+            lines = [(number, line.split()) for number, line in enumerate(f, start=1)
+                     if line.strip() and not line.startswith("#")]
+    except OSError as e:
+        sys.exit(f"{program}: {series_path}: {e.strerror}")
+    samples = []
+    for number, words in lines:
+        if len(words) != 6:
+            sys.exit(f"{program}: {series_path} line {number}: 6 columns expected (t rotations kineticEnergy "
+                     f"mixingIndex segregationIndex reposeAngleDegrees), found {len(words)}")
+        samples.append((float(words[0]), float(words[1]), float(words[3]), float(words[4]), float(words[5])))
+    return samples
+
+
+def window_of(rotations, turns, window_turns):
+    """The window (0, 1, ...) a sample at `rotations` turns belongs to; negative before the first."""
+    return math.floor((rotations - turns) / window_turns)
+
+
 def window_means(series_path, turns, windows, window_turns):
     """Per window, the means of M, S and the angle over the samples with turns + w * window_turns
     <= rotations < turns + (w + 1) * window_turns, and the number of samples."""
-    try:
-        with open(series_path) as f:
-            lines = [line.split() for line in f if line.strip() and not line.startswith("#")]
-    except OSError as e:
-        sys.exit(f"{series_path}: {e.strerror}")
     sums = [[0.0, 0.0, 0.0, 0] for _ in range(windows)]
-    for number, words in enumerate(lines, start=2):
-        if len(words) != 6:
-            sys.exit(f"{series_path} line {number}: 6 columns expected (t rotations kineticEnergy mixingIndex "
-                     f"segregationIndex reposeAngleDegrees), found {len(words)}")
-        rotations, m, s, angle = float(words[1]), float(words[3]), float(words[4]), float(words[5])
-        w = math.floor((rotations - turns) / window_turns)
+    for _, rotations, m, s, angle in series_samples(series_path):
+        w = window_of(rotations, turns, window_turns)
         if 0 <= w < windows:
             sums[w][0] += m
             sums[w][1] += s
