@@ -116,6 +116,7 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
     std::size_t counted = state_.particles.size();
     const std::uint64_t buildsAtStart = state_.pairList.builds;
     const std::uint64_t relistedAtStart = state_.pairList.relistedParticles;
+    const std::uint64_t wallRelistingsAtStart = state_.pairList.wallRelistings;
     const std::uint64_t nearMakesAtStart = state_.pairList.near.makes;
     integrator_->startRun();
     if (steps > 0) integrator_->describeChoice(*host_, out, state_.settings.name);
@@ -173,6 +174,8 @@ void Simulation::solveOrThrow(const std::vector<std::string>& flags) {
         const double relisted = static_cast<double>(state_.pairList.relistedParticles - relistedAtStart);
         if (const double all = ranks_->sum(relisted); all > 0)
             out << "; the pairs of " << all << " added or moved particles relisted";
+        if (const std::uint64_t walls = state_.pairList.wallRelistings - wallRelistingsAtStart; walls > 0)
+            out << "; the moving meshes' triangles listed anew " << walls << " times";
         if (positionsChanged > 0 && state_.pairList.nearSkinFraction > 0)
             out << "; particles moved between steps (by hand) found at " << positionsChanged
                 << (positionsChanged == 1 ? " step" : " steps") << ": the near list made anew";
@@ -321,13 +324,18 @@ void Simulation::computeForces(bool recordContacts, OverlapCheck check, const Dr
         work.previousForce.swap(p.force);
         startForcesWithGravity(p, state_.gravity);
     }
-    if (rebuild)  // (the moving meshes' grids over where they are now)
+    // A moving mesh that travelled half the reach since its triangles were listed has them listed
+    // anew, the particles' pairs kept (on each rank alike: every rank moves the meshes alike).
+    const bool relistWalls = !rebuild && list.wallsNeedRelisting();
+    if (rebuild || relistWalls)  // (the moving meshes' grids over where they are now)
         for (const auto& mesh : state_.meshes)
             if (mesh->moves()) mesh->regrid();
     if (rebuild && ranks_->isSplit())
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep, carried);
     else if (rebuild)
         list.rebuild(p, state_.domain, state_.walls, work.grid, state_.settings.timeStep);
+    else if (relistWalls)
+        list.relistWalls(p, state_.walls);
     const bool idOrdered = state_.settings.idOrderedSums;
     if (rebuild && idOrdered) work.idOrderedForceSums.rebuild(list, p);
     if (rebuild) integrator_->afterListBuild(*host_);  // (the wave schedule of the new list)

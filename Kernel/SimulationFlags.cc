@@ -56,8 +56,8 @@ Simulation::Simulation()
     cl.add("cell-size-ratio", "R", "ratio of the cell sizes of successive HGrid levels",
            [&c](const std::string& v) { c.cellSizeRatio = CommandLine::toDouble("cell-size-ratio", v); });
     cl.add("relist", "on|off",
-           "list only the pairs of particles that boundaries add or move (on), or build the whole neighbour "
-           "list anew (off)",
+           "list only the pairs of particles that boundaries add or move, and only the triangles of a moving "
+           "mesh that has travelled (on), or build the whole neighbour list anew (off)",
            [&c](const std::string& v) { c.relist = CommandLine::toBool("relist", v); });
     cl.add("reorder", "on|off", "renew the particle order along a space-filling curve at list rebuilds",
            [&c](const std::string& v) { c.reorderParticles = CommandLine::toBool("reorder", v); });

@@ -145,6 +145,52 @@ TEST(MeshContact, ClosestPointAgreesWithDenseSampling) {
     EXPECT_GT(seen[2], 20);
 }
 
+// The nearest point from the geometry a mesh keeps (closestPointOnMeshTriangle: stored normals,
+// inward edge normals, edge directions) is closestPointOnTriangle's from the corners: the same
+// feature and corner or edge, and the same point to rounding, for points all around the triangles
+// of a cube turned off the axes (points within the tolerance of edges and corners included), on
+// the mesh as made and after it has turned. The triangles that share an edge find the very same
+// point on it, to the bit, and classify it alike.
+TEST(MeshContact, TheMeshsNearestPointIsTheCornersOne) {
+    TriangleMesh mesh(cube(3));
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    auto someVector = [&] { return Vec3(unit(random), unit(random), unit(random)); };
+    int seen[3] = {0, 0, 0}, sharedEdges = 0;
+    for (int turn = 0; turn < 2; ++turn) {
+        if (turn == 1) mesh.rotate(Vec3(0.3, 0.2, 0.1), Vec3(1, 2, 3).normalized(), 0.7);
+        for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+            const TriangleCorners c{mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
+            for (int q = 0; q < 40; ++q) {
+                // Around the triangle, or a hair (below the tolerance) off one of its corners or
+                // edges' midpoints.
+                const Vec3 x = q < 30 ? Vec3(c[q % 3] + 0.5 * someVector())
+                                      : Vec3((q % 2 ? c[q % 3] : 0.5 * (c[q % 3] + c[(q + 1) % 3])) +
+                                             0.3 * mesh.tolerance() * someVector() + 0.2 * mesh.normal(t));
+                const TrianglePoint fromCorners = closestPointOnTriangle(x, c, mesh.tolerance());
+                const TrianglePoint fromMesh = closestPointOnMeshTriangle(x, mesh, t);
+                ++seen[int(fromMesh.feature)];
+                ASSERT_EQ(int(fromMesh.feature), int(fromCorners.feature)) << "triangle " << t << " x " << x.transpose();
+                ASSERT_EQ(fromMesh.which, fromCorners.which) << "triangle " << t << " x " << x.transpose();
+                EXPECT_LT((fromMesh.point - fromCorners.point).norm(), 1e-14);
+                if (fromMesh.feature != MeshFeature::edge) continue;
+                const std::uint32_t e = mesh.triangleEdges(t)[fromMesh.which];
+                for (const std::uint32_t other : mesh.edgeTriangles(e)) {
+                    if (other == t) continue;
+                    const TrianglePoint there = closestPointOnMeshTriangle(x, mesh, other);
+                    if (there.feature != MeshFeature::edge || mesh.triangleEdges(other)[there.which] != e) continue;
+                    EXPECT_EQ(there.point, fromMesh.point);
+                    ++sharedEdges;
+                }
+            }
+        }
+    }
+    EXPECT_GT(seen[0], 200);
+    EXPECT_GT(seen[1], 200);
+    EXPECT_GT(seen[2], 200);
+    EXPECT_GT(sharedEdges, 100);
+}
+
 // The triangle (0,0,0) (1,0,0) (0,1,0): over its inside the face, beside each edge the edge (edge
 // 1, from (1,0,0) to (0,1,0), nearest to (2, 2) at (0.5, 0.5)), beyond each corner the corner.
 // Within the tolerance of an edge a point is on the edge, within it of a corner at the corner.

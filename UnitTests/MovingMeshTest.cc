@@ -43,7 +43,7 @@ struct Sphere {
 // One sphere and a floor at z = 0 following `motion`: a mesh of triangles or a plane wall.
 struct FloorRun {
     Vec3 position, velocity, angularVelocity;
-    std::uint64_t builds;
+    std::uint64_t builds, wallRelistings;
 };
 FloorRun runOnFloor(bool mesh, const PrescribedMotion& motion, const Vec3& start, const Vec3& gravity,
                     double endTime) {
@@ -63,7 +63,8 @@ FloorRun runOnFloor(bool mesh, const PrescribedMotion& motion, const Vec3& start
     s.settings().skin = 0.01;
     s.runFor(1e-4, endTime);
     const ParticleStore& p = s.scene().particles();
-    return {p.position[0], p.velocity[0], p.angularVelocity[0], s.state().pairList.builds};
+    return {p.position[0], p.velocity[0], p.angularVelocity[0], s.state().pairList.builds,
+            s.state().pairList.wallRelistings};
 }
 
 void expectSameRun(const FloorRun& onMesh, const FloorRun& onPlane, double tolerance) {
@@ -105,17 +106,23 @@ TEST(MovingMesh, ATurningFloorCarriesASphereAsATurningPlaneDoes) {
 
 // A floor of triangles rising at speed 2 towards a sphere that floats at rest 1.2 above it (no
 // gravity) hits it and throws it up: the sphere does not move, so only the mesh's travel can call
-// for the list build that lists their contact (PairList::meshTravel). The sphere leaves at the
-// speed the rising plane gives it.
+// for the relisting of the triangles that lists their contact (PairList::meshTravel,
+// relistWalls), with no build of the whole list before the hit. The sphere leaves at the speed the
+// rising plane gives it.
 TEST(MovingMesh, ARisingFloorHitsASphereItWasNotListedWith) {
     const PrescribedMotion rising{.velocity = Vec3(0, 0, 2)};
     const Vec3 start(0.4, -0.2, 1.5);
     const FloorRun onMesh = runOnFloor(true, rising, start, Vec3::Zero(), 1.2);
     const FloorRun onPlane = runOnFloor(false, rising, start, Vec3::Zero(), 1.2);
-    std::printf("[ measured ] the sphere leaves at %.6f; %llu list builds\n", onMesh.velocity.z(),
-                static_cast<unsigned long long>(onMesh.builds));
+    std::printf("[ measured ] the sphere leaves at %.6f; %llu list builds, the triangles listed anew %llu times\n",
+                onMesh.velocity.z(), static_cast<unsigned long long>(onMesh.builds),
+                static_cast<unsigned long long>(onMesh.wallRelistings));
     EXPECT_GT(onMesh.velocity.z(), 2.5);  // (2 (1 + e) for a wall of infinite mass: 3.2)
-    EXPECT_GT(onMesh.builds, 10u);
+    EXPECT_GT(onMesh.wallRelistings, 10u);
+    const FloorRun beforeTheHit = runOnFloor(true, rising, start, Vec3::Zero(), 0.55);
+    EXPECT_EQ(beforeTheHit.velocity.z(), 0);
+    EXPECT_EQ(beforeTheHit.builds, 1u);  // (the first)
+    EXPECT_GT(beforeTheHit.wallRelistings, 10u);
     expectSameRun(onMesh, onPlane, 1e-10);
 }
 

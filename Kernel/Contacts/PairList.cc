@@ -82,7 +82,9 @@ bool PairList::needsRebuild(const LargestMoves& moves, const ParticleStore& part
         throw Error("blow-up at t = " + str(time) + ": a position or velocity is not finite");
     }
     maxSpeed = std::sqrt(moves.speed2);
-    return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach || meshTravel >= 0.5 * reach;
+    // (With --relist off a moving mesh's travel calls for a whole build, not relistWalls.)
+    return !compare || std::sqrt(moves.displacement2) + maxSpeed * dt >= 0.5 * reach ||
+           (maxRelisted == 0 && meshTravel >= 0.5 * reach);
 }
 
 std::vector<CarriedHistory> PairList::carriedHistories(const ParticleStore& particles, bool firstOwned) const {
@@ -130,18 +132,7 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     listOneWayPairs(particles, domain);
     oneWayHistory.assign(oneWayPairs.size());
     restorePairs(oneWayPairs, 0, oneWayHistory, particles, lookup);
-    wallPairs.clear();
-    for (std::uint32_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].isTriangle()) {  // (a mesh's triangles, from its grid: then past them)
-            const MeshWalls& mesh = *walls[w].mesh;
-            for (std::uint32_t i = 0; i < owned; ++i)
-                addMeshWallCandidates(wallPairs, particles, walls, mesh, i, particles.position[i], reach);
-            w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
-            continue;
-        }
-        for (std::uint32_t i = 0; i < owned; ++i)
-            if (isWallCandidate(particles, walls[w], i, particles.position[i], reach)) wallPairs.push_back({i, w});
-    }
+    listWallPairs(particles, particles.position, walls);
     wallHistory.assign(wallPairs.size());
     restoreWallPairs(wallPairs, 0, wallHistory, particles, lookup);
     noted_.clear();
@@ -150,6 +141,34 @@ void PairList::rebuild(const ParticleStore& particles, const Domain& domain, con
     meshTravel = 0;
     valid = true;
     ++builds;
+}
+
+void PairList::listWallPairs(const ParticleStore& particles, const std::vector<Vec3>& at,
+                             const std::vector<Wall>& walls) {
+    const auto owned = static_cast<std::uint32_t>(particles.owned());
+    wallPairs.clear();
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+        if (walls[w].isTriangle()) {  // (a mesh's triangles, from its grid: then past them)
+            const MeshWalls& mesh = *walls[w].mesh;
+            for (std::uint32_t i = 0; i < owned; ++i) addMeshWallCandidates(wallPairs, particles, walls, mesh, i, at[i], reach);
+            w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
+            continue;
+        }
+        for (std::uint32_t i = 0; i < owned; ++i)
+            if (isWallCandidate(particles, walls[w], i, at[i], reach)) wallPairs.push_back({i, w});
+    }
+}
+
+void PairList::relistWalls(const ParticleStore& particles, const std::vector<Wall>& walls) {
+    require(comparable(particles), "PairList::relistWalls: the list has no reference positions to list from");
+    std::vector<CarriedHistory>& carried = carried_;
+    carried.clear();
+    carryWallPairs(wallPairs, wallHistory, particles, [](const WallCandidate&) { return true; }, carried);
+    listWallPairs(particles, referencePosition, walls);
+    wallHistory.assign(wallPairs.size());
+    restoreWallPairs(wallPairs, 0, wallHistory, particles, CarriedLookup(carried));
+    meshTravel = 0;
+    ++wallRelistings;  // (not an edit: the pairs, and a near list made of them, stay)
 }
 
 void PairList::reorderPairs(const std::vector<std::uint32_t>& order) {

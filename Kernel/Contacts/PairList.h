@@ -111,11 +111,22 @@ public:
     double reach = 0;  // skin + 2 vmax dt at the last build
     double reachOfNextBuild(double dt) const { return skin + 2 * maxSpeed * dt; }
     bool valid = false;  // false forces a rebuild (particles removed or reordered; added ones are relisted)
-    // The farthest a point of a moving mesh may be from where it was at the build by the end of the
-    // next step (set as the meshes move, Walls/MeshWalls.h; 0 at a build): the list holds while it
-    // is below reach/2, the bound the particles keep too, so a particle and a triangle listed
-    // farther apart than the reach cannot touch before the next build.
+    // The farthest a point of a moving mesh may be from where it was when the wall candidates were
+    // listed, by the end of the next step (set as the meshes move, Walls/MeshWalls.h; 0 at a build
+    // and at relistWalls): the candidates hold while it is below reach/2, the bound the particles
+    // keep too, so a particle and a triangle listed farther apart than the reach cannot touch
+    // before they are listed anew.
     double meshTravel = 0;
+    bool wallsNeedRelisting() const { return valid && maxRelisted > 0 && meshTravel >= 0.5 * reach; }
+    // Lists the wall candidates anew by the rule and in the order of a build, at the reference
+    // positions, carrying their histories by ids; the particles' pairs stay. For a moving mesh that
+    // has travelled reach/2 (its grid made anew first, MeshWalls::regrid): a particle has moved
+    // less than reach/2 from its reference position, the mesh less than reach/2 from where it is
+    // now, so a triangle farther than the reach from the reference position cannot touch it
+    // before the next build or relisting (from the particle's present position it could: it may
+    // have moved up to reach/2 and come back).
+    void relistWalls(const ParticleStore& particles, const std::vector<Wall>& walls);
+    std::uint64_t wallRelistings = 0;
     bool orientById = false;  // every pair with the smaller id first (Contacts/IdOrderedForceSums.h)
     std::uint64_t builds = 0;
     std::vector<PlacedSuperquadric> shapedFrameScratch;  // the force loop's lab frames of shaped particles
@@ -139,8 +150,8 @@ public:
     // move, plus |v| dt). Looking one step ahead keeps every pair that can touch within the next
     // step listed, which the push ahead of a touch needs (LinearSpringDashpot::approachForce).
     // Throws talus::Error naming the particle if a position is not finite.
-    // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close. True
-    // too when a moving mesh may have moved reach/2 (meshTravel).
+    // Also records the largest particle speed (maxSpeed), which bounds how fast pairs close. (A
+    // moving mesh's travel calls for relistWalls, not a build: wallsNeedRelisting.)
     bool needsRebuild(const ParticleStore& particles, const Domain& domain, double time, double dt);
     // The same on moves measured by the caller (Particles/DriftPass.h, which measures them while
     // it drifts the particles), from referencePosition if comparable(particles), else none.
@@ -164,7 +175,7 @@ public:
     // Lists candidate pairs and wall contacts anew and carries the springs over. Walls that
     // move (motion >= 0) list every particle, since the wall itself may sweep over them, unless
     // they slide in place (Wall::slidesInPlace: a drum's mantle); a moving mesh's triangles are
-    // listed by distance, the mesh's travel calling for the next build (meshTravel).
+    // listed by distance, the mesh's travel calling for their relisting (meshTravel).
     // With ghosts (ParticleStore::ghostCount) only pairs with an owned particle are listed, and a
     // pair with a ghost has the smaller id first, so that the two ranks that list it compute
     // its force with the same arithmetic; ghosts have no wall contacts.
@@ -250,6 +261,8 @@ private:
     std::vector<CarriedHistory> carried_;  // the histories a build carries over (scratch, kept for its memory)
 
     void listOneWayPairs(const ParticleStore& particles, const Domain& domain);
+    // The wall candidates of the owned particles at the positions `at` (wallPairs, cleared first).
+    void listWallPairs(const ParticleStore& particles, const std::vector<Vec3>& at, const std::vector<Wall>& walls);
     std::size_t putInteriorPairsFirst(const ParticleStore& particles, const Domain& domain);
 };
 

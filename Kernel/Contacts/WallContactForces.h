@@ -90,9 +90,10 @@ void ContactForceLoopInLanes<Law>::wallPair(PairList& list, std::size_t k, const
     const Wall::Gap gap = wall.isTriangle() ? wall.triangleGap(p_.position[i], askWithin) : wall.gapTo(p_.position[i]);
     const double distance = gap.distance;
     const bool touching = distance < p_.radius[i];
-    // (A moving wall may close in faster than the particles: no shortcut for it, unless it slides in place.)
-    if (!touching && list.wallHistory.state(k) == ContactHistory::apart && (wall.motion < 0 || wall.slidesInPlace) &&
-        distance - p_.radius[i] >= closing_)
+    // (A moving wall may close in faster than the particles: no shortcut for it, unless it slides
+    // in place or is a triangle, whose mesh's step `closing` holds.)
+    if (!touching && apartBefore && (wall.motion < 0 || wall.slidesInPlace || wall.isTriangle()) &&
+        distance - p_.radius[i] >= closing)
         return;
     if (!gap.counts) [[unlikely]] {
         // A revolved segment's joint that the next segment counts (Walls/Wall.h): no contact here.

@@ -76,6 +76,7 @@ void WaveStepper::makeSchedule(StepHost& host) {
         list.reorderPairs(order);
         scheduleBuild_ = list.builds;
         scheduleEdits_ = list.edits;
+        scheduleWallRelistings_ = list.wallRelistings;
     }
     largestRadius_ = 0;
     for (double r : s.particles.radius) largestRadius_ = std::max(largestRadius_, r);
@@ -171,6 +172,7 @@ std::string_view WaveStepper::whyNot(const StepHost& host) const {
         return refusal_.empty() ? std::string_view("the neighbour list has no wave schedule") : std::string_view(refusal_);
     if (!list.comparable(s.particles) || list.edits != scheduleEdits_)
         return "particles were added or removed since the list's build";
+    if (list.wallRelistings != scheduleWallRelistings_) return "a moving mesh's triangles were listed anew since the list's build";
     if (!list.oneWayPairs.empty()) return "pairs cross a one-way periodic face";
     return {};
 }

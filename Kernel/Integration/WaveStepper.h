@@ -68,6 +68,7 @@ private:
     WaveSchedule schedule_;           // over every listed pair
     std::uint64_t scheduleBuild_ = 0;  // the list build it was made for (0: none)
     std::uint64_t scheduleEdits_ = 0;  // and the list's edits then (PairList::edits)
+    std::uint64_t scheduleWallRelistings_ = 0;  // and its wall relistings (PairList::wallRelistings)
     std::string refusal_;             // why the last build has none
     std::string choice_;              // whether and why the run takes waves (choose)
     double largestRadius_ = 0;        // at that build

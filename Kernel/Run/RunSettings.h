@@ -44,7 +44,7 @@ struct RunSettings {
     // How the forces are summed (each changes the result, if only by round-off; the restart file
     // keeps them: Documentation/FileFormats/restart.md):
     bool idOrderedSums = false;  // in the order of partners' ids (--id-ordered-sums, IdOrderedForceSums.h)
-    bool relist = true;          // pairs of added or moved particles relisted (--relist; PairList::maxRelisted)
+    bool relist = true;          // pairs of added or moved particles, a travelled mesh's triangles relisted (--relist; PairList::maxRelisted)
     // How the steppers advance the run (--waves, --wave-steps, --wave-strip, --waves-from,
     // --drift-pass, --near-skin-fraction, --sweep-frame, --sweep: Integration/StepperTuning.h);
     // the restart file keeps the waves' steps (those the run took) and strip width. With waves,

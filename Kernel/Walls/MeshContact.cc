@@ -52,6 +52,40 @@ TrianglePoint closestPointOnTriangle(const Vec3& x, const TriangleCorners& c, do
     return nearest;
 }
 
+TrianglePoint closestPointOnMeshTriangle(const Vec3& x, const TriangleMesh& mesh, std::uint32_t t) {
+    const double tolerance = mesh.tolerance();
+    // The signed distances of the foot of x in the plane from the three edges' lines (inwards
+    // positive), as closestPointOnTriangle's test.
+    bool insideFace = true;
+    for (int k = 0; k < 3 && insideFace; ++k) insideFace = (x - mesh.corner(t, k)).dot(mesh.inwardEdgeNormal(t, k)) > tolerance;
+    const Vec3& normal = mesh.normal(t);
+    if (insideFace) return {x - (x - mesh.corner(t, 0)).dot(normal) * normal, MeshFeature::face, 0};
+    TrianglePoint nearest{};
+    double nearestDistance2 = std::numeric_limits<double>::infinity();
+    const std::array<std::uint32_t, 3>& corners = mesh.triangle(t);
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t e = mesh.triangleEdges(t)[k];
+        const std::uint32_t fromVertex = mesh.edge(e)[0];
+        const Vec3& from = mesh.vertex(fromVertex);
+        const double length = mesh.edgeLength(e);
+        const double along = (x - from).dot(mesh.edgeDirection(e));  // of the foot of x on the line
+        const int fromCorner = corners[k] == fromVertex ? k : (k + 1) % 3;
+        const int toCorner = fromCorner == k ? (k + 1) % 3 : k;
+        TrianglePoint p;
+        if (along <= tolerance)
+            p = {from, MeshFeature::vertex, fromCorner};
+        else if (length - along <= tolerance)
+            p = {mesh.vertex(mesh.edge(e)[1]), MeshFeature::vertex, toCorner};
+        else
+            p = {from + along * mesh.edgeDirection(e), MeshFeature::edge, k};
+        if (const double d2 = (x - p.point).squaredNorm(); d2 < nearestDistance2) {
+            nearest = p;
+            nearestDistance2 = d2;
+        }
+    }
+    return nearest;
+}
+
 namespace {
 
 // The nearest points of the triangles a sphere looks at, found once each: those of the candidates,
@@ -73,8 +107,7 @@ public:
     const Found& of(std::uint32_t t) {
         for (const Found& f : found_)
             if (f.triangle == t) return f;
-        const TriangleCorners corners{mesh_.corner(t, 0), mesh_.corner(t, 1), mesh_.corner(t, 2)};
-        const TrianglePoint p = closestPointOnTriangle(x_, corners, mesh_.tolerance());
+        const TrianglePoint p = closestPointOnMeshTriangle(x_, mesh_, t);
         const std::uint32_t index = p.feature == MeshFeature::face   ? t
                                     : p.feature == MeshFeature::edge ? mesh_.triangleEdges(t)[p.which]
                                                                      : mesh_.triangle(t)[p.which];
@@ -129,8 +162,7 @@ std::vector<MeshContact> sphereMeshContacts(const TriangleMesh& mesh, const Vec3
 }
 
 TriangleGap triangleGap(const TriangleMesh& mesh, std::uint32_t t, const Vec3& x, double countWithin) {
-    const TriangleCorners corners{mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
-    const TrianglePoint nearest = closestPointOnTriangle(x, corners, mesh.tolerance());
+    const TrianglePoint nearest = closestPointOnMeshTriangle(x, mesh, t);
     const Vec3 apart = x - nearest.point;
     const double distance = apart.norm();
     const Vec3 normal = distance > 0 ? Vec3(apart / distance) : mesh.normal(t);

@@ -44,6 +44,11 @@ struct TrianglePoint {
 // The point of the triangle `corners` nearest to x. With a tolerance > 0, a point that lies within
 // the tolerance of an edge is put on the edge, and one within it of a corner at the corner.
 TrianglePoint closestPointOnTriangle(const Vec3& x, const TriangleCorners& corners, double tolerance = 0);
+// The same for triangle t of `mesh` with the mesh's tolerance, from the geometry the mesh keeps
+// (its normal, inward edge normals, edge directions and lengths: no square root, no division).
+// An edge is walked from its first vertex (TriangleMesh::edge) by every triangle that shares it,
+// so that they all find the very same point on it and classify it alike.
+TrianglePoint closestPointOnMeshTriangle(const Vec3& x, const TriangleMesh& mesh, std::uint32_t t);
 
 struct MeshContact {
     Vec3 normal;          // unit, from the contact point towards the centre

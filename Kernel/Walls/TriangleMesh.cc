@@ -198,9 +198,23 @@ void TriangleMesh::updateBoundsAndNormals() {
         lo_ = lo_.cwiseMin(x);
         hi_ = hi_.cwiseMax(x);
     }
+    edgeDirections_.resize(edges_.size());
+    edgeLengths_.resize(edges_.size());
+    for (std::size_t e = 0; e < edges_.size(); ++e) {
+        const Vec3 along = vertices_[edges_[e][1]] - vertices_[edges_[e][0]];
+        edgeLengths_[e] = along.norm();
+        edgeDirections_[e] = along / edgeLengths_[e];
+    }
     normals_.resize(triangles_.size());
-    for (std::size_t t = 0; t < triangles_.size(); ++t)
+    inwardEdgeNormals_.resize(triangles_.size());
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
         normals_[t] = (corner(t, 1) - corner(t, 0)).cross(corner(t, 2) - corner(t, 0)).normalized();
+        for (int k = 0; k < 3; ++k) {  // (the normal across the edge from corner k to k + 1: to its left)
+            const std::uint32_t e = triangleEdges_[t][k];
+            const double sign = edges_[e][0] == triangles_[t][k] ? 1 : -1;
+            inwardEdgeNormals_[t][k] = sign * normals_[t].cross(edgeDirections_[e]);
+        }
+    }
 }
 
 }  // namespace talus

@@ -61,6 +61,12 @@ public:
 
     // The two vertex indices of edge e, the lower first.
     const std::array<std::uint32_t, 2>& edge(std::size_t e) const { return edges_[e]; }
+    // Edge e as a unit direction from its first vertex to its second, and its length; and the unit
+    // vector in the plane of triangle t normal to its edge k that points into the triangle. Kept
+    // with the vertices (the nearest point of a triangle asks them of every contact each step).
+    const Vec3& edgeDirection(std::size_t e) const { return edgeDirections_[e]; }
+    double edgeLength(std::size_t e) const { return edgeLengths_[e]; }
+    const Vec3& inwardEdgeNormal(std::size_t t, int k) const { return inwardEdgeNormals_[t][k]; }
     std::span<const std::uint32_t> edgeTriangles(std::size_t e) const;
 
     // The bounding box [lo, hi] of the vertices.
@@ -95,13 +101,16 @@ private:
     void mergeVertices(const std::vector<TriangleCorners>& triangles, double tolerance);
     void findEdges();
     void listVertexTriangles();
-    void updateBoundsAndNormals();
+    void updateBoundsAndNormals();  // (and the edges' directions, lengths and inward normals)
     [[noreturn]] void fail(std::size_t t, const std::string& problem) const;
 
     MeshSource source_;
     std::vector<Vec3> vertices_;
     std::vector<std::array<std::uint32_t, 3>> triangles_;
     std::vector<Vec3> normals_;
+    std::vector<std::array<Vec3, 3>> inwardEdgeNormals_;
+    std::vector<Vec3> edgeDirections_;
+    std::vector<double> edgeLengths_;
     std::vector<std::array<std::uint32_t, 3>> triangleEdges_;
     std::vector<std::array<std::uint32_t, 2>> edges_;
     // The triangles of edge e are edgeTriangleList_[edgeStart_[e] .. edgeStart_[e + 1]), and
