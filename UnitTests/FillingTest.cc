@@ -2,7 +2,8 @@
 // off each other (an annulus filled until it jams holds them only between its radii); a box fills
 // to a packing fraction within one particle, or stops and says how far it got; kinds in turn
 // alternate as the rule says, across calls too; the cylinder draws what the drum's filling drew
-// before the two inserters became one; bad kinds and particles that cannot fit are named.
+// before the two inserters became one; a triangle mesh across the region keeps the particles off
+// it; bad kinds and particles that cannot fit are named.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "Boundaries/Filling.h"
 #include "TestHelpers.h"
+#include "Walls/MeshContact.h"
 
 using namespace talus;
 using test::expectError;
@@ -103,6 +105,46 @@ TEST(Filling, BoxReachesAPackingFractionOrSaysHowFarItGot) {
     EXPECT_LT(report.packingFraction, 0.45);
     EXPECT_NEAR(report.packingFraction, s.scene().particles().size() * sphere / volume, 1e-12);
     EXPECT_NE(report.describe().find("failed 2000 attempts in a row"), std::string::npos) << report.describe();
+    EXPECT_LE(largestOverlap(s), 1e-12);
+}
+
+// A tilted plane of 200 triangles (z = 1.5 + 0.3 x over [0, 4]^2, a mesh wall) across a box
+// [0, 4]^3 filled with spheres of radius 0.2 until 2000 tries in a row fail: no sphere reaches
+// into a triangle (each distance by closestPointOnTriangle from the corners, every triangle,
+// independent of the mesh's grid, which the filling asks), and the spheres pack up to the mesh
+// from both sides (the nearest within a tenth of a radius), so the check is not vacuous.
+TEST(Filling, AMeshAcrossTheRegionKeepsTheParticlesOffIt) {
+    Simulation s;
+    s.scene().setDomain(Vec3::Zero(), Vec3::Constant(4));
+    const std::size_t grains = addGrains(s);
+    std::vector<TriangleCorners> triangles;
+    auto at = [](int i, int j) { return Vec3(0.4 * i, 0.4 * j, 1.5 + 0.12 * i); };
+    for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < 10; ++j) {
+            triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    s.scene().addMeshWall(TriangleMesh(triangles), grains);
+    const double r = 0.2;
+    const InsertionReport report = Filling(Box(Vec3::Zero(), Vec3::Constant(4)), 2000)
+                                       .fill(s, SizeDistribution::byNumber().add(grains, r),
+                                             InsertionReport::Target::count, 5000);
+    EXPECT_FALSE(report.complete);
+    const ParticleStore& p = s.scene().particles();
+    ASSERT_GT(p.size(), 300u) << report.describe();
+    double nearestBelow = INFINITY, nearestAbove = INFINITY;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        double distance = INFINITY;
+        for (const TriangleCorners& t : triangles)
+            distance = std::min(distance, (p.position[i] - closestPointOnTriangle(p.position[i], t).point).norm());
+        EXPECT_GE(distance, r) << "sphere " << i << " at " << p.position[i].transpose();
+        const bool above = p.position[i].z() > 1.5 + 0.3 * p.position[i].x();
+        (above ? nearestAbove : nearestBelow) = std::min(above ? nearestAbove : nearestBelow, distance - r);
+    }
+    std::printf("[ measured ] %zu spheres; nearest gaps to the mesh below and above it %.3g and %.3g\n", p.size(),
+                nearestBelow, nearestAbove);
+    EXPECT_LT(nearestBelow, 0.1 * r);
+    EXPECT_LT(nearestAbove, 0.1 * r);
     EXPECT_LE(largestOverlap(s), 1e-12);
 }
 

@@ -10,9 +10,8 @@ namespace talus {
 namespace {
 // The grid's cell: the triangles' median longest edge (a particle's query then meets a few cells,
 // a cell a few triangles). Not the mean: a few long triangles, such as the fan that closes the end
-// of a drum, would make the cells of the many others coarse, each holding many triangles (the
-// published drum's 1200 triangles: mean 36 mm, median 19 mm; the search for the triangles near
-// each particle at a list build took a third less time with the median).
+// of a drum, would make the cells of the many others coarse, each holding many triangles
+// (Documentation/Benchmarks/OpenSourceComparison.md, the drum's speed).
 double gridCell(const TriangleMesh& mesh) {
     std::vector<double> longest(mesh.triangleCount(), 0);
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
