@@ -21,19 +21,11 @@ double sphereVolume(double r) { return 4.0 / 3.0 * pi * r * r * r; }
 // (A mesh's triangles are asked through its grid, only those near x, not one by one: a silo
 // of thousands of triangles is filled with thousands of tries.)
 bool clearOfWalls(const std::vector<Wall>& walls, const Vec3& x, double r) {
-    for (std::size_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].isTriangle()) {  // (the mesh's triangles near x; then past them)
-            const MeshWalls& mesh = *walls[w].mesh;
-            thread_local std::vector<std::uint32_t> near;  // (kept from place to place)
-            mesh.grid.trianglesNear(x, r + mesh.travelled, near);
-            for (const std::uint32_t t : near)
-                if (walls[mesh.firstWall + t].signedDistance(x) < r) return false;
-            w = mesh.firstWall + mesh.mesh.triangleCount() - 1;
-            continue;
-        }
-        if (walls[w].signedDistance(x) < r) return false;
-    }
-    return true;
+    bool clear = true;
+    forEachWallOrMesh(
+        walls, [&](std::uint32_t w) { clear = clear && !(walls[w].signedDistance(x) < r); },
+        [&](const MeshWalls& mesh) { mesh.forTrianglesWithin(x, r, [&](std::uint32_t) { clear = false; }); });
+    return clear;
 }
 
 }  // namespace

@@ -130,21 +130,21 @@ inline bool isWallCandidate(const ParticleStore& particles, const Wall& wall, st
 }
 
 // The same rule for the triangles of a mesh (Walls/MeshWalls.h): those within the reach of particle i
-// at x, appended as wall candidates; its grid, built where a moving mesh was at the last build, is
-// asked farther by the distance the mesh has travelled since.
+// at x, appended as wall candidates.
 inline void addMeshWallCandidates(std::vector<WallCandidate>& candidates, const ParticleStore& particles,
-                                  const std::vector<Wall>& walls, const MeshWalls& mesh, std::uint32_t i,
-                                  const Vec3& x, double reach) {
+                                  const MeshWalls& mesh, std::uint32_t i, const Vec3& x, double reach) {
     if (particles.fixed[i]) return;
-    const double within = particles.radius[i] + reach;
-    thread_local std::vector<std::uint32_t> near;  // (kept from particle to particle)
-    mesh.grid.trianglesNear(x, within + mesh.travelled, near);
-    for (const std::uint32_t t : near) {
-        const double clear = mesh.reach[t] + within;  // (clear of the sphere that holds the triangle)
-        if ((x - mesh.centre[t]).squaredNorm() >= clear * clear) continue;
-        const std::uint32_t w = mesh.firstWall + t;
-        if (walls[w].signedDistance(x) < within) candidates.push_back({i, w});
-    }
+    mesh.forTrianglesWithin(x, particles.radius[i] + reach,
+                            [&](std::uint32_t t) { candidates.push_back({i, mesh.firstWall + t}); });
+}
+
+// The wall candidates of particle i at x by the build's rules (isWallCandidate,
+// addMeshWallCandidates), appended in the build's order: by wall, a mesh's triangles in theirs.
+inline void addWallCandidates(std::vector<WallCandidate>& candidates, const ParticleStore& particles,
+                              const std::vector<Wall>& walls, std::uint32_t i, const Vec3& x, double reach) {
+    forEachWallOrMesh(
+        walls, [&](std::uint32_t w) { if (isWallCandidate(particles, walls[w], i, x, reach)) candidates.push_back({i, w}); },
+        [&](const MeshWalls& mesh) { addMeshWallCandidates(candidates, particles, mesh, i, x, reach); });
 }
 
 // The listing rule of the one-way pairs (PairList::oneWayPairs) at positions x: i, a mobile

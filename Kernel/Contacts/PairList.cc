@@ -147,16 +147,15 @@ void PairList::listWallPairs(const ParticleStore& particles, const std::vector<V
                              const std::vector<Wall>& walls) {
     const auto owned = static_cast<std::uint32_t>(particles.owned());
     wallPairs.clear();
-    for (std::uint32_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].isTriangle()) {  // (a mesh's triangles, from its grid: then past them)
-            const MeshWalls& mesh = *walls[w].mesh;
-            for (std::uint32_t i = 0; i < owned; ++i) addMeshWallCandidates(wallPairs, particles, walls, mesh, i, at[i], reach);
-            w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
-            continue;
-        }
-        for (std::uint32_t i = 0; i < owned; ++i)
-            if (isWallCandidate(particles, walls[w], i, at[i], reach)) wallPairs.push_back({i, w});
-    }
+    forEachWallOrMesh(
+        walls,
+        [&](std::uint32_t w) {
+            for (std::uint32_t i = 0; i < owned; ++i)
+                if (isWallCandidate(particles, walls[w], i, at[i], reach)) wallPairs.push_back({i, w});
+        },
+        [&](const MeshWalls& mesh) {
+            for (std::uint32_t i = 0; i < owned; ++i) addMeshWallCandidates(wallPairs, particles, mesh, i, at[i], reach);
+        });
 }
 
 void PairList::relistWalls(const ParticleStore& particles, const std::vector<Wall>& walls) {

@@ -129,15 +129,7 @@ void PairList::relist(const ParticleStore& particles, const Domain& domain, cons
             if (rule.upstream(k, x[k]) && rule.downstream(a, xa) && rule.withinReach(k, a, x[k], xa))
                 oneWayPairs.push_back({k, a});
         }
-        for (std::uint32_t w = 0; w < walls.size(); ++w) {
-            if (walls[w].isTriangle()) {  // (a mesh's triangles, from its grid: then past them)
-                const MeshWalls& mesh = *walls[w].mesh;
-                addMeshWallCandidates(wallPairs, particles, walls, mesh, a, xa, reach);
-                w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
-                continue;
-            }
-            if (isWallCandidate(particles, walls[w], a, xa, reach)) wallPairs.push_back({a, w});
-        }
+        addWallCandidates(wallPairs, particles, walls, a, xa, reach);
     }
     history.resize(pairs.size());
     oneWayHistory.resize(oneWayPairs.size());

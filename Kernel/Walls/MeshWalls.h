@@ -12,13 +12,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "Walls/MeshContact.h"
 #include "Walls/PrescribedMotion.h"
 #include "Walls/TriangleGrid.h"
 #include "Walls/TriangleMesh.h"
+#include "Walls/Wall.h"
 
 namespace talus {
-
-struct Wall;
 
 struct MeshWalls {
     MeshWalls(TriangleMesh triangles, std::uint32_t wallSpecies, std::uint32_t first, std::int32_t motionIndex = -1);
@@ -43,6 +43,38 @@ struct MeshWalls {
     void move(const PrescribedMotion& m, const Mat3& R, double dt, std::vector<Wall>& walls);
     // The grid anew over where the mesh is now (at a list build); travelled back to 0.
     void regrid();
+
+    // visit(t) for each triangle t nearer to x than `within` (its nearest point, as a wall's
+    // signed distance measures it), in increasing order: the grid's candidates (asked farther by
+    // the distance the mesh has travelled since the grid was made), less those clear of the sphere
+    // that holds the triangle.
+    template <class Visit>
+    void forTrianglesWithin(const Vec3& x, double within, Visit visit) const {
+        thread_local std::vector<std::uint32_t> near;  // (kept from call to call)
+        grid.trianglesNear(x, within + travelled, near);
+        for (const std::uint32_t t : near) {
+            const double clear = reach[t] + within;
+            if ((x - centre[t]).squaredNorm() >= clear * clear) continue;
+            if (triangleGap(mesh, t, x, 0).distance < within) visit(t);
+        }
+    }
 };
+
+// Each wall of `walls` once, a mesh's triangles together: onWall(w) for a wall of its own,
+// onMesh(mesh) for a mesh, whose triangles are the walls [firstWall, firstWall + triangleCount).
+// (The listing of wall candidates and the filling ask the triangles near a place through the
+// mesh's grid, not one by one.)
+template <class OnWall, class OnMesh>
+void forEachWallOrMesh(const std::vector<Wall>& walls, OnWall onWall, OnMesh onMesh) {
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+        if (walls[w].isTriangle()) {
+            const MeshWalls& mesh = *walls[w].mesh;
+            onMesh(mesh);
+            w = mesh.firstWall + static_cast<std::uint32_t>(mesh.mesh.triangleCount()) - 1;
+            continue;
+        }
+        onWall(w);
+    }
+}
 
 }  // namespace talus
